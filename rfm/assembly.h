@@ -1,0 +1,45 @@
+// Assembly of the resolving system (paper eq. 2.5; DESIGN.md section 2):
+//
+//   [ R11   R12 ] [q_s]     [ p_s ]
+//   [ R12^T  0  ] [q_u] = - [ p_u ]
+//
+//   R11_kl = - int X_k . C X_l  r dr dz       (symmetric negative definite)
+//   R12_km =   int X_k . e(Phi_m) r dr dz
+//   p_s,k  =   int X_k . (e(u0) - C s0) r dr dz
+//   p_u,m  =   int s0 . e(Phi_m) r dr dz - int_{S_t} t . Phi_m r ds   (no body force)
+//
+// with the stress basis X_{c,j} = omega_c phi_j e_c (c = rr, zz, tt, rz) and the
+// displacement basis Phi_{m,j} = omega_m phi_j e_m (m = r, z). Strain of a displacement
+// (DESIGN.md section 1): e(u) = (du_r/dr, du_z/dz, u_r/r, du_r/dz + du_z/dr).
+//
+// Unknown ordering: q_s = (q_rr, q_zz, q_tt, q_rz), q_u = (q_r, q_z), N each.
+// Every block is one dense product B^T diag(weights) B' over the quadrature points
+// with pointwise weights mu * omega_c * C_cl, so assembly runs at GEMM speed.
+#pragma once
+
+#include "rfm/discrete_space.h"
+#include "rfm/material.h"
+
+#include <Eigen/Core>
+
+namespace rfm
+{
+  struct ReissnerSystem
+  {
+    Eigen::MatrixXd r11; ///< 4N x 4N
+    Eigen::MatrixXd r12; ///< 4N x 2N
+    Eigen::VectorXd p_s; ///< 4N
+    Eigen::VectorXd p_u; ///< 2N
+  };
+
+  ReissnerSystem assemble_reissner_system(const DiscreteSpace &space, const Material &material);
+
+  /// Displacement basis at points: for m = r, z the matrices omega_m phi_j and its r and
+  /// z derivatives (n_points x N each). Shared by assembly and post-processing.
+  struct DisplacementBasisValues
+  {
+    Eigen::MatrixXd value[2], d_r[2], d_z[2];
+  };
+  DisplacementBasisValues displacement_basis(const BasisValues &b,
+                                             const DisplacementStructureValues &d);
+} // namespace rfm

@@ -1,0 +1,44 @@
+// Coordinate functions: tensor-product Legendre polynomials on the bounding box of the
+// meridian section (paper eqs. 2.3, 2.4).
+//
+//   phi_{ij}(r, z) = P_i(xi(r)) P_j(eta(z)),  0 <= i, j <= degree,
+//   xi = (2 r - r_min - r_max) / (r_max - r_min),  eta likewise in z,
+//
+// complete in the polynomials of degree <= p in each variable and linearly independent:
+// N = (p + 1)^2 functions per unknown component (the paper's Table 1 uses N = 1, 9, 64).
+// Ordering: index = j * (p + 1) + i (r fastest).
+#pragma once
+
+#include <Eigen/Core>
+
+namespace rfm
+{
+  /// Values and first derivatives of all N basis functions at n points:
+  /// row k holds the functions at point k (n_points x N, column-major: GEMM-ready).
+  struct BasisValues
+  {
+    Eigen::MatrixXd value, d_r, d_z;
+  };
+
+  class TensorLegendreBasis
+  {
+  public:
+    /// Precondition: degree >= 0, r_max > r_min, z_max > z_min.
+    TensorLegendreBasis(int degree, double r_min, double r_max, double z_min, double z_max);
+
+    int degree() const { return degree_; }
+    Eigen::Index n_basis_functions() const { return (degree_ + 1) * (degree_ + 1); }
+
+    BasisValues evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
+                         const Eigen::Ref<const Eigen::VectorXd> &z) const;
+
+  private:
+    int degree_;
+    double r_min_, r_max_, z_min_, z_max_;
+  };
+
+  /// P_0..P_p and their derivatives at x (three-term recurrence and
+  /// P'_{n+1} = P'_{n-1} + (2n + 1) P_n). Output vectors of length p + 1.
+  void legendre_values(int degree, double x, Eigen::Ref<Eigen::VectorXd> p,
+                       Eigen::Ref<Eigen::VectorXd> dp);
+} // namespace rfm

@@ -1,0 +1,112 @@
+#include "rfm/discrete_space.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace rfm
+{
+  void DiscretizationOptions::validate() const
+  {
+    auto fail = [](const std::string &field, const double value, const std::string &rule) {
+      throw std::invalid_argument("rfm." + field + " = " + std::to_string(value) +
+                                  ": must be " + rule);
+    };
+    if (degree < 0 || degree > 40)
+      fail("degree", degree, "an integer in [0, 40]");
+    if (extra_gauss_points < 1 || extra_gauss_points > 40)
+      fail("extra_gauss_points", extra_gauss_points, "an integer in [1, 40]");
+    if (n_cells_r < 1 || n_cells_r > 64)
+      fail("n_cells_r", n_cells_r, "an integer in [1, 64]");
+    if (n_cells_z < 1 || n_cells_z > 64)
+      fail("n_cells_z", n_cells_z, "an integer in [1, 64]");
+    if (n_graded_layers < 0 || n_graded_layers > 40)
+      fail("n_graded_layers", n_graded_layers, "an integer in [0, 40]");
+    if (!(grading_ratio > 0.0 && grading_ratio < 1.0))
+      fail("grading_ratio", grading_ratio, "in (0, 1)");
+  }
+
+  std::vector<double> section_cells(const double a, const double b, const int n_uniform,
+                                    const std::vector<double> &break_points,
+                                    const int n_graded_layers, const double grading_ratio)
+  {
+    std::vector<double> ends;
+    for (int i = 1; i < n_uniform; ++i)
+      ends.push_back(a + (b - a) * i / n_uniform);
+    std::vector<double> cells = graded_partition(a, b, break_points, n_graded_layers,
+                                                 grading_ratio);
+    // Merge the uniform ends into the graded partition (sorted, unique).
+    cells.insert(cells.end(), ends.begin(), ends.end());
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end(),
+                            [&](double x, double y) { return std::abs(x - y) < 1e-14 * (b - a); }),
+                cells.end());
+    return cells;
+  }
+
+  DiscreteSpace::DiscreteSpace(const Structures &structures,
+                               const DiscretizationOptions &options)
+    : structures_(structures)
+    , options_((options.validate(), options))
+    , basis_(options.degree, structures.section().r_min(), structures.section().r_max(),
+             structures.section().z_min(), structures.section().z_max())
+  {
+    const Section &s = structures_.section();
+    bool mirrored = false;
+    for (const auto &p : s.parts())
+      mirrored |= p.side == Side::bottom && p.condition == Condition::symmetry;
+    weight_factor_ = mirrored ? 2.0 : 1.0;
+
+    // 1. Interior quadrature, split and graded where a boundary condition changes.
+    const int n_gauss = options_.degree + options_.extra_gauss_points;
+    const auto r_cells = section_cells(s.r_min(), s.r_max(), options_.n_cells_r,
+                                       s.r_breaks(), options_.n_graded_layers,
+                                       options_.grading_ratio);
+    const auto z_cells = section_cells(s.z_min(), s.z_max(), options_.n_cells_z,
+                                       s.z_breaks(), options_.n_graded_layers,
+                                       options_.grading_ratio);
+    quadrature_ = tensor_gauss(r_cells, z_cells, n_gauss);
+    measure_ = weight_factor_ * quadrature_.weights.cwiseProduct(quadrature_.r);
+    basis_values_ = basis_.evaluate(quadrature_.r, quadrature_.z);
+    stress_ = structures_.stress(quadrature_.r, quadrature_.z);
+    displacement_ = structures_.displacement(quadrature_.r, quadrature_.z);
+
+    // 2. Boundary quadrature on every part, on the same cells along the side.
+    std::vector<double> rr, zz, ww, nr, nz;
+    for (std::size_t i = 0; i < s.parts().size(); ++i)
+      {
+        const BoundaryPart &p = s.parts()[i];
+        const bool radial = p.side == Side::inner || p.side == Side::outer;
+        const auto &side_cells = radial ? z_cells : r_cells;
+        std::vector<double> cells{p.begin};
+        for (const double x : side_cells)
+          if (x > p.begin && x < p.end)
+            cells.push_back(x);
+        cells.push_back(p.end);
+        const GaussRule1D g = gauss_on_cells(cells, n_gauss);
+        for (Eigen::Index k = 0; k < g.nodes.size(); ++k)
+          {
+            double r = 0, z = 0, n_r = 0, n_z = 0;
+            switch (p.side)
+              {
+                case Side::inner: r = s.r_min(), z = g.nodes[k], n_r = -1; break;
+                case Side::outer: r = s.r_max(), z = g.nodes[k], n_r = 1; break;
+                case Side::bottom: r = g.nodes[k], z = s.z_min(), n_z = -1; break;
+                case Side::top: r = g.nodes[k], z = s.z_max(), n_z = 1; break;
+              }
+            rr.push_back(r), zz.push_back(z), nr.push_back(n_r), nz.push_back(n_z);
+            ww.push_back(weight_factor_ * g.weights[k] * r);
+            boundary_.part.push_back(static_cast<int>(i));
+          }
+      }
+    auto to_vector = [](const std::vector<double> &v) {
+      return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
+    };
+    boundary_.r = to_vector(rr);
+    boundary_.z = to_vector(zz);
+    boundary_.weights = to_vector(ww);
+    boundary_.n_r = to_vector(nr);
+    boundary_.n_z = to_vector(nz);
+  }
+} // namespace rfm

@@ -1,0 +1,84 @@
+#include "rfm/quadrature.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace rfm
+{
+  namespace
+  {
+    double integrate_monomial(const GaussRule1D &g, int k)
+    {
+      double s = 0;
+      for (Eigen::Index i = 0; i < g.nodes.size(); ++i)
+        s += g.weights[i] * std::pow(g.nodes[i], k);
+      return s;
+    }
+  } // namespace
+
+  TEST(GaussLegendre, ExactForDegree2nMinus1)
+  {
+    for (int n = 1; n <= 30; ++n)
+      {
+        const GaussRule1D g = gauss_legendre(n);
+        for (int k = 0; k <= 2 * n - 1; ++k)
+          {
+            const double exact = (k % 2 == 1) ? 0.0 : 2.0 / (k + 1);
+            EXPECT_NEAR(integrate_monomial(g, k), exact, 1e-14 * (1 + k))
+              << "n = " << n << ", x^" << k;
+          }
+      }
+  }
+
+  TEST(GaussLegendre, NotExactForDegree2n)
+  {
+    // The rule must fail at degree 2n: otherwise the test above could not fail either.
+    for (int n = 1; n <= 10; ++n)
+      EXPECT_GT(std::abs(integrate_monomial(gauss_legendre(n), 2 * n) - 2.0 / (2 * n + 1)),
+                1e-6);
+  }
+
+  TEST(GaussLegendre, NodesSortedInsideInterval)
+  {
+    const GaussRule1D g = gauss_legendre(17);
+    for (Eigen::Index i = 0; i + 1 < g.nodes.size(); ++i)
+      EXPECT_LT(g.nodes[i], g.nodes[i + 1]);
+    EXPECT_GT(g.nodes[0], -1.0);
+    EXPECT_LT(g.nodes[16], 1.0);
+    EXPECT_THROW(gauss_legendre(0), std::invalid_argument);
+  }
+
+  TEST(GradedPartition, SplitsAndGradesTowardBreakPoint)
+  {
+    const auto cells = graded_partition(0.0, 1.0, {0.25}, 3, 0.5);
+    // 0 | graded toward 0.25 from the left | 0.25 | graded away on the right | 1
+    EXPECT_DOUBLE_EQ(cells.front(), 0.0);
+    EXPECT_DOUBLE_EQ(cells.back(), 1.0);
+    bool has_break = false;
+    for (std::size_t i = 0; i + 1 < cells.size(); ++i)
+      {
+        EXPECT_LT(cells[i], cells[i + 1]);
+        has_break |= std::abs(cells[i] - 0.25) < 1e-15;
+      }
+    EXPECT_TRUE(has_break);
+    EXPECT_EQ(cells.size(), 2u + 1u + 3u + 3u);
+    // Smallest cells touch the break point, width 0.25 * 0.5^3 on the left.
+    const auto it = std::find_if(cells.begin(), cells.end(),
+                                 [](double x) { return std::abs(x - 0.25) < 1e-15; });
+    EXPECT_NEAR(*it - *(it - 1), 0.25 * 0.125, 1e-15);
+    EXPECT_NEAR(*(it + 1) - *it, 0.75 * 0.125, 1e-15);
+  }
+
+  TEST(TensorGauss, IntegratesPolynomialOnGradedCells)
+  {
+    const auto rc = graded_partition(0.1, 0.2, {0.13}, 4, 0.3);
+    const auto zc = graded_partition(0.0, 0.2, {0.05}, 4, 0.3);
+    const Quadrature2D q = tensor_gauss(rc, zc, 4); // exact to degree 7 per variable
+    double s = 0;
+    for (Eigen::Index k = 0; k < q.n_points(); ++k)
+      s += q.weights[k] * std::pow(q.r[k], 7) * std::pow(q.z[k], 6);
+    const double exact = (std::pow(0.2, 8) - std::pow(0.1, 8)) / 8 * std::pow(0.2, 7) / 7;
+    EXPECT_NEAR(s, exact, 1e-13 * exact);
+  }
+} // namespace rfm

@@ -1,0 +1,18 @@
+// Result files (DESIGN.md section 7) and their atomic writing.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace rfm
+{
+  /// Writes `j` (2-space indented) to `path` through a temporary file in the same
+  /// directory and a rename, so that readers never see a half-written file. Throws
+  /// std::runtime_error naming the path when it cannot be written.
+  void write_json_atomically(const std::string &path, const nlohmann::json &j);
+
+  /// Checks before any work that `path` can be written (directory exists and is
+  /// writable); throws InputError naming the option and the path.
+  void check_output_path(const std::string &option, const std::string &path);
+} // namespace rfm

@@ -1,0 +1,101 @@
+#include "rfm/saddle_point_solver.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace rfm
+{
+  namespace
+  {
+    double eigen_condition(const Eigen::MatrixXd &a)
+    {
+      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(a, Eigen::EigenvaluesOnly);
+      const Eigen::VectorXd &l = es.eigenvalues();
+      return l.minCoeff() > 0 ? l.maxCoeff() / l.minCoeff()
+                              : std::numeric_limits<double>::infinity();
+    }
+  } // namespace
+
+  SaddlePointSolution solve_saddle_point(const ReissnerSystem &sys, const SolverOptions &options)
+  {
+    SaddlePointSolution out;
+    SolveSummary &summary = out.summary;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    summary.cond_stress = summary.cond_schur = summary.inf_sup = nan;
+
+    // 1. M = -R11, scaled.
+    const Eigen::VectorXd d = (-sys.r11.diagonal()).cwiseMax(0.0).cwiseSqrt().cwiseInverse();
+    if (!d.allFinite())
+      {
+        summary.message = "R11 has a non-negative diagonal entry: the stress structure has a "
+                          "coordinate function that vanishes identically";
+        return out;
+      }
+    const Eigen::MatrixXd m = -(d.asDiagonal() * sys.r11 * d.asDiagonal());
+    const Eigen::LLT<Eigen::MatrixXd> llt_m(m);
+    summary.rcond_stress = llt_m.info() == Eigen::Success ? llt_m.rcond() : 0.0;
+    if (llt_m.info() != Eigen::Success || !(summary.rcond_stress >= options.min_rcond))
+      {
+        std::ostringstream msg;
+        msg << "-R11 (stress block) is not numerically positive definite (rcond estimate "
+            << summary.rcond_stress << " < " << options.min_rcond << ")";
+        summary.message = msg.str();
+        return out;
+      }
+
+    // 2. Y = L^-1 D R12, K = Y^T Y, scaled by E.
+    Eigen::MatrixXd y = d.asDiagonal() * sys.r12;
+    llt_m.matrixL().solveInPlace(y);
+    Eigen::VectorXd y_s = d.cwiseProduct(sys.p_s);
+    llt_m.matrixL().solveInPlace(y_s);
+    Eigen::MatrixXd k(y.cols(), y.cols());
+    k.setZero();
+    k.selfadjointView<Eigen::Lower>().rankUpdate(y.transpose());
+    k.triangularView<Eigen::StrictlyUpper>() = k.transpose();
+    const Eigen::VectorXd e = k.diagonal().cwiseMax(0.0).cwiseSqrt().cwiseInverse();
+    if (!e.allFinite())
+      {
+        summary.message = "R12 has a zero column: a displacement coordinate function does "
+                          "no work on any stress (rank loss, inf-sup failure)";
+        return out;
+      }
+    const Eigen::MatrixXd ks = e.asDiagonal() * k * e.asDiagonal();
+    const Eigen::LLT<Eigen::MatrixXd> llt_k(ks);
+    summary.rcond_schur = llt_k.info() == Eigen::Success ? llt_k.rcond() : 0.0;
+    if (options.compute_diagnostics)
+      {
+        summary.cond_stress = eigen_condition(m);
+        summary.cond_schur = eigen_condition(ks);
+        summary.inf_sup = 1.0 / std::sqrt(summary.cond_schur);
+      }
+    if (llt_k.info() != Eigen::Success || !(summary.rcond_schur >= options.min_rcond))
+      {
+        std::ostringstream msg;
+        msg << "Schur complement K = R12^T (-R11)^-1 R12 is singular or badly conditioned "
+            << "(rcond estimate " << summary.rcond_schur << " < " << options.min_rcond
+            << "): R12 lost column rank (discrete inf-sup failure, or a rigid-body mode "
+            << "left in the displacement structure)";
+        summary.message = msg.str();
+        return out;
+      }
+
+    // 3. Back substitution.
+    const Eigen::VectorXd rhs = -(sys.p_u + y.transpose() * y_s);
+    out.q_u = e.cwiseProduct(llt_k.solve(e.cwiseProduct(rhs)));
+    Eigen::VectorXd t = y * out.q_u + y_s;
+    llt_m.matrixU().solveInPlace(t);
+    out.q_s = d.cwiseProduct(t);
+    if (!out.q_u.allFinite() || !out.q_s.allFinite())
+      {
+        summary.message = "solution has non-finite coefficients";
+        return out;
+      }
+    summary.success = true;
+    summary.message = "ok";
+    return out;
+  }
+} // namespace rfm

@@ -1,0 +1,103 @@
+#include "rfm/solution.h"
+
+#include "rfm/assembly.h"
+
+#include <cmath>
+
+namespace rfm
+{
+  double Functionals::indicator() const
+  {
+    return std::abs(lagrange - castigliano) / std::abs(reissner);
+  }
+
+  RfmSolution::RfmSolution(const DiscreteSpace &space, const Material &material,
+                           Eigen::VectorXd q_s, Eigen::VectorXd q_u)
+    : space_(space), material_(material), q_s_(std::move(q_s)), q_u_(std::move(q_u))
+  {}
+
+  FieldValues RfmSolution::evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                    const Eigen::Ref<const Eigen::VectorXd> &z) const
+  {
+    const Eigen::Index n = space_.n_basis_functions();
+    const BasisValues b = space_.basis().evaluate(r, z);
+    const StressStructureValues s = space_.structures().stress(r, z);
+    const DisplacementStructureValues d = space_.structures().displacement(r, z);
+    const DisplacementBasisValues v = displacement_basis(b, d);
+
+    FieldValues f;
+    f.sigma = s.s0;
+    for (int k = 0; k < n_stress_components; ++k)
+      f.sigma.col(k) += s.omega.col(k).cwiseProduct(b.value * q_s_.segment(k * n, n));
+
+    f.u = d.u0;
+    Eigen::MatrixXd du_dr = d.u0_r, du_dz = d.u0_z;
+    for (int m = 0; m < 2; ++m)
+      {
+        const auto q = q_u_.segment(m * n, n);
+        f.u.col(m) += v.value[m] * q;
+        du_dr.col(m) += v.d_r[m] * q;
+        du_dz.col(m) += v.d_z[m] * q;
+      }
+    f.strain.resize(r.size(), n_stress_components);
+    f.strain.col(rr) = du_dr.col(0);
+    f.strain.col(zz) = du_dz.col(1);
+    f.strain.col(tt) = f.u.col(0).cwiseQuotient(r);
+    f.strain.col(rz) = du_dz.col(0) + du_dr.col(1);
+    return f;
+  }
+
+  Functionals RfmSolution::functionals() const
+  {
+    const Eigen::Matrix4d c = material_.compliance(), dm = material_.stiffness();
+
+    // 1. Domain integrals at the assembly quadrature.
+    const Quadrature2D &q = space_.quadrature();
+    const Eigen::VectorXd &mu = space_.measure();
+    const FieldValues f = evaluate(q.r, q.z);
+    const Eigen::MatrixXd cs = f.sigma * c.transpose();
+    const Eigen::MatrixXd de = f.strain * dm.transpose();
+    const double complementary = 0.5 * mu.dot(f.sigma.cwiseProduct(cs).rowwise().sum());
+    const double strain_energy = 0.5 * mu.dot(f.strain.cwiseProduct(de).rowwise().sum());
+    const double mixed = mu.dot(f.sigma.cwiseProduct(f.strain).rowwise().sum());
+
+    // 2. Boundary integrals: work of prescribed tractions; (s n).u* and (s n).(u - u*)
+    //    on the parts with prescribed normal displacement (displacement, contact,
+    //    symmetry with u* = 0).
+    const BoundaryQuadrature &bq = space_.boundary_quadrature();
+    const auto &parts = space_.structures().section().parts();
+    const FieldValues fb = evaluate(bq.r, bq.z);
+    double work = 0.0, kinematic = 0.0, mismatch = 0.0;
+    for (Eigen::Index k = 0; k < bq.weights.size(); ++k)
+      {
+        const BoundaryPart &p = parts[bq.part[k]];
+        const double n_r = bq.n_r[k], n_z = bq.n_z[k], w = bq.weights[k];
+        const double u_r = fb.u(k, 0), u_z = fb.u(k, 1);
+        if (p.condition == Condition::traction)
+          {
+            work += w * p.normal_stress * (n_r * u_r + n_z * u_z);
+            continue;
+          }
+        const double t_r = fb.sigma(k, rr) * n_r + fb.sigma(k, rz) * n_z;
+        const double t_z = fb.sigma(k, rz) * n_r + fb.sigma(k, zz) * n_z;
+        double u_star_r = 0.0, u_star_z = 0.0;
+        if (p.condition == Condition::displacement || p.condition == Condition::contact)
+          {
+            const double s = (p.side == Side::inner || p.side == Side::outer) ? bq.z[k] : bq.r[k];
+            const double u_n = p.normal_displacement(s);
+            u_star_r = u_n * n_r, u_star_z = u_n * n_z;
+          }
+        kinematic += w * (t_r * u_star_r + t_z * u_star_z);
+        // On contact and symmetry parts only the normal component is prescribed; the
+        // tangential traction vanishes there by construction, so the full dot product
+        // equals its normal part.
+        mismatch += w * (t_r * (u_r - u_star_r) + t_z * (u_z - u_star_z));
+      }
+
+    Functionals out;
+    out.lagrange = strain_energy - work;
+    out.castigliano = -complementary + kinematic;
+    out.reissner = mixed - complementary - work - mismatch;
+    return out;
+  }
+} // namespace rfm
