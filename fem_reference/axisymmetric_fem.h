@@ -1,0 +1,161 @@
+// deal.II finite-element reference for the axisymmetric problems of DESIGN.md section 4.
+// Plain structs only (no deal.II headers), so drivers and tests compile fast; all deal.II
+// code lives in axisymmetric_fem.cc.
+//
+// Model (DESIGN.md sections 1 and 6): dim = 2 with x = r, y = z, on the half section
+// r in [R1, R2], z in [0, a] with the symmetry plane z = 0 (u_z = 0, zero shear).
+// Q_p x Q_p Lagrange elements, strain e(u) = (du_r/dr, du_z/dz, u_r/r, du_r/dz + du_z/dr),
+// s = D e, bilinear form int e(v).D e(u) r dr dz, pressures as int t.v r ds.
+//
+// Die (paper eq. 4.1, rfm::die_u_r): u_r*(z) = -delta (1 - 2 z^2/a^2) on r = R2.
+//  * contact.method "fixed": bilateral zone, u_r = u_r* strongly on z in [0, c], free beyond.
+//  * "iterate" / "max-force": unilateral contact u_r <= u_r* by penalty at the face
+//    quadrature points of r = R2, kappa int_A (u_r - u_r*) v_r r ds over the active set
+//    A = {u_r - u_r* > 0}; the active-set (semi-smooth Newton) loop starts from the whole
+//    outer side (the paper's iteration 0) and stops when A repeats its previous state.
+//    kappa = penalty_factor * E / h_min, h_min the smallest cell edge on r = R2.
+//
+// Functionals (J per radian, full body = 2 x half section), computed with s_h = D e(u_h):
+//   lagrange    = U_h - W(u_h),           U_h = 1/2 int e.De r, W = work of the pressures
+//   castigliano = -U_h + int_{S_c} (s_h n).u* r ds
+//   reissner    = U_h - W(u_h) - int_{S_c} (s_h n).(u_h - u*) r ds
+// S_c = the prescribed zone (fixed) or the active quadrature points (penalty); s_h n is the
+// element trace. For pure traction problems the three are -U_h; in the bilateral mode with
+// p >= 2 u_h = u* on S_c exactly, so reissner == lagrange. The penalty energy
+// 1/2 kappa int_A (u_r - u_r*)^2 r ds is reported apart (penalty_energy), not in lagrange.
+//
+// Contact force P (N, full 360 degree body), three ways:
+//   force          = -2 pi * 2 int s_h . e(v) r dr dz,  v = (psi, 0), psi = (r-R1)/(R2-R1)
+//                    (energetically consistent reaction; DESIGN.md 4.3)
+//   force_trace    = -2 pi R2 * 2 int_0^a sigma_rr(R2, z) dz over the element traces
+//   force_penalty  =  2 pi R2 * 2 int_0^a kappa (u_r - u_r*)_+ dz   (penalty only)
+// For the penalty problem force == force_penalty up to the linear-solver accuracy
+// (v is in the FE space). c = the zero of the gap g = u_r - u_r* along r = R2 (linear
+// interpolation between the last positive and the first non-positive sample, scanning up
+// from z = 0), i.e. where the penalty pressure kappa g_+ vanishes.
+#pragma once
+
+#include "rfm/problem.h"
+
+#include <array>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fem
+{
+  /// Options of the FEM reference that the problem file does not carry.
+  struct FemOptions
+  {
+    int degree = 2;      ///< p of FE_Q(p); default from problem.fem.degree
+    int refinements = 4; ///< mesh level L (cells per line x 2^L, nested grading)
+    enum class MeshGenerator
+    {
+      gmsh,      ///< gmsh API -> .msh -> GridIn::read_msh
+      structured ///< GridGenerator::subdivided_hyper_rectangle, same vertices
+    } mesh = MeshGenerator::gmsh;
+    enum class LinearSolver
+    {
+      direct, ///< SparseDirectUMFPACK
+      cg      ///< CG + SSOR(1.2), relative residual linear_tolerance
+    } linear_solver = LinearSolver::direct;
+    double linear_tolerance = 1e-12;
+    /// kappa = penalty_factor * E / h_min. 1e3 keeps the penetration ~1e-3 of the mesh-size
+    /// scale of the strain; the penalty study in fem_convergence shows the O(1/kappa) error.
+    double penalty_factor = 1e3;
+    int max_active_set_iterations = 50;
+    int base_cells_r = 4, base_cells_z = 8; ///< level-0 mesh
+    double radial_grading = 3.0, axial_grading = 3.0; ///< largest/smallest cell, level 0
+    std::string vtu_directory;  ///< write DIR/fem_solution.vtu when not empty
+    bool progress = true;       ///< one line on stderr per active-set step
+
+    /// Throws rfm::InputError naming the option, the value and the rule.
+    void validate() const;
+  };
+
+  FemOptions options_from_problem(const rfm::Problem &problem);
+
+  struct Functionals
+  {
+    double lagrange = 0, castigliano = 0, reissner = 0; ///< J per radian
+    double strain_energy = 0;  ///< U_h, J per radian
+    double external_work = 0;  ///< W(u_h)
+    double penalty_energy = 0; ///< 1/2 kappa int_A g^2 r ds (full body, per radian)
+  };
+
+  struct ActiveSetStep
+  {
+    int iteration = 0;
+    int n_active = 0, n_changed = 0; ///< active quadrature points, changes vs previous step
+    double half_width = 0;           ///< c [m] from the gap of this step's solution
+    double force = 0, force_trace = 0, force_penalty = 0; ///< [N]
+    Functionals functionals;
+  };
+
+  struct PressurePoint
+  {
+    double z = 0;
+    double p = 0;       ///< penalty traction kappa g_+ (unilateral) or -sigma_rr trace
+    double p_trace = 0; ///< -sigma_rr trace
+    double gap = 0;     ///< u_r - u_r* [m] (positive = penetration)
+  };
+
+  struct ContactResult
+  {
+    std::string method;       ///< "fixed" (bilateral) or "iterate"/"max-force" (penalty)
+    bool unilateral = false;
+    double half_width = 0;    ///< c [m]
+    double force = 0, force_trace = 0, force_penalty = 0; ///< [N], full body
+    double penalty = 0, penalty_factor = 0; ///< kappa [Pa/m] and its factor (unilateral)
+    double h_min = 0;         ///< smallest cell edge on r = R2 [m]
+    double max_penetration = 0; ///< max(u_r - u_r*)_+ [m]
+    int active_set_iterations = 0;
+    std::vector<ActiveSetStep> iterations;
+    std::vector<PressurePoint> pressure; ///< at the face Gauss points of r = R2, sorted by z
+  };
+
+  struct FieldSample
+  {
+    double r = 0, z = 0, u_r = 0, u_z = 0;
+    std::array<double, 4> sigma{}; ///< (rr, zz, tt, rz)
+  };
+
+  struct FemResult
+  {
+    bool success = false;
+    std::string message;
+    int degree = 0, refinements = 0;
+    unsigned long n_dofs = 0, n_cells = 0;
+    std::string mesh_generator;
+    Functionals functionals;
+    std::optional<ContactResult> contact;
+    std::vector<FieldSample> samples;
+    /// r-weighted L2 norms over the full body (per radian), when an exact stress is given:
+    /// ||s_h - s|| and ||s||, s = (rr, zz, tt, rz) with the Euclidean norm.
+    std::optional<double> stress_l2_error, stress_l2_norm;
+    double assembly_seconds = 0, solve_seconds = 0, total_seconds = 0;
+  };
+
+  /// (sigma_rr, sigma_zz, sigma_tt, sigma_rz) at (r, z).
+  using StressFunction = std::function<std::array<double, 4>(double r, double z)>;
+
+  /// Solves the problem. Numerical failures (singular matrix, CG not converging, active-set
+  /// cycle or no convergence) return success = false with a message and whatever history
+  /// exists; bad options throw rfm::InputError.
+  FemResult solve(const rfm::Problem &problem, const FemOptions &options,
+                  const StressFunction &exact_stress = {});
+
+  /// A column of a convergence table.
+  struct TableColumn
+  {
+    std::string name;
+    std::vector<double> values;
+    int precision = 4;
+    bool scientific = true;
+    bool rates = false; ///< append observed rates log2(e_{k-1}/e_k) (h halves per row)
+  };
+
+  /// The columns formatted as a deal.II ConvergenceTable (text).
+  std::string format_convergence_table(const std::vector<TableColumn> &columns);
+} // namespace fem

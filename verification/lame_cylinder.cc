@@ -1,0 +1,245 @@
+// lame_cylinder: verification of the RFM solver on the Lame cylinder.
+//
+// For each problem file of the Lame family (verification/problems/lame_*.json) and each
+// polynomial degree p (N = (p+1)^2 coordinate functions per component), the driver
+//   1. solves with rfm (half section, symmetry plane z = 0),
+//   2. compares the stresses with the exact solution (verification/lame_exact.h):
+//      relative L2 error of the stress tensor (Frobenius, weight r) on a quadrature
+//      independent of the assembly rule, and the max error on a 41 x 41 grid,
+//   3. reports the three functionals next to the exact value -U (the analog of the
+//      paper's Table 1), the a-posteriori indicator |Phi_L - Phi_C| / |Phi_R| against
+//      the true energy error, the inf-sup indicator, condition numbers and timings,
+//   4. samples sigma_rr(r) at z = 0 for several N (the analog of the paper's Fig. 1)
+//      and all stresses along the end z = a,
+//   5. fits the exponential rate log10(error) ~ -k p, and
+//   6. checks verification/tolerances.json (exit status 1 on a violated tolerance).
+//
+// Sample run:
+//   build/bin/lame_cylinder --mode quick --output-dir build/verification
+#include "rfm/model.h"
+#include "rfm/problem.h"
+#include "rfm/result_io.h"
+#include "verification/lame_exact.h"
+#include "verification/tolerances.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+
+namespace
+{
+  struct CaseFile
+  {
+    std::string name, file;
+  };
+
+  verification::LameCylinder exact_of(const rfm::Problem &p)
+  {
+    return {p.geometry.inner_radius,   p.geometry.outer_radius,   p.geometry.length,
+            p.material.youngs_modulus, p.material.poisson_ratio,  p.loading->inner_pressure,
+            p.loading->outer_pressure};
+  }
+
+  // Relative L2 (weight r, Frobenius with sigma_rz counted twice) and max stress errors.
+  std::pair<double, double> stress_errors(const rfm::RfmModel &model,
+                                          const verification::LameCylinder &exact)
+  {
+    const double a = 0.5 * exact.length;
+    std::vector<double> rc, zc;
+    for (int i = 0; i <= 4; ++i)
+      rc.push_back(exact.inner_radius + (exact.outer_radius - exact.inner_radius) * i / 4.0),
+        zc.push_back(a * i / 4.0);
+    const rfm::Quadrature2D q = rfm::tensor_gauss(rc, zc, 24);
+    const rfm::FieldValues f = model.evaluate(q.r, q.z);
+    double err2 = 0.0, ref2 = 0.0;
+    for (Eigen::Index k = 0; k < q.n_points(); ++k)
+      {
+        const auto s = exact.stress(q.r[k], q.z[k]);
+        const double w = q.weights[k] * q.r[k];
+        for (int c = 0; c < 4; ++c)
+          {
+            const double factor = c == rfm::rz ? 2.0 : 1.0;
+            const double d = f.sigma(k, c) - s[c];
+            err2 += w * factor * d * d;
+            ref2 += w * factor * s[c] * s[c];
+          }
+      }
+    // Max error on a grid including the boundary, relative to the max exact stress.
+    const int m = 41;
+    Eigen::VectorXd r(m * m), z(m * m);
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i)
+        r[j * m + i] = exact.inner_radius + (exact.outer_radius - exact.inner_radius) * i / (m - 1.0),
+                  z[j * m + i] = a * j / (m - 1.0);
+    const rfm::FieldValues g = model.evaluate(r, z);
+    double max_err = 0.0, max_ref = 0.0;
+    for (int k = 0; k < m * m; ++k)
+      {
+        const auto s = exact.stress(r[k], z[k]);
+        for (int c = 0; c < 4; ++c)
+          {
+            max_err = std::max(max_err, std::abs(g.sigma(k, c) - s[c]));
+            max_ref = std::max(max_ref, std::abs(s[c]));
+          }
+      }
+    return {std::sqrt(err2 / ref2), max_err / max_ref};
+  }
+
+  nlohmann::json profile(const rfm::RfmModel &model, double z, int n, double r1, double r2,
+                         const verification::LameCylinder &exact)
+  {
+    const Eigen::VectorXd r = Eigen::VectorXd::LinSpaced(n, r1, r2);
+    const rfm::FieldValues f = model.evaluate(r, Eigen::VectorXd::Constant(n, z));
+    nlohmann::json out = {{"z", z}, {"r", std::vector<double>(r.data(), r.data() + n)}};
+    const char *names[] = {"sigma_rr", "sigma_zz", "sigma_tt", "sigma_rz"};
+    for (int c = 0; c < 4; ++c)
+      {
+        std::vector<double> v(n), e(n);
+        for (int k = 0; k < n; ++k)
+          v[k] = f.sigma(k, c), e[k] = exact.stress(r[k], z)[c];
+        out[names[c]] = v;
+        out[std::string(names[c]) + "_exact"] = e;
+      }
+    return out;
+  }
+
+  // Least-squares slope of log10(error) against p over the points above the floor.
+  double decades_per_degree(const std::vector<int> &p, const std::vector<double> &err,
+                            int p_min, double floor)
+  {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    int n = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p[i] >= p_min && err[i] > floor)
+        {
+          const double x = p[i], y = std::log10(err[i]);
+          sx += x, sy += y, sxx += x * x, sxy += x * y, ++n;
+        }
+    if (n < 2)
+      return std::nan("");
+    return -(n * sxy - sx * sy) / (n * sxx - sx * sx);
+  }
+} // namespace
+
+int main(int argc, char **argv)
+{
+  try
+    {
+      // 1. Options.
+      CLI::App app{"Lame cylinder: RFM against the exact solution"};
+      std::string mode = "quick", output_dir = "verification-output";
+      std::string source_dir = RFM_SOURCE_DIR;
+      std::string tolerances;
+      app.add_option("--mode", mode, "quick (CI) or full (report)")
+        ->check(CLI::IsMember({"quick", "full"}));
+      app.add_option("--output-dir", output_dir, "where lame_cylinder.json is written");
+      app.add_option("--source-dir", source_dir, "project source (problem files)");
+      app.add_option("--tolerances", tolerances, "tolerance file to check (default: none)");
+      CLI11_PARSE(app, argc, argv);
+      std::filesystem::create_directories(output_dir);
+
+      const std::vector<CaseFile> cases = {
+        {"paper", "lame_paper.json"},
+        {"two_pressures", "lame_two_pressures.json"},
+        {"nearly_incompressible", "lame_nearly_incompressible.json"},
+        {"thick_wall", "lame_thick_wall.json"}};
+      const int p_max = mode == "full" ? 20 : 14;
+      const std::vector<int> fig1_degrees = {0, 1, 2, 3, 5, 7};
+
+      nlohmann::json results = {{"driver", "lame_cylinder"}, {"mode", mode}};
+      for (const CaseFile &cf : cases)
+        {
+          // 2. One case: the problem file, its exact solution, a sweep over p.
+          const std::string path = source_dir + "/verification/problems/" + cf.file;
+          const rfm::Problem problem = rfm::read_problem_file(path);
+          const verification::LameCylinder exact = exact_of(problem);
+          const double phi_exact = -exact.strain_energy();
+          nlohmann::json c = {{"problem_file", "verification/problems/" + cf.file},
+                              {"problem", problem.source},
+                              {"exact_functional", phi_exact}};
+          fmt::print("\n== Lame cylinder, case {} ({}) ==\n", cf.name, cf.file);
+          fmt::print("{:>3} {:>5} {:>13} {:>13} {:>13} {:>10} {:>10} {:>10} {:>9} {:>9} "
+                     "{:>9} {:>9}\n",
+                     "p", "N", "Phi_C [J]", "Phi_R [J]", "Phi_L [J]", "L2 err", "max err",
+                     "indicator", "inf-sup", "cond K", "asm [s]", "solve [s]");
+          std::vector<int> ps;
+          std::vector<double> errs;
+          for (int p = 0; p <= p_max; ++p)
+            {
+              rfm::DiscretizationOptions options = problem.rfm;
+              options.degree = p;
+              const rfm::RfmModel model(problem, options, std::nullopt);
+              if (!model.ok())
+                {
+                  fmt::print(stderr, "lame_cylinder: {} p = {}: {}\n", cf.name, p,
+                             model.summary().message);
+                  return 3;
+                }
+              const rfm::Functionals phi = model.solution().functionals();
+              const auto [l2, mx] = stress_errors(model, exact);
+              const rfm::SolveSummary &s = model.summary();
+              const int n = (p + 1) * (p + 1);
+              fmt::print("{:>3} {:>5} {:>13.8f} {:>13.8f} {:>13.8f} {:>10.3e} {:>10.3e} "
+                         "{:>10.3e} {:>9.2e} {:>9.2e} {:>9.4f} {:>9.4f}\n",
+                         p, n, phi.castigliano, phi.reissner, phi.lagrange, l2, mx,
+                         phi.indicator(), s.inf_sup, s.cond_schur, model.assembly_seconds(),
+                         model.solve_seconds());
+              c["degrees"]["p" + std::to_string(p)] = {
+                {"degree", p},
+                {"N", n},
+                {"stress_l2_relative", l2},
+                {"stress_max_relative", mx},
+                {"lagrange", phi.lagrange},
+                {"castigliano", phi.castigliano},
+                {"reissner", phi.reissner},
+                {"castigliano_minus_reissner_relative",
+                 std::abs(phi.castigliano - phi.reissner) / std::abs(phi_exact)},
+                {"lagrange_minus_exact_relative", (phi.lagrange - phi_exact) / std::abs(phi_exact)},
+                {"reissner_error_relative", std::abs(phi.reissner - phi_exact) / std::abs(phi_exact)},
+                {"indicator", phi.indicator()},
+                {"inf_sup", s.inf_sup},
+                {"cond_stress_block", s.cond_stress},
+                {"cond_schur", s.cond_schur},
+                {"assembly_s", model.assembly_seconds()},
+                {"solve_s", model.solve_seconds()}};
+              ps.push_back(p);
+              errs.push_back(l2);
+
+              // Fig. 1 analog: sigma_rr(r) at z = 0; stresses along the end at the top p.
+              if (std::find(fig1_degrees.begin(), fig1_degrees.end(), p) != fig1_degrees.end())
+                c["profiles_mid"].push_back(
+                  {{"degree", p}, {"N", n},
+                   {"profile", profile(model, 0.0, 61, exact.inner_radius, exact.outer_radius, exact)}});
+              if (p == 7)
+                c["profile_end_p7"] = profile(model, 0.5 * exact.length, 61, exact.inner_radius,
+                                              exact.outer_radius, exact);
+            }
+          fmt::print("exact: Phi = -U = {:.8f} J per radian\n", phi_exact);
+          c["decades_per_degree"] = decades_per_degree(ps, errs, 2, 1e-11);
+          fmt::print("observed rate: stress L2 error falls by {:.2f} decades per degree\n",
+                     c["decades_per_degree"].get<double>());
+          results["cases"][cf.name] = c;
+        }
+
+      // 3. Write the results, then gate them.
+      const std::string out_file = output_dir + "/lame_cylinder.json";
+      rfm::write_json_atomically(out_file, results);
+      fmt::print("\nwrote {}\n", out_file);
+      if (!tolerances.empty())
+        {
+          const auto report =
+            verification::check_tolerances(tolerances, "lame_cylinder", results, std::cout);
+          fmt::print("{} passed, {} failed\n", report.n_passed, report.n_failed);
+          return report.n_failed == 0 ? 0 : 1;
+        }
+      return 0;
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "lame_cylinder: error: " << e.what() << '\n';
+      return 2;
+    }
+}
