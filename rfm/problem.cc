@@ -154,7 +154,9 @@ namespace rfm
 
     if (top.has("contact"))
       {
-        const ObjectReader c(top.at("contact"), "contact", {"method", "half_width"});
+        const ObjectReader c(top.at("contact"), "contact", {"method", "half_width", "curve_points"});
+        if (c.has("curve_points"))
+          p.contact.curve_points = c.integer("curve_points", 0, 200);
         if (c.has("method"))
           p.contact.method = c.string("method", {"fixed", "iterate", "max-force"});
         if (c.has("half_width"))

@@ -4,7 +4,8 @@
 //     "material": {"youngs_modulus": Pa, "poisson_ratio": -},
 //     "loading":  {"inner_pressure": Pa, "outer_pressure": Pa},          // optional
 //     "die":      {"indentation": m, "profile": "parabolic"},            // optional
-//     "contact":  {"method": "iterate" | "max-force" | "fixed", "half_width": m},
+//     "contact":  {"method": "iterate" | "max-force" | "fixed", "half_width": m,
+//                  "curve_points": n},                                  // n: P(c) curve
 //     "samples":  [[r, z], ...],
 //     "rfm": {"degree": p, ...}, "fem": {"degree": p, "refinements": L} }
 //
@@ -56,6 +57,7 @@ namespace rfm
   {
     std::string method = "fixed";     ///< "fixed", "iterate" or "max-force"
     std::optional<double> half_width; ///< c [m] for "fixed"; default a
+    int curve_points = 0;             ///< extension: sample P(c) at this many c in (0, a]
   };
 
   struct FemSettings

@@ -10,6 +10,7 @@
 //   build/bin/rfm_solve verification/problems/lame_paper.json --degree 7 --output lame.json
 //
 // Exit status: 0 success, 2 bad input (nothing written), 3 numerical failure.
+#include "rfm/contact.h"
 #include "rfm/model.h"
 #include "rfm/problem.h"
 #include "rfm/result_io.h"
@@ -42,6 +43,64 @@ namespace
                      {"sigma_rz", f.sigma(k, rfm::rz)}});
     return out;
   }
+
+  nlohmann::json iterate_to_json(const rfm::ContactIterate &it, double a)
+  {
+    return {{"half_width", it.half_width},
+            {"half_width_ratio", it.half_width / a},
+            {"force", it.force},
+            {"force_trace", it.force_trace},
+            {"lagrange", it.lagrange},
+            {"castigliano", it.castigliano},
+            {"reissner", it.reissner},
+            {"max_tension", it.max_tension},
+            {"max_penetration", it.max_penetration},
+            {"condition_1_2_holds", !it.tension},
+            {"condition_1_3_holds", !it.penetration},
+            {"phase", it.phase}};
+  }
+
+  nlohmann::json contact_to_json(const rfm::Problem &problem, const rfm::ContactResult &c)
+  {
+    const double a = problem.geometry.half_length();
+    nlohmann::json out = {{"method", c.method}, {"message", c.message}};
+    nlohmann::json iterations = nlohmann::json::array();
+    for (const auto &it : c.history)
+      iterations.push_back(iterate_to_json(it, a));
+    out["iterations"] = iterations;
+    if (!c.success)
+      return out;
+    out["half_width"] = c.final.half_width;
+    out["half_width_ratio"] = c.final.half_width / a;
+    out["force"] = c.final.force;
+    out["force_trace"] = c.final.force_trace;
+    if (c.half_width_range)
+      out["half_width_range"] = {c.half_width_range->first, c.half_width_range->second};
+    out["conditions"] = iterate_to_json(c.final, a);
+    nlohmann::json pressure = nlohmann::json::array();
+    for (const auto &[z, p] : rfm::contact_pressure(*c.model, c.final.half_width, 101))
+      pressure.push_back({{"z", z}, {"p", p}});
+    out["pressure"] = pressure;
+    return out;
+  }
+
+  // P(c) at curve_points zone widths in (0, a] (bilateral solves).
+  nlohmann::json force_curve(const rfm::Problem &problem)
+  {
+    const double a = problem.geometry.half_length();
+    const int n = problem.contact.curve_points;
+    nlohmann::json out = nlohmann::json::array();
+    for (int k = 1; k <= n; ++k)
+      {
+        const double c = a * k / n;
+        const rfm::RfmModel m(problem, problem.rfm, c);
+        if (!m.ok())
+          continue;
+        const rfm::ContactForce f = m.contact_force();
+        out.push_back({{"half_width", c}, {"force", f.domain}, {"force_trace", f.trace}});
+      }
+    return out;
+  }
 } // namespace
 
 int main(int argc, char **argv)
@@ -72,52 +131,67 @@ int main(int argc, char **argv)
         problem.rfm.degree = degree;
       if (!output_path.empty())
         rfm::check_output_path("--output", output_path);
-      if (problem.die && problem.contact.method != "fixed")
-        throw rfm::InputError("problem file: contact.method = \"" + problem.contact.method +
-                              "\": rfm_solve implements \"fixed\" only so far (the "
-                              "iterative and max-force searches are not built yet)");
-      const std::optional<double> half_width =
-        problem.die ? std::optional<double>(problem.contact.half_width.value_or(
-                        problem.geometry.half_length()))
-                    : std::nullopt;
 
-      // 3. Solve.
+      // 3. Solve: one linear solve, or the contact search for a die problem.
       const int p = problem.rfm.degree;
       fmt::print(stderr, "rfm_solve: degree p = {}, N = {} per component\n", p, (p + 1) * (p + 1));
-      const rfm::RfmModel model(problem, problem.rfm, half_width);
-      const rfm::SolveSummary &s = model.summary();
-
+      std::unique_ptr<rfm::RfmModel> model_ptr;
+      rfm::ContactResult contact;
       nlohmann::json result;
       result["solver"] = "rfm";
       result["problem"] = problem.source;
-      const auto n_basis = model.space().n_basis_functions();
+      if (problem.die)
+        {
+          contact = rfm::solve_contact(problem, problem.rfm, rfm::ContactOptions{});
+          result["contact"] = contact_to_json(problem, contact);
+          model_ptr = std::move(contact.model);
+        }
+      else
+        model_ptr = std::make_unique<rfm::RfmModel>(problem, problem.rfm, std::nullopt);
+
+      const auto n_basis = static_cast<long>((p + 1) * (p + 1));
       result["discretization"] = {
         {"degree", p},
         {"N", n_basis},
         {"unknowns", 6 * n_basis},
         {"stress_unknowns", 4 * n_basis},
         {"displacement_unknowns", 2 * n_basis},
-        {"quadrature_points", model.space().quadrature().n_points()},
         {"gauss_points_per_cell", p + problem.rfm.extra_gauss_points},
         {"n_graded_layers", problem.rfm.n_graded_layers},
         {"grading_ratio", problem.rfm.grading_ratio},
         {"section", "upper half z in [0, length/2], symmetry plane z = 0"}};
-      result["diagnostics"] = {{"status", s.success ? "ok" : "failed"},
-                               {"message", s.message},
-                               {"rcond_stress_block", s.rcond_stress},
-                               {"rcond_schur_complement", s.rcond_schur},
-                               {"cond_stress_block", s.cond_stress},
-                               {"cond_schur_complement", s.cond_schur},
-                               {"inf_sup_indicator", s.inf_sup}};
-      result["timing"] = {{"assembly_s", model.assembly_seconds()},
-                          {"solve_s", model.solve_seconds()}};
-      if (!s.success)
+      double assembly_s = 0.0, solve_s = 0.0;
+      if (problem.die)
+        for (const auto &it : contact.history)
+          assembly_s += it.assembly_s, solve_s += it.solve_s;
+      else if (model_ptr)
+        assembly_s = model_ptr->assembly_seconds(), solve_s = model_ptr->solve_seconds();
+      result["timing"] = {{"assembly_s", assembly_s}, {"solve_s", solve_s}};
+
+      const bool solved = model_ptr && model_ptr->ok() && (!problem.die || contact.success);
+      if (model_ptr)
         {
+          const rfm::SolveSummary &s = model_ptr->summary();
+          result["discretization"]["quadrature_points"] = model_ptr->space().quadrature().n_points();
+          result["diagnostics"] = {{"status", solved ? "ok" : "failed"},
+                                   {"message", problem.die ? contact.message : s.message},
+                                   {"rcond_stress_block", s.rcond_stress},
+                                   {"rcond_schur_complement", s.rcond_schur},
+                                   {"cond_stress_block", s.cond_stress},
+                                   {"cond_schur_complement", s.cond_schur},
+                                   {"inf_sup_indicator", s.inf_sup}};
+        }
+      if (!solved)
+        {
+          const std::string msg = problem.die ? contact.message : model_ptr->summary().message;
+          result["diagnostics"]["status"] = "failed";
+          result["diagnostics"]["message"] = msg;
           if (!output_path.empty())
             rfm::write_json_atomically(output_path, result);
-          fmt::print(stderr, "rfm_solve: numerical failure: {}\n", s.message);
+          fmt::print(stderr, "rfm_solve: numerical failure: {}\n", msg);
           return 3;
         }
+      const rfm::RfmModel &model = *model_ptr;
 
       // 4. Post-processing.
       const rfm::Functionals phi = model.solution().functionals();
@@ -126,19 +200,12 @@ int main(int argc, char **argv)
                                {"reissner", phi.reissner},
                                {"indicator", phi.indicator()},
                                {"units", "J per radian"}};
-      if (half_width)
-        {
-          const rfm::ContactForce force = model.contact_force();
-          result["contact"] = {{"method", problem.contact.method},
-                               {"half_width", *half_width},
-                               {"half_width_ratio", *half_width / problem.geometry.half_length()},
-                               {"force", force.domain},
-                               {"force_trace", force.trace}};
-        }
+      if (problem.die && problem.contact.curve_points > 0)
+        result["contact"]["curve"] = force_curve(problem);
       result["samples"] = fields_to_json(problem, model);
 
-      bool finite = std::isfinite(phi.lagrange) && std::isfinite(phi.castigliano) &&
-                    std::isfinite(phi.reissner);
+      const bool finite = std::isfinite(phi.lagrange) && std::isfinite(phi.castigliano) &&
+                          std::isfinite(phi.reissner);
       if (!finite)
         {
           result["diagnostics"]["status"] = "failed";
@@ -148,8 +215,13 @@ int main(int argc, char **argv)
         rfm::write_json_atomically(output_path, result);
       fmt::print(stderr, "rfm_solve: Phi_L = {:.6e}, Phi_C = {:.6e}, Phi_R = {:.6e} J/rad; "
                          "assembly {:.3f} s, solve {:.3f} s\n",
-                 phi.lagrange, phi.castigliano, phi.reissner, model.assembly_seconds(),
-                 model.solve_seconds());
+                 phi.lagrange, phi.castigliano, phi.reissner, assembly_s, solve_s);
+      if (problem.die)
+        fmt::print(stderr, "rfm_solve: contact ({}): c = {:.6g} m = {:.5f} a, P = {:.6g} N "
+                           "(trace {:.6g} N), {} solves: {}\n",
+                   problem.contact.method, contact.final.half_width,
+                   contact.final.half_width / problem.geometry.half_length(), contact.final.force,
+                   contact.final.force_trace, contact.history.size(), contact.message);
       if (!finite)
         {
           fmt::print(stderr, "rfm_solve: numerical failure: non-finite functional\n");

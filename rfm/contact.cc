@@ -1,0 +1,274 @@
+#include "rfm/contact.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace rfm
+{
+  namespace
+  {
+    // Linear interpolation of the zero of f between (z0, f0) and (z1, f1), f0 f1 <= 0.
+    double zero_between(double z0, double f0, double z1, double f1)
+    {
+      return f0 == f1 ? z0 : z0 + (z1 - z0) * f0 / (f0 - f1);
+    }
+  } // namespace
+
+  std::vector<std::pair<double, double>> contact_pressure(const RfmModel &model, const double c,
+                                                          const int n)
+  {
+    const double r2 = model.space().structures().section().r_max();
+    const Eigen::VectorXd z = Eigen::VectorXd::LinSpaced(n, 0.0, c);
+    const FieldValues f = model.evaluate(Eigen::VectorXd::Constant(n, r2), z);
+    std::vector<std::pair<double, double>> out;
+    for (int k = 0; k < n; ++k)
+      out.emplace_back(z[k], -f.sigma(k, rr));
+    return out;
+  }
+
+  ContactIterate check_contact(const Problem &problem, const RfmModel &model,
+                               const ContactOptions &options)
+  {
+    const double a = problem.geometry.half_length(), r2 = problem.geometry.outer_radius;
+    const double c = *model.half_width();
+    ContactIterate it;
+    it.half_width = c;
+    const ContactForce force = model.contact_force();
+    it.force = force.domain;
+    it.force_trace = force.trace;
+    const Functionals phi = model.solution().functionals();
+    it.lagrange = phi.lagrange, it.castigliano = phi.castigliano, it.reissner = phi.reissner;
+    it.assembly_s = model.assembly_seconds(), it.solve_s = model.solve_seconds();
+
+    // Grid on the outer side with c itself as a node.
+    const int n = options.n_check_points;
+    std::vector<double> zs;
+    for (int k = 0; k < n; ++k)
+      zs.push_back(a * k / (n - 1.0));
+    zs.push_back(c);
+    std::sort(zs.begin(), zs.end());
+    zs.erase(std::unique(zs.begin(), zs.end()), zs.end());
+    const Eigen::Map<const Eigen::VectorXd> z(zs.data(), static_cast<Eigen::Index>(zs.size()));
+    const FieldValues f = model.evaluate(Eigen::VectorXd::Constant(z.size(), r2), z);
+
+    // Condition 1.2 inside the zone: p = -sigma_rr >= 0.
+    double p_peak = 0.0;
+    for (Eigen::Index k = 0; k < z.size() && z[k] <= c; ++k)
+      p_peak = std::max(p_peak, -f.sigma(k, rr));
+    it.peak_pressure = p_peak;
+    const double tol_p = options.violation_tolerance * std::max(p_peak, 1e-300);
+    it.first_tension_z = c;
+    for (Eigen::Index k = 0; k < z.size() && z[k] <= c; ++k)
+      {
+        const double p = -f.sigma(k, rr);
+        it.max_tension = std::max(it.max_tension, -p);
+        if (p < -tol_p && !it.tension)
+          {
+            it.tension = true;
+            // Walk back to the last non-negative pressure: the zero where it turns tensile.
+            Eigen::Index j = k;
+            while (j > 0 && -f.sigma(j - 1, rr) < 0.0)
+              --j;
+            it.first_tension_z = j == 0 ? 0.0
+                                        : zero_between(z[j - 1], -f.sigma(j - 1, rr), z[j],
+                                                       -f.sigma(j, rr));
+          }
+      }
+
+    // Condition 1.3 outside the zone: u_r <= u_r*.
+    const double tol_u = options.violation_tolerance * problem.die->indentation;
+    it.penetration_end_z = c;
+    bool in_run = false, run_done = false;
+    for (Eigen::Index k = 0; k < z.size(); ++k)
+      {
+        if (z[k] <= c)
+          continue;
+        const double pen = f.u(k, 0) - die_u_r(*problem.die, problem.geometry, z[k]);
+        it.max_penetration = std::max(it.max_penetration, pen);
+        if (pen > tol_u)
+          {
+            it.penetration = true;
+            if (!run_done)
+              in_run = true;
+          }
+        if (in_run && !run_done && pen <= 0.0)
+          {
+            const double prev = f.u(k - 1, 0) - die_u_r(*problem.die, problem.geometry, z[k - 1]);
+            it.penetration_end_z = zero_between(z[k - 1], prev, z[k], pen);
+            run_done = true;
+          }
+      }
+    if (in_run && !run_done)
+      it.penetration_end_z = a;
+    return it;
+  }
+
+  namespace
+  {
+    struct Solver
+    {
+      const Problem &problem;
+      const DiscretizationOptions &discretization;
+      const ContactOptions &options;
+      ContactResult &result;
+
+      // Solves at c; returns false (and sets the message) on a numerical failure.
+      bool solve(const double c, ContactIterate &it, const char *phase)
+      {
+        auto model = std::make_unique<RfmModel>(problem, discretization, c);
+        if (!model->ok())
+          {
+            std::ostringstream msg;
+            msg << "solve at c = " << c << " m failed: " << model->summary().message;
+            result.message = msg.str();
+            return false;
+          }
+        it = check_contact(problem, *model, options);
+        it.phase = phase;
+        result.history.push_back(it);
+        result.model = std::move(model);
+        result.final = it;
+        return true;
+      }
+    };
+  } // namespace
+
+  ContactResult solve_contact(const Problem &problem, const DiscretizationOptions &discretization,
+                              const ContactOptions &options)
+  {
+    ContactResult result;
+    result.method = problem.contact.method;
+    Solver s{problem, discretization, options, result};
+    const double a = problem.geometry.half_length();
+    ContactIterate it;
+
+    // 1. A given zone.
+    if (problem.contact.method == "fixed")
+      {
+        result.success = s.solve(problem.contact.half_width.value_or(a), it, "fixed");
+        if (result.success)
+          result.message = it.conditions_hold() ? "fixed zone; conditions 1.2 and 1.3 hold"
+                                                : "fixed zone; conditions 1.2/1.3 violated "
+                                                  "(expected unless c is the true half-width)";
+        return result;
+      }
+
+    // 2. The paper's successive iterations, safeguarded by the bracket [lo, hi]:
+    //    lo is a zone known to be too short (penetration), hi one known too long (tension).
+    if (problem.contact.method == "iterate")
+      {
+        double lo = 0.0, hi = a, c = a;
+        bool holds = false;
+        int n_solves = 0;
+        for (; n_solves < options.max_iterations && !holds; ++n_solves)
+          {
+            if (!s.solve(c, it, "iteration"))
+              return result;
+            if (it.conditions_hold())
+              {
+                holds = true;
+                break;
+              }
+            // Both violated: side with the larger relative violation.
+            const double rel_t = it.max_tension / std::max(1e-300, it.peak_pressure);
+            const double rel_u = it.max_penetration / problem.die->indentation;
+            const bool too_long = it.tension && (!it.penetration || rel_t >= rel_u);
+            double proposal;
+            if (too_long)
+              hi = std::min(hi, c), proposal = it.first_tension_z;
+            else
+              lo = std::max(lo, c), proposal = it.penetration_end_z;
+            if (hi - lo <= options.tolerance * a)
+              break; // bracketed without a c where both hold: accept the bracket below
+            // Keep the fixed-point step if it stays well inside the bracket.
+            const double margin = 0.01 * (hi - lo);
+            c = (proposal > lo + margin && proposal < hi - margin) ? proposal : 0.5 * (lo + hi);
+          }
+        if (!holds && hi - lo > options.tolerance * a)
+          {
+            result.message = "contact iteration did not converge in " +
+                             std::to_string(options.max_iterations) + " solves";
+            return result;
+          }
+
+        // Refinement: at finite N the conditions hold on an interval of c, which shrinks to
+        // the true c as N grows. Bisect for both ends: the largest c without tension and
+        // the smallest c without penetration. The answer is the interval's midpoint; its
+        // half-length is the discretization uncertainty of c at this N.
+        double c_lo = holds ? c : lo, c_hi = holds ? c : hi;
+        if (holds)
+          {
+            double bad = hi, good = c; // upper end: good holds 1.2, bad is tensile
+            while (bad - good > options.tolerance * a && n_solves++ < options.max_iterations)
+              {
+                const double mid = 0.5 * (good + bad);
+                if (!s.solve(mid, it, "refinement"))
+                  return result;
+                (it.tension ? bad : good) = mid;
+              }
+            c_hi = good;
+            bad = lo, good = c; // lower end: good holds 1.3, bad penetrates
+            while (good - bad > options.tolerance * a && n_solves++ < options.max_iterations)
+              {
+                const double mid = 0.5 * (good + bad);
+                if (!s.solve(mid, it, "refinement"))
+                  return result;
+                (it.penetration ? bad : good) = mid;
+              }
+            c_lo = good;
+          }
+        if (!s.solve(0.5 * (c_lo + c_hi), it, "final"))
+          return result;
+        result.half_width_range = {c_lo, c_hi};
+        result.success = true;
+        result.message = holds ? "conditions 1.2 and 1.3 hold for c in [" +
+                                   std::to_string(c_lo / a) + ", " + std::to_string(c_hi / a) +
+                                   "] a at this N; c is its midpoint"
+                               : "zone bracketed to the tolerance without an iterate free of "
+                                 "violations (discretization noise at this N)";
+        return result;
+      }
+
+    // 3. Barber's principle: golden-section maximization of P(c) on [0.05 a, a].
+    const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+    double lo = 0.05 * a, hi = a;
+    double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+    ContactIterate i1, i2;
+    if (!s.solve(x1, i1, "search") || !s.solve(x2, i2, "search"))
+      return result;
+    int k = 2;
+    while (hi - lo > options.tolerance * a)
+      {
+        if (++k > options.max_iterations)
+          {
+            result.message = "max-force search did not reach the tolerance in " +
+                             std::to_string(options.max_iterations) + " solves";
+            return result;
+          }
+        if (i1.force > i2.force)
+          {
+            hi = x2, x2 = x1, i2 = i1;
+            x1 = hi - g * (hi - lo);
+            if (!s.solve(x1, i1, "search"))
+              return result;
+          }
+        else
+          {
+            lo = x1, x1 = x2, i1 = i2;
+            x2 = lo + g * (hi - lo);
+            if (!s.solve(x2, i2, "search"))
+              return result;
+          }
+      }
+    // Final solve at the maximizer, with the check of conditions 1.2 and 1.3.
+    if (!s.solve(0.5 * (lo + hi), it, "final"))
+      return result;
+    result.success = true;
+    result.message = it.conditions_hold()
+                       ? "maximum of P(c) found; conditions 1.2 and 1.3 hold there"
+                       : "maximum of P(c) found; conditions 1.2/1.3 violated there beyond the "
+                         "tolerance (P is flat at its maximum: see `iterate`)";
+    return result;
+  }
+} // namespace rfm

@@ -1,0 +1,91 @@
+// Frictionless contact of the outer side r = R2 with a smooth rigid die (paper sections
+// 1, 2 and 4; DESIGN.md section 4.2): the contact half-width c is unknown.
+//
+// For a fixed c the bilateral problem is linear (model.h: u_r = u_r* on |z| <= c, free
+// beyond). Its contact pressure is p(z) = -sigma_rr(R2, z); the structure forces p(c) = 0
+// at the zone edge, so a wrong c shows up as
+//   * condition 1.2 violated: tensile pressure p < 0 inside the zone (c too long), or
+//   * condition 1.3 violated: penetration u_r > u_r* outside the zone (c too short).
+// Both are checked on a fine grid of points along the outer side.
+//
+// Three ways to fix c (problem file: contact.method):
+//   fixed:     the given c (c = a is the paper's iteration 0); gives P(c).
+//   iterate:   the paper's successive iterations, from c = a: remove the points where the
+//              pressure is tensile (c <- first zero of p), add the points that penetrate
+//              (c <- end of the penetrating interval), until both conditions hold. Each
+//              step is kept inside the bracket [too short, too long] found so far; a step
+//              that leaves it is replaced by a bisection step (the raw fixed-point
+//              iteration can overshoot and cycle). At finite N both conditions hold on
+//              an interval of c (the structures force p(c) = 0 and cannot represent the
+//              edge singularity that would flag a slightly wrong c); bisection then finds
+//              both ends and c is the midpoint, the half-length its uncertainty.
+//   max-force: Barber's principle: the true zone maximizes P(c). Golden-section search
+//              on P(c), then conditions 1.2 and 1.3 checked at the maximizer. P(c) is flat
+//              at its maximum, so c is located less sharply than by `iterate`.
+//
+// Contact force P (full 360 degrees, N): `force` is the domain integral
+// -2 pi int s . e(v) r dr dz with v = ((r - R1)/(R2 - R1), 0) (energetically consistent;
+// DESIGN.md section 4.3); `force_trace` is eq. 4.6, -2 pi R2 int sigma_rr(R2, z) dz.
+#pragma once
+
+#include "rfm/model.h"
+
+#include <memory>
+#include <optional>
+#include <utility>
+#include <string>
+#include <vector>
+
+namespace rfm
+{
+  struct ContactOptions
+  {
+    int max_iterations = 60;     ///< solves in `iterate` / `max-force`
+    double tolerance = 5e-4;     ///< on c / a: bracket width at which a search stops
+    int n_check_points = 2001;   ///< grid along the outer side for conditions 1.2, 1.3
+    /// A violation counts when it exceeds this fraction of the peak pressure (1.2) or of
+    /// the indentation delta (1.3): discretization noise below it is not a violation.
+    double violation_tolerance = 1e-4;
+  };
+
+  /// One solve at a fixed c, with its check of conditions 1.2 and 1.3.
+  struct ContactIterate
+  {
+    double half_width = 0.0;                          ///< c [m]
+    double force = 0.0, force_trace = 0.0;            ///< P [N]
+    double lagrange = 0.0, castigliano = 0.0, reissner = 0.0; ///< J per radian
+    double peak_pressure = 0.0;   ///< max p inside the zone [Pa]
+    double max_tension = 0.0;     ///< max(-p)+ inside the zone [Pa] (condition 1.2)
+    double max_penetration = 0.0; ///< max(u_r - u_r*)+ outside the zone [m] (condition 1.3)
+    double first_tension_z = 0.0; ///< first zero of p where it turns tensile [m] (or c)
+    double penetration_end_z = 0.0; ///< end of the penetrating interval beyond c [m] (or c)
+    bool tension = false, penetration = false; ///< violations above the tolerances
+    std::string phase; ///< "fixed", "iteration", "refinement", "search" or "final"
+    double assembly_s = 0.0, solve_s = 0.0;
+    bool conditions_hold() const { return !tension && !penetration; }
+  };
+
+  struct ContactResult
+  {
+    bool success = false;
+    std::string message;
+    std::string method;
+    std::vector<ContactIterate> history; ///< every solve, in order
+    ContactIterate final;                ///< the accepted iterate
+    /// iterate: the interval of c on which 1.2 and 1.3 hold at this N (c is its midpoint)
+    std::optional<std::pair<double, double>> half_width_range;
+    std::unique_ptr<RfmModel> model;     ///< the model at the accepted c
+  };
+
+  /// Solves at c and checks the conditions (precondition: problem.die set, 0 < c <= a).
+  /// Sets `model` to the solved model; on a numerical failure returns success = false.
+  ContactResult solve_contact(const Problem &problem, const DiscretizationOptions &discretization,
+                              const ContactOptions &options);
+
+  /// The check of one fixed c (used by solve_contact and the verification drivers).
+  ContactIterate check_contact(const Problem &problem, const RfmModel &model,
+                               const ContactOptions &options);
+
+  /// Contact pressure p(z) = -sigma_rr(R2, z) for z in [0, c] at n points.
+  std::vector<std::pair<double, double>> contact_pressure(const RfmModel &model, double c, int n);
+} // namespace rfm
