@@ -1,0 +1,275 @@
+// die_contact: verification of the RFM contact solver on the paper's die problem
+// (Tables 2 and 3, Figs. 2 and 3; DESIGN.md section 4.2).
+//
+// A hollow cylinder (R1 = 0.1 m, R2 = 0.2 m, length 0.4 m, E = 210 GPa, nu = 0.3) is
+// pressed by a smooth rigid parabolic die, delta = 1e-6 m. The driver
+//   1. solves iteration 0 (the whole outer side in contact, c = a) for several N and
+//      compares P and the functionals with the paper (128.7 kN, 0.0176 J per radian),
+//   2. runs the paper's successive iterations (`iterate`) and Barber's maximum-force
+//      search (`max-force`) for several N, and with the quadrature doubled, to show
+//      that c and P are stable (the Tables 2 and 3 analog with the paper side by side),
+//   3. samples the contact pressure of every iteration (the Fig. 3 analog), sigma_rr
+//      through the thickness at z = 0, and the P(c) curve with its maximum,
+//   4. checks that P scales linearly with delta and c does not depend on it, and
+//   5. gates the results with verification/tolerances.json.
+//
+// Sample run:
+//   build/bin/die_contact --mode quick --output-dir build/verification-output
+#include "rfm/contact.h"
+#include "rfm/problem.h"
+#include "rfm/result_io.h"
+#include "verification/tolerances.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+
+namespace
+{
+  // The paper's numbers (Tables 2 and 3 and the text), shown side by side, never used
+  // as an oracle for our own code.
+  const nlohmann::json paper = {
+    {"table2", {{"iteration", {0, 1, 3, 4}},
+                {"castigliano", {0.0176, 0.0141, 0.0133, 0.0135}},
+                {"reissner", {0.0176, 0.0141, 0.0132, 0.0132}},
+                {"lagrange", {0.0176, 0.0143, 0.0134, 0.0133}}}},
+    {"table3", {{"iteration", {0, 1, 2, 3, 4, 5}},
+                {"force_kN", {128.7, 179.2, 190.5, 192.3, 195.2, 190.5}},
+                {"note", "iteration 5 is the check with c = 0.48 a"}}},
+    {"half_width_ratio", 0.543}};
+
+  nlohmann::json iterate_json(const rfm::ContactIterate &it, double a, double delta)
+  {
+    return {{"phase", it.phase},
+            {"half_width", it.half_width},
+            {"half_width_ratio", it.half_width / a},
+            {"force", it.force},
+            {"force_trace", it.force_trace},
+            {"lagrange", it.lagrange},
+            {"castigliano", it.castigliano},
+            {"reissner", it.reissner},
+            {"max_tension_relative", it.max_tension / std::max(it.peak_pressure, 1e-300)},
+            {"max_penetration_relative", it.max_penetration / delta},
+            {"conditions_hold", it.conditions_hold()},
+            {"seconds", it.assembly_s + it.solve_s}};
+  }
+
+  nlohmann::json pressure_json(const rfm::RfmModel &model, double c)
+  {
+    nlohmann::json z = nlohmann::json::array(), p = nlohmann::json::array();
+    for (const auto &[zz, pp] : rfm::contact_pressure(model, c, 121))
+      z.push_back(zz), p.push_back(pp);
+    return {{"half_width", c}, {"z", z}, {"p", p}};
+  }
+} // namespace
+
+int main(int argc, char **argv)
+{
+  try
+    {
+      // 1. Options and the problem file.
+      CLI::App app{"Die contact: RFM on the paper's problem"};
+      std::string mode = "quick", output_dir = "verification-output", tolerances;
+      std::string source_dir = RFM_SOURCE_DIR;
+      app.add_option("--mode", mode, "quick (CI) or full (report)")
+        ->check(CLI::IsMember({"quick", "full"}));
+      app.add_option("--output-dir", output_dir, "where die_contact.json is written");
+      app.add_option("--source-dir", source_dir, "project source (problem files)");
+      app.add_option("--tolerances", tolerances, "tolerance file to check (default: none)");
+      CLI11_PARSE(app, argc, argv);
+      std::filesystem::create_directories(output_dir);
+
+      const std::string file = "verification/problems/die_paper.json";
+      rfm::Problem base = rfm::read_problem_file(source_dir + "/" + file);
+      const double a = base.geometry.half_length();
+      const bool full = mode == "full";
+      const std::vector<int> degrees = full ? std::vector<int>{6, 8, 10, 12, 14, 16}
+                                            : std::vector<int>{8, 10, 14};
+      const rfm::ContactOptions options;
+      nlohmann::json results = {{"driver", "die_contact"}, {"mode", mode},
+                                {"problem_file", file}, {"problem", base.source},
+                                {"paper", paper},
+                                {"contact_options", {{"tolerance", options.tolerance},
+                                                     {"n_check_points", options.n_check_points},
+                                                     {"violation_tolerance", options.violation_tolerance}}}};
+
+      // 2. Iteration 0: bilateral contact over the whole outer side.
+      fmt::print("== Iteration 0 (c = a): P against the paper's 128.7 kN, Phi against 0.0176 J ==\n");
+      fmt::print("{:>3} {:>5} {:>12} {:>12} {:>11} {:>11} {:>11}\n", "p", "N", "P [N]", "P trace [N]",
+                 "Phi_C [J]", "Phi_R [J]", "Phi_L [J]");
+      for (const int p : degrees)
+        {
+          rfm::Problem pr = base;
+          pr.contact.method = "fixed";
+          pr.contact.half_width = a;
+          pr.rfm.degree = p;
+          const rfm::ContactResult r = rfm::solve_contact(pr, pr.rfm, options);
+          if (!r.success)
+            throw std::runtime_error("iteration 0 failed: " + r.message);
+          const auto &it = r.final;
+          fmt::print("{:>3} {:>5} {:>12.1f} {:>12.1f} {:>11.6f} {:>11.6f} {:>11.6f}\n", p,
+                     (p + 1) * (p + 1), it.force, it.force_trace, it.castigliano, it.reissner,
+                     it.lagrange);
+          nlohmann::json j = iterate_json(it, a, base.die->indentation);
+          j["force_vs_paper_relative"] = std::abs(it.force - 128.7e3) / 128.7e3;
+          j["reissner_vs_paper_relative"] = std::abs(it.reissner - 0.0176) / 0.0176;
+          j["castigliano_vs_paper_relative"] = std::abs(it.castigliano - 0.0176) / 0.0176;
+          j["lagrange_vs_paper_relative"] = std::abs(it.lagrange - 0.0176) / 0.0176;
+          results["iteration0"]["p" + std::to_string(p)] = j;
+        }
+
+      // 3. The unknown zone, both methods, several N and doubled quadrature.
+      struct Run
+      {
+        std::string method;
+        int degree;
+        bool doubled;
+      };
+      std::vector<Run> runs;
+      for (const int p : degrees)
+        for (const std::string m : {"iterate", "max-force"})
+          runs.push_back({m, p, false});
+      for (const int p : full ? std::vector<int>{10, 14} : std::vector<int>{10})
+        runs.push_back({"iterate", p, true});
+      fmt::print("\n== Unknown zone: c and P per method, N and quadrature ==\n");
+      fmt::print("{:>9} {:>3} {:>5} {:>6} {:>8} {:>17} {:>11} {:>11} {:>9} {:>9} {:>9} {:>6} {:>8}\n",
+                 "method", "p", "N", "quad", "c/a", "range c/a", "P [N]", "P trace [N]", "Phi_C",
+                 "Phi_R", "Phi_L", "solves", "time [s]");
+      for (const Run &run : runs)
+        {
+          rfm::Problem pr = base;
+          pr.contact.method = run.method;
+          pr.rfm.degree = run.degree;
+          if (run.doubled)
+            {
+              pr.rfm.extra_gauss_points = run.degree + 2 * base.rfm.extra_gauss_points;
+              pr.rfm.n_graded_layers = 2 * base.rfm.n_graded_layers;
+            }
+          const auto t0 = std::chrono::steady_clock::now();
+          const rfm::ContactResult r = rfm::solve_contact(pr, pr.rfm, options);
+          const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+          if (!r.success)
+            throw std::runtime_error(run.method + " failed: " + r.message);
+          const auto &f = r.final;
+          const std::string range =
+            r.half_width_range ? fmt::format("[{:.4f}, {:.4f}]", r.half_width_range->first / a,
+                                             r.half_width_range->second / a)
+                               : "-";
+          fmt::print("{:>9} {:>3} {:>5} {:>6} {:>8.5f} {:>17} {:>11.1f} {:>11.1f} {:>9.6f} "
+                     "{:>9.6f} {:>9.6f} {:>6} {:>8.2f}\n",
+                     run.method, run.degree, (run.degree + 1) * (run.degree + 1),
+                     run.doubled ? "x2" : "x1", f.half_width / a, range, f.force, f.force_trace,
+                     f.castigliano, f.reissner, f.lagrange, r.history.size(), seconds);
+          nlohmann::json j = {{"method", run.method},
+                              {"degree", run.degree},
+                              {"N", (run.degree + 1) * (run.degree + 1)},
+                              {"quadrature", run.doubled ? "doubled" : "default"},
+                              {"final", iterate_json(f, a, base.die->indentation)},
+                              {"message", r.message},
+                              {"n_solves", r.history.size()},
+                              {"seconds", seconds}};
+          if (r.half_width_range)
+            j["half_width_range_ratio"] = {r.half_width_range->first / a,
+                                           r.half_width_range->second / a};
+          for (const auto &it : r.history)
+            j["history"].push_back(iterate_json(it, a, base.die->indentation));
+          const std::string key = run.method + "_p" + std::to_string(run.degree) +
+                                  (run.doubled ? "_quad2" : "");
+          results["runs"][key] = j;
+
+          // Fig. 3 analog and sigma_rr through the thickness, at the report's N.
+          if (run.method == "iterate" && run.degree == 12 - (full ? 0 : 2) && !run.doubled)
+            {
+              for (const auto &it : r.history)
+                if (it.phase == "iteration" || it.phase == "final")
+                  {
+                    rfm::Problem fixed = pr;
+                    const rfm::RfmModel m(fixed, pr.rfm, it.half_width);
+                    nlohmann::json pj = pressure_json(m, it.half_width);
+                    pj["phase"] = it.phase;
+                    results["pressure_per_iteration"].push_back(pj);
+                  }
+              const int n = 61;
+              const Eigen::VectorXd rr = Eigen::VectorXd::LinSpaced(n, base.geometry.inner_radius,
+                                                                    base.geometry.outer_radius);
+              const rfm::FieldValues fv = r.model->evaluate(rr, Eigen::VectorXd::Zero(n));
+              std::vector<double> s(n);
+              for (int k = 0; k < n; ++k)
+                s[k] = fv.sigma(k, rfm::rr);
+              results["sigma_rr_mid"] = {{"degree", run.degree},
+                                         {"r", std::vector<double>(rr.data(), rr.data() + n)},
+                                         {"sigma_rr", s}};
+            }
+        }
+
+      // Stability under doubling N (p = 10 -> 14: N = 121 -> 225) and quadrature.
+      const auto &runs_j = results["runs"];
+      auto rel = [&](const std::string &x, const std::string &y, const std::string &q) {
+        const double vx = runs_j[x]["final"][q], vy = runs_j[y]["final"][q];
+        return q == "half_width_ratio" ? std::abs(vx - vy) : std::abs(vx - vy) / std::abs(vy);
+      };
+      results["stability"] = {
+        {"iterate_c_change_N_doubled", rel("iterate_p10", "iterate_p14", "half_width_ratio")},
+        {"iterate_P_change_N_doubled", rel("iterate_p10", "iterate_p14", "force")},
+        {"iterate_c_change_quadrature_doubled", rel("iterate_p10", "iterate_p10_quad2", "half_width_ratio")},
+        {"iterate_P_change_quadrature_doubled", rel("iterate_p10", "iterate_p10_quad2", "force")},
+        {"max_force_c_change_N_doubled", rel("max-force_p10", "max-force_p14", "half_width_ratio")},
+        {"max_force_P_change_N_doubled", rel("max-force_p10", "max-force_p14", "force")},
+        {"iterate_vs_max_force_c_p14", rel("iterate_p14", "max-force_p14", "half_width_ratio")},
+        {"iterate_vs_max_force_P_p14", rel("iterate_p14", "max-force_p14", "force")}};
+      fmt::print("\nstability: {}\n", results["stability"].dump());
+
+      // 4. P(c): bilateral solves over c, at p = 12.
+      {
+        rfm::Problem pr = base;
+        pr.rfm.degree = 12;
+        const int n = full ? 36 : 12;
+        for (int k = 0; k <= n; ++k)
+          {
+            const double c = a * (0.3 + 0.7 * k / n);
+            const rfm::RfmModel m(pr, pr.rfm, c);
+            const rfm::ContactForce f = m.contact_force();
+            results["force_curve"].push_back(
+              {{"half_width_ratio", c / a}, {"force", f.domain}, {"force_trace", f.trace}});
+          }
+      }
+
+      // 5. Linearity in delta.
+      {
+        rfm::Problem p1 = base, p2 = base;
+        p1.rfm.degree = p2.rfm.degree = 10;
+        p2.die->indentation = 2 * base.die->indentation;
+        const rfm::ContactResult r1 = rfm::solve_contact(p1, p1.rfm, options);
+        const rfm::ContactResult r2 = rfm::solve_contact(p2, p2.rfm, options);
+        results["delta_scaling"] = {
+          {"force_ratio_minus_2", std::abs(r2.final.force / r1.final.force - 2.0)},
+          {"half_width_change", std::abs(r2.final.half_width - r1.final.half_width) / a}};
+        fmt::print("delta doubled: P ratio {:.12f}, c change {:.3e} a\n",
+                   r2.final.force / r1.final.force,
+                   std::abs(r2.final.half_width - r1.final.half_width) / a);
+      }
+
+      // 6. Write and gate.
+      const std::string out_file = output_dir + "/die_contact.json";
+      rfm::write_json_atomically(out_file, results);
+      fmt::print("\nwrote {}\n", out_file);
+      if (!tolerances.empty())
+        {
+          const auto report =
+            verification::check_tolerances(tolerances, "die_contact", results, std::cout);
+          fmt::print("{} passed, {} failed\n", report.n_passed, report.n_failed);
+          return report.n_failed == 0 ? 0 : 1;
+        }
+      return 0;
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "die_contact: error: " << e.what() << '\n';
+      return 2;
+    }
+}
