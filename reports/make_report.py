@@ -192,6 +192,137 @@ def lame_section(lame, out_dir):
     return md
 
 
+def die_section(die, out_dir):
+    md = ["## 2. Die contact: the paper's problem", ""]
+    prob = die["problem"]
+    g, m, d = prob["geometry"], prob["material"], prob["die"]
+    a = 0.5 * g["length"]
+    md.append(f"Cylinder R1 = {g['inner_radius']} m, R2 = {g['outer_radius']} m, length {g['length']} m, "
+              f"E = {m['youngs_modulus']:.3g} Pa, nu = {m['poisson_ratio']}, smooth parabolic die on r = R2 "
+              f"with delta = {d['indentation']:.3g} m (`{die['problem_file']}`). P is the contact force of the "
+              "full body [N]: `force` is the domain integral (DESIGN.md 4.3), `trace` is eq. 4.6. Functionals in "
+              "J per radian. Contact check: 2001 points along r = R2.")
+    md.append("")
+
+    # Iteration 0.
+    md.append("### 2.1 Iteration 0 (c = a, bilateral) against the paper")
+    md.append("")
+    md.append("| p | N | P [kN] | P trace [kN] | Phi_C [J] | Phi_R [J] | Phi_L [J] |")
+    md.append("|---|---|---|---|---|---|---|")
+    for key, r in sorted(die["iteration0"].items(), key=lambda kv: int(kv[0][1:])):
+        p = int(key[1:])
+        md.append(f"| {p} | {(p+1)**2} | {r['force']/1e3:.3f} | {r['force_trace']/1e3:.3f} | "
+                  f"{r['castigliano']:.6f} | {r['reissner']:.6f} | {r['lagrange']:.6f} |")
+    md.append("| paper | | 128.7 | | 0.0176 | 0.0176 | 0.0176 |")
+    md.append("")
+
+    # Runs.
+    md.append("### 2.2 The unknown zone: c and P per method, N and quadrature")
+    md.append("")
+    md.append("`iterate`: the paper's successive iterations from c = a, bracketed, then bisection for both "
+              "ends of the interval of c on which conditions 1.2 (no tension) and 1.3 (no penetration) hold at "
+              "this N; c is its midpoint. `max-force`: golden-section maximum of P(c) (Barber).")
+    md.append("")
+    md.append("| method | p | N | quadrature | c/a | interval c/a | P [kN] | P trace [kN] | Phi_C [J] | Phi_R [J] | "
+              "Phi_L [J] | solves | time [s] |")
+    md.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for key, r in die["runs"].items():
+        f = r["final"]
+        rng = r.get("half_width_range_ratio")
+        rng = f"[{rng[0]:.4f}, {rng[1]:.4f}]" if rng else "-"
+        md.append(f"| {r['method']} | {r['degree']} | {r['N']} | {r['quadrature']} | {f['half_width_ratio']:.4f} | "
+                  f"{rng} | {f['force']/1e3:.3f} | {f['force_trace']/1e3:.3f} | {f['castigliano']:.6f} | "
+                  f"{f['reissner']:.6f} | {f['lagrange']:.6f} | {r['n_solves']} | {r['seconds']:.2f} |")
+    md.append("| paper | | | | 0.543 | claims 11.6 % | 195.2 | | 0.0135 | 0.0132 | 0.0133 | | |")
+    md.append("")
+    md.append("Stability (absolute change of c/a, relative change of P): `" + json.dumps(die["stability"]) + "`; "
+              "doubling delta: `" + json.dumps(die["delta_scaling"]) + "`.")
+    md.append("")
+
+    # Tables 2 and 3 analog: the paper-style iterations of the report's run.
+    key = max((k for k in die["runs"] if k.startswith("iterate_p") and "quad2" not in k),
+              key=lambda k: int(k.split("_p")[1]))
+    hist = [h for h in die["runs"][key]["history"] if h["phase"] in ("iteration", "final")]
+    md.append(f"### 2.3 Tables 2 and 3 analog (`{key}`, the paper's values beside)")
+    md.append("")
+    md.append("| step | phase | c/a | P [kN] | P trace [kN] | Phi_C [J] | Phi_R [J] | Phi_L [J] | 1.2 and 1.3 hold |")
+    md.append("|---|---|---|---|---|---|---|---|---|")
+    for i, h in enumerate(hist):
+        md.append(f"| {i} | {h['phase']} | {h['half_width_ratio']:.4f} | {h['force']/1e3:.2f} | {h['force_trace']/1e3:.2f} | "
+                  f"{h['castigliano']:.5f} | {h['reissner']:.5f} | {h['lagrange']:.5f} | {h['conditions_hold']} |")
+    t2, t3 = die["paper"]["table2"], die["paper"]["table3"]
+    md.append("")
+    md.append("Paper, Table 2 (iterations " + ", ".join(map(str, t2["iteration"])) + "): Phi_C " +
+              ", ".join(map(str, t2["castigliano"])) + "; Phi_R " + ", ".join(map(str, t2["reissner"])) +
+              "; Phi_L " + ", ".join(map(str, t2["lagrange"])) + ". Table 3 (iterations 0-5, 5 = check at "
+              "c = 0.48 a): P = " + ", ".join(map(str, t3["force_kN"])) + " kN; final c = 0.543 a.")
+    md.append("")
+
+    # Fig. 3 analog.
+    fig, ax = plt.subplots(figsize=(6.4, 4.4))
+    for i, pj in enumerate(die.get("pressure_per_iteration", [])):
+        ax.plot(np.array(pj["z"]) / a, np.array(pj["p"]) / 1e6,
+                label=f"{pj['phase']} {i}: c = {pj['half_width']/a:.3f} a")
+    ax.axhline(0, color="k", lw=0.8)
+    ax.set_xlabel("z / a [-]")
+    ax.set_ylabel("contact pressure p = -sigma_rr(R2, z) [MPa]")
+    ax.set_title("Fig. 3 analog: contact pressure per iteration (RFM)")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7)
+    f1 = save(fig, out_dir, "die_fig3_pressure.png")
+
+    # P(c).
+    curve = die["force_curve"]
+    cc = np.array([c["half_width_ratio"] for c in curve])
+    fig, ax = plt.subplots(figsize=(6.4, 4.4))
+    ax.plot(cc, np.array([c["force"] for c in curve]) / 1e3, "o-", ms=3, label="P(c), domain integral")
+    ax.plot(cc, np.array([c["force_trace"] for c in curve]) / 1e3, "s--", ms=3, label="P(c), trace (eq. 4.6)")
+    fin = die["runs"][key]["final"]
+    rng = die["runs"][key].get("half_width_range_ratio")
+    if rng:
+        ax.axvspan(rng[0], rng[1], color="g", alpha=0.12, label="1.2 and 1.3 hold")
+    ax.axvline(fin["half_width_ratio"], color="g", lw=1, label=f"iterate: c = {fin['half_width_ratio']:.3f} a")
+    mf = die["runs"][key.replace("iterate", "max-force")]["final"]
+    ax.plot([mf["half_width_ratio"]], [mf["force"] / 1e3], "r*", ms=10,
+            label=f"max-force: c = {mf['half_width_ratio']:.3f} a, P = {mf['force']/1e3:.1f} kN")
+    ax.plot([0.543], [195.2], "kx", ms=8, label="paper: 0.543 a, 195.2 kN")
+    ax.set_xlabel("contact half-width c / a [-]")
+    ax.set_ylabel("contact force P [kN]")
+    ax.set_title("P(c) of the bilateral problem (p = 12, N = 169)")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7)
+    f2 = save(fig, out_dir, "die_force_curve.png")
+
+    # c and P against N.
+    fig, axs = plt.subplots(1, 2, figsize=(9.6, 4.0))
+    for method, mk in (("iterate", "o-"), ("max-force", "s--")):
+        rows = sorted((r for r in die["runs"].values() if r["method"] == method and r["quadrature"] == "default"),
+                      key=lambda r: r["N"])
+        axs[0].plot([r["N"] for r in rows], [r["final"]["half_width_ratio"] for r in rows], mk, ms=4, label=method)
+        axs[1].plot([r["N"] for r in rows], [r["final"]["force"] / 1e3 for r in rows], mk, ms=4, label=method)
+    axs[0].set_xlabel("N"); axs[0].set_ylabel("c / a [-]"); axs[0].grid(True, alpha=0.3); axs[0].legend(fontsize=8)
+    axs[1].set_xlabel("N"); axs[1].set_ylabel("P [kN]"); axs[1].grid(True, alpha=0.3); axs[1].legend(fontsize=8)
+    fig.suptitle("Contact half-width and force against N (RFM)")
+    f3 = save(fig, out_dir, "die_convergence.png")
+
+    # sigma_rr through the thickness.
+    f4 = None
+    if "sigma_rr_mid" in die:
+        s = die["sigma_rr_mid"]
+        fig, ax = plt.subplots(figsize=(6.4, 4.4))
+        ax.plot(np.array(s["r"]) * 1e3, np.array(s["sigma_rr"]) / 1e6, label=f"RFM, p = {s['degree']}")
+        ax.set_xlabel("radius r [mm]")
+        ax.set_ylabel("sigma_rr at z = 0 [MPa]")
+        ax.set_title("Radial stress through the thickness at z = 0 (converged zone)")
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8)
+        f4 = save(fig, out_dir, "die_sigma_rr_mid.png")
+    md += [f"![Fig. 3 analog]({f1})", "", f"![P(c)]({f2})", "", f"![c and P against N]({f3})", ""]
+    if f4:
+        md += [f"![sigma_rr]({f4})", ""]
+    return md
+
+
 def case_fem_lame(out_dir):
     fem = load(os.path.join(out_dir, "data"), "fem_lame_convergence.json")
     if not fem:
@@ -231,8 +362,8 @@ def main():
     md.append("")
     if lame:
         md += lame_section(lame, args.out)
-    if die and "die_section" in globals():
-        md += globals()["die_section"](die, args.out)
+    if die:
+        md += die_section(die, args.out)
 
     tmp = os.path.join(args.out, "report.md.tmp")
     with open(tmp, "w") as f:
