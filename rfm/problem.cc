@@ -232,7 +232,7 @@ namespace rfm
       {
         j = json::parse(in);
       }
-    catch (const json::parse_error &e)
+    catch (const json::exception &e) // parse_error, and out_of_range for 1e999
       {
         throw InputError("problem file " + path + ": malformed JSON: " + e.what());
       }

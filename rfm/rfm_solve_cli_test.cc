@@ -1,0 +1,166 @@
+// Bad input through the command line of rfm_solve: every case must exit with status 2,
+// say on stderr what is wrong (a fragment naming the field or the rule), and write
+// nothing. RFM_SOLVE is the path of the executable under test.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sys/wait.h>
+
+namespace
+{
+  namespace fs = std::filesystem;
+
+  struct Outcome
+  {
+    int status;
+    std::string err;
+  };
+
+  Outcome run(const std::string &args)
+  {
+    const std::string cmd = std::string(RFM_SOLVE) + " " + args + " 2>&1 >/dev/null";
+    std::unique_ptr<FILE, int (*)(FILE *)> pipe(popen(cmd.c_str(), "r"), pclose);
+    std::string out;
+    std::array<char, 512> buf{};
+    while (fgets(buf.data(), buf.size(), pipe.get()))
+      out += buf.data();
+    const int raw = pclose(pipe.release());
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
+  }
+
+  nlohmann::json valid()
+  {
+    return nlohmann::json::parse(R"({
+      "geometry": {"inner_radius": 0.1, "outer_radius": 0.2, "length": 0.4},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3},
+      "loading": {"inner_pressure": 1.0e7, "outer_pressure": 0.0},
+      "rfm": {"degree": 2}
+    })");
+  }
+
+  struct Case
+  {
+    std::string name;
+    std::string text;      // problem file content
+    std::string fragment;  // expected in the message
+  };
+
+  std::string with(const std::string &pointer, const nlohmann::json &value)
+  {
+    nlohmann::json j = valid();
+    j[nlohmann::json::json_pointer(pointer)] = value;
+    return j.dump();
+  }
+  std::string without(const std::string &key)
+  {
+    nlohmann::json j = valid();
+    j.erase(key);
+    return j.dump();
+  }
+
+  class BadInput : public ::testing::TestWithParam<Case>
+  {};
+
+  TEST_P(BadInput, ExitsWithStatus2NamingTheProblemAndWritesNothing)
+  {
+    const Case &c = GetParam();
+    const fs::path dir = fs::temp_directory_path() / ("rfm_cli_" + c.name);
+    fs::create_directories(dir);
+    const fs::path in = dir / "problem.json", out = dir / "result.json";
+    fs::remove(out);
+    std::ofstream(in) << c.text;
+    const Outcome o = run(in.string() + " --output " + out.string());
+    EXPECT_EQ(o.status, 2) << o.err;
+    EXPECT_NE(o.err.find(c.fragment), std::string::npos) << "stderr: " << o.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+
+  const nlohmann::json die = {{"indentation", 1e-6}};
+
+  INSTANTIATE_TEST_SUITE_P(
+    Cases, BadInput,
+    ::testing::Values(
+      Case{"malformed_json", "{\"geometry\": ", "malformed JSON"},
+      Case{"empty_file", "", "malformed JSON"},
+      Case{"not_an_object", "[1, 2]", "must be a JSON object"},
+      Case{"nan_literal", R"({"geometry": {"inner_radius": NaN}})", "malformed JSON"},
+      Case{"unknown_top_key", with("/solver", "rfm"), "unknown key solver"},
+      Case{"unknown_nested_key", with("/geometry/radius", 1.0), "geometry.radius"},
+      Case{"missing_geometry", without("geometry"), "geometry"},
+      Case{"missing_material", without("material"), "material"},
+      Case{"missing_length", [] { auto j = valid(); j["geometry"].erase("length"); return j.dump(); }(),
+           "geometry.length"},
+      Case{"r1_zero", with("/geometry/inner_radius", 0.0), "geometry.inner_radius"},
+      Case{"r1_negative", with("/geometry/inner_radius", -0.1), "geometry.inner_radius"},
+      Case{"r1_ge_r2", with("/geometry/inner_radius", 0.25), "must exceed geometry.inner_radius"},
+      Case{"length_zero", with("/geometry/length", 0.0), "geometry.length"},
+      Case{"length_string", with("/geometry/length", "0.4"), "must be a number"},
+      Case{"e_zero", with("/material/youngs_modulus", 0.0), "material.youngs_modulus"},
+      Case{"e_negative", with("/material/youngs_modulus", -2e11), "material.youngs_modulus"},
+      Case{"nu_half", with("/material/poisson_ratio", 0.5), "material.poisson_ratio"},
+      Case{"nu_minus_one", with("/material/poisson_ratio", -1.0), "material.poisson_ratio"},
+      Case{"nu_bool", with("/material/poisson_ratio", true), "must be a number"},
+      Case{"huge_number", R"({"geometry": {"inner_radius": 1e999}})", "malformed JSON"},
+      Case{"no_load", without("loading"), "needs at least one of"},
+      Case{"pressure_string", with("/loading/inner_pressure", "10 MPa"), "loading.inner_pressure"},
+      Case{"die_negative", with("/die", {{"indentation", -1e-6}}), "die.indentation"},
+      Case{"die_too_deep", with("/die", {{"indentation", 5e-3}}), "small strain"},
+      Case{"die_profile", with("/die", {{"indentation", 1e-6}, {"profile", "flat"}}), "die.profile"},
+      Case{"contact_method", with("/contact", {{"method", "guess"}}), "contact.method"},
+      Case{"half_width_beyond", with("/contact", {{"method", "fixed"}, {"half_width", 0.3}}),
+           "contact.half_width"},
+      Case{"half_width_zero", with("/contact", {{"method", "fixed"}, {"half_width", 0.0}}),
+           "contact.half_width"},
+      Case{"sample_outside", with("/samples", {{0.05, 0.0}}), "samples[0]"},
+      Case{"sample_beyond_end", with("/samples", {{0.15, 0.3}}), "samples[0]"},
+      Case{"sample_not_pair", with("/samples", {{0.15}}), "samples[0]"},
+      Case{"samples_not_array", with("/samples", 3), "samples"},
+      Case{"degree_negative", with("/rfm/degree", -1), "rfm.degree"},
+      Case{"degree_too_large", with("/rfm/degree", 1000), "rfm.degree"},
+      Case{"degree_fraction", with("/rfm/degree", 2.5), "rfm.degree"},
+      Case{"grading_ratio", with("/rfm/grading_ratio", 1.5), "rfm.grading_ratio"},
+      Case{"fem_degree", with("/fem/degree", 9), "fem.degree"}),
+    [](const ::testing::TestParamInfo<Case> &info) { return info.param.name; });
+
+  TEST(RfmSolveCli, MissingFileAndUnwritableOutput)
+  {
+    Outcome o = run("/nonexistent/problem.json");
+    EXPECT_EQ(o.status, 2);
+    EXPECT_NE(o.err.find("cannot be opened"), std::string::npos) << o.err;
+
+    const fs::path dir = fs::temp_directory_path() / "rfm_cli_output";
+    fs::create_directories(dir);
+    const fs::path in = dir / "problem.json";
+    std::ofstream(in) << valid().dump();
+    o = run(in.string() + " --output /nonexistent/dir/result.json");
+    EXPECT_EQ(o.status, 2);
+    EXPECT_NE(o.err.find("--output"), std::string::npos) << o.err;
+
+    o = run(in.string() + " --degree 99");
+    EXPECT_EQ(o.status, 2) << o.err;
+    o = run("");
+    EXPECT_EQ(o.status, 2) << o.err;
+  }
+
+  TEST(RfmSolveCli, ValidInputWritesAResult)
+  {
+    const fs::path dir = fs::temp_directory_path() / "rfm_cli_valid";
+    fs::create_directories(dir);
+    const fs::path in = dir / "problem.json", out = dir / "result.json";
+    fs::remove(out);
+    std::ofstream(in) << valid().dump();
+    const Outcome o = run(in.string() + " --output " + out.string());
+    EXPECT_EQ(o.status, 0) << o.err;
+    ASSERT_TRUE(fs::exists(out));
+    std::ifstream f(out);
+    const nlohmann::json r = nlohmann::json::parse(f);
+    EXPECT_EQ(r.at("solver"), "rfm");
+    EXPECT_LT(r.at("functionals").at("reissner").get<double>(), 0.0);
+  }
+} // namespace
