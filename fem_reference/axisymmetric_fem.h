@@ -13,7 +13,14 @@
 //    quadrature points of r = R2, kappa int_A (u_r - u_r*) v_r r ds over the active set
 //    A = {u_r - u_r* > 0}; the active-set (semi-smooth Newton) loop starts from the whole
 //    outer side (the paper's iteration 0) and stops when A repeats its previous state.
+//    The contact points are the p + 1 Gauss-Lobatto points of each outer face (the nodes of
+//    FE_Q(p) for p <= 2): a nodal, lumped penalty with one constraint per node; more points
+//    over-constrain the trace (with p = 1 and 3 points the active set never settles).
 //    kappa = penalty_factor * E / h_min, h_min the smallest cell edge on r = R2.
+//    Pass 0 uses a mesh without a split on r = R2; each edge-fitting pass remeshes with the
+//    outer line split at (and graded toward) the c of the previous pass and solves again,
+//    starting from the active set z < c. With n passes in all, pass k runs on level
+//    max(0, L - (n-1-k)): the earlier passes only locate the edge, the last is at level L.
 //
 // Functionals (J per radian, full body = 2 x half section), computed with s_h = D e(u_h):
 //   lagrange    = U_h - W(u_h),           U_h = 1/2 int e.De r, W = work of the pressures
@@ -30,9 +37,11 @@
 //   force_trace    = -2 pi R2 * 2 int_0^a sigma_rr(R2, z) dz over the element traces
 //   force_penalty  =  2 pi R2 * 2 int_0^a kappa (u_r - u_r*)_+ dz   (penalty only)
 // For the penalty problem force == force_penalty up to the linear-solver accuracy
-// (v is in the FE space). c = the zero of the gap g = u_r - u_r* along r = R2 (linear
-// interpolation between the last positive and the first non-positive sample, scanning up
-// from z = 0), i.e. where the penalty pressure kappa g_+ vanishes.
+// (v is in the FE space). c = where the penalty pressure kappa g_+ vanishes, g = u_r - u_r*
+// along r = R2 sampled at the contact points: bracketed by the last positive sample and the
+// next one (the zone is connected and starts at z = 0), and located inside the
+// bracket by the square-root law p^2 ~ (c - z) of a smooth contact edge (half_width) or by
+// linear interpolation of g (half_width_gap).
 #pragma once
 
 #include "rfm/problem.h"
@@ -61,10 +70,14 @@ namespace fem
       cg      ///< CG + SSOR(1.2), relative residual linear_tolerance
     } linear_solver = LinearSolver::direct;
     double linear_tolerance = 1e-12;
-    /// kappa = penalty_factor * E / h_min. 1e3 keeps the penetration ~1e-3 of the mesh-size
-    /// scale of the strain; the penalty study in fem_convergence shows the O(1/kappa) error.
+    /// kappa = penalty_factor * E / h_min. The force error is O(1/kappa): for the paper's die
+    /// at L = 5, Q2, |P(1e3) - P(1e4)| = 0.2 N of 192.6 kN (fem_convergence penalty study).
     double penalty_factor = 1e3;
     int max_active_set_iterations = 50;
+    int contact_points = 0; ///< Gauss-Lobatto points per outer face; 0: p + 1 (nodal)
+    /// Unilateral: after the active-set loop on the unsplit mesh, remesh this many times with
+    /// the outer line split and graded at the half-width found, and solve again.
+    int edge_fitting_passes = 1;
     int base_cells_r = 4, base_cells_z = 8; ///< level-0 mesh
     double radial_grading = 3.0, axial_grading = 3.0; ///< largest/smallest cell, level 0
     std::string vtu_directory;  ///< write DIR/fem_solution.vtu when not empty
@@ -86,6 +99,7 @@ namespace fem
 
   struct ActiveSetStep
   {
+    int pass = 0; ///< mesh pass (0: unsplit mesh, k: split at the c of pass k-1)
     int iteration = 0;
     int n_active = 0, n_changed = 0; ///< active quadrature points, changes vs previous step
     double half_width = 0;           ///< c [m] from the gap of this step's solution
@@ -105,12 +119,14 @@ namespace fem
   {
     std::string method;       ///< "fixed" (bilateral) or "iterate"/"max-force" (penalty)
     bool unilateral = false;
-    double half_width = 0;    ///< c [m]
+    double half_width = 0;     ///< c [m] (unilateral: square-root law fit at the edge)
+    double half_width_gap = 0; ///< c [m] from linear interpolation of the gap (unilateral)
     double force = 0, force_trace = 0, force_penalty = 0; ///< [N], full body
     double penalty = 0, penalty_factor = 0; ///< kappa [Pa/m] and its factor (unilateral)
     double h_min = 0;         ///< smallest cell edge on r = R2 [m]
     double max_penetration = 0; ///< max(u_r - u_r*)_+ [m]
-    int active_set_iterations = 0;
+    int active_set_iterations = 0; ///< of the last pass
+    int edge_fitting_passes = 0;   ///< remeshes at the contact edge actually done
     std::vector<ActiveSetStep> iterations;
     std::vector<PressurePoint> pressure; ///< at the face Gauss points of r = R2, sorted by z
   };

@@ -1,0 +1,974 @@
+// All deal.II code of the FEM reference (one translation unit: deal.II headers compile slowly).
+// The story follows deal.II step-8 (elasticity) and step-41 (active sets):
+//   1. mesh of the half section (gmsh or structured) with boundary ids,
+//   2. degrees of freedom and constraints (symmetry plane, bilateral die zone),
+//   3. assembly of the r-weighted axisymmetric stiffness and the pressures,
+//   4. linear solve (UMFPACK or CG + SSOR),
+//   5. unilateral contact: penalty on the active set at the face quadrature points,
+//   6. post-processing: functionals, contact force three ways, half-width, samples, VTU.
+#include "fem_reference/axisymmetric_fem.h"
+
+#include "fem_reference/half_section_mesh.h"
+
+#include <deal.II/base/convergence_table.h>
+#include <deal.II/base/function.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <unistd.h>
+
+namespace fem
+{
+  using namespace dealii;
+
+  void FemOptions::validate() const
+  {
+    auto fail = [](const std::string &field, const std::string &value, const std::string &rule) {
+      throw rfm::InputError("FEM option " + field + " = " + value + ": " + rule);
+    };
+    if (degree < 1 || degree > 4)
+      fail("degree (fem.degree)", std::to_string(degree), "must be in [1, 4]");
+    if (refinements < 0 || refinements > 6)
+      fail("refinements (fem.refinements, --refinements)", std::to_string(refinements),
+           "must be in [0, 6] (level 6 already has 131072 cells)");
+    if (!(penalty_factor > 0) || !std::isfinite(penalty_factor))
+      fail("penalty_factor (--penalty-factor)", std::to_string(penalty_factor),
+           "must be a finite number > 0");
+    if (contact_points < 0 || contact_points == 1 || contact_points > 12)
+      fail("contact_points", std::to_string(contact_points), "must be 0 (p + 1) or in [2, 12]");
+    if (edge_fitting_passes < 0 || edge_fitting_passes > 5)
+      fail("edge_fitting_passes (--edge-fitting-passes)", std::to_string(edge_fitting_passes),
+           "must be in [0, 5]");
+    if (max_active_set_iterations < 1)
+      fail("max_active_set_iterations", std::to_string(max_active_set_iterations), "must be >= 1");
+    if (!(linear_tolerance > 0 && linear_tolerance < 1e-2))
+      fail("linear_tolerance", std::to_string(linear_tolerance), "must be in (0, 1e-2)");
+    if (base_cells_r < 1 || base_cells_z < 2)
+      fail("base_cells_r/base_cells_z", std::to_string(base_cells_r) + "/" +
+                                          std::to_string(base_cells_z),
+           "need base_cells_r >= 1, base_cells_z >= 2");
+    if (!(radial_grading >= 1 && axial_grading >= 1))
+      fail("radial_grading/axial_grading", std::to_string(radial_grading), "must be >= 1");
+  }
+
+  FemOptions options_from_problem(const rfm::Problem &problem)
+  {
+    FemOptions o;
+    o.degree = problem.fem.degree;
+    o.refinements = problem.fem.refinements;
+    return o;
+  }
+
+  namespace
+  {
+    constexpr double pi = 3.14159265358979323846;
+    using Clock = std::chrono::steady_clock;
+    double seconds_since(Clock::time_point t0)
+    {
+      return std::chrono::duration<double>(Clock::now() - t0).count();
+    }
+
+    using Stress = std::array<double, 4>; // (rr, zz, tt, rz); strains in the same order
+
+    /// e(u) = (du_r/dr, du_z/dz, u_r/r, du_r/dz + du_z/dr) from u and grad u (grad[i][j] =
+    /// du_i/dx_j, x = (r, z)).
+    Stress strain(double r, double u_r, const Tensor<1, 2> &grad_u_r, const Tensor<1, 2> &grad_u_z)
+    {
+      return {{grad_u_r[0], grad_u_z[1], u_r / r, grad_u_r[1] + grad_u_z[0]}};
+    }
+
+    /// Strain of the shape function whose only non-zero component is `component`.
+    Stress shape_strain(unsigned int component, double r, double phi, const Tensor<1, 2> &grad)
+    {
+      if (component == 0)
+        return {{grad[0], 0.0, phi / r, grad[1]}};
+      return {{0.0, grad[1], 0.0, grad[0]}};
+    }
+
+    struct Stiffness
+    {
+      std::array<std::array<double, 4>, 4> d{};
+      explicit Stiffness(const rfm::Material &m)
+      {
+        const Eigen::Matrix4d dm = m.stiffness();
+        for (int i = 0; i < 4; ++i)
+          for (int j = 0; j < 4; ++j)
+            d[i][j] = dm(i, j);
+      }
+      Stress operator*(const Stress &e) const
+      {
+        Stress s{};
+        for (int i = 0; i < 4; ++i)
+          for (int j = 0; j < 4; ++j)
+            s[i] += d[i][j] * e[j];
+        return s;
+      }
+    };
+
+    double dot(const Stress &a, const Stress &b)
+    {
+      return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
+    }
+
+    /// u_r* on the contact zone as a 2-component function (u_z unconstrained: masked out).
+    class DieDisplacement : public Function<2>
+    {
+    public:
+      DieDisplacement(const rfm::Die &die, const rfm::Geometry &g)
+        : Function<2>(2), die_(die), geometry_(g)
+      {}
+      double value(const Point<2> &p, unsigned int component) const override
+      {
+        return component == 0 ? rfm::die_u_r(die_, geometry_, p[1]) : 0.0;
+      }
+
+    private:
+      rfm::Die die_;
+      rfm::Geometry geometry_;
+    };
+
+    /// u and the four stresses for DataOut (x = r is taken from the evaluation points).
+    class StressPostprocessor : public DataPostprocessor<2>
+    {
+    public:
+      explicit StressPostprocessor(const Stiffness &d) : d_(d) {}
+      void evaluate_vector_field(const DataPostprocessorInputs::Vector<2> &in,
+                                 std::vector<Vector<double>> &out) const override
+      {
+        for (unsigned int q = 0; q < in.solution_values.size(); ++q)
+          {
+            const double r = in.evaluation_points[q][0];
+            const Stress s = d_ * strain(r, in.solution_values[q][0], in.solution_gradients[q][0],
+                                         in.solution_gradients[q][1]);
+            out[q][0] = in.solution_values[q][0];
+            out[q][1] = in.solution_values[q][1];
+            for (unsigned int k = 0; k < 4; ++k)
+              out[q][2 + k] = s[k];
+          }
+      }
+      std::vector<std::string> get_names() const override
+      {
+        return {"u_r", "u_z", "sigma_rr", "sigma_zz", "sigma_tt", "sigma_rz"};
+      }
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      get_data_component_interpretation() const override
+      {
+        return std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+          6, DataComponentInterpretation::component_is_scalar);
+      }
+      UpdateFlags get_needed_update_flags() const override
+      {
+        return update_values | update_gradients | update_quadrature_points;
+      }
+
+    private:
+      Stiffness d_;
+    };
+
+    /// Everything computed from one solution (one active-set step).
+    struct Evaluation
+    {
+      Functionals functionals;
+      double force = 0, force_trace = 0, force_penalty = 0, half_width = 0, half_width_gap = 0;
+      double max_penetration = 0;
+      std::vector<PressurePoint> pressure;
+      std::optional<double> error_sq, norm_sq;
+    };
+
+    class AxisymmetricSolver
+    {
+    public:
+      AxisymmetricSolver(const rfm::Problem &problem, const FemOptions &options,
+                         const StressFunction &exact)
+        : problem_(problem)
+        , options_(options)
+        , exact_(exact)
+        , fe_(FE_Q<2>(options.degree), 2)
+        , dof_handler_(triangulation_)
+        , d_(problem.material)
+        , cell_quadrature_(options.degree + 2)
+        , face_quadrature_(options.contact_points > 0 ? options.contact_points
+                                                      : options.degree + 1)
+      {
+        const double a = problem.geometry.half_length();
+        if (problem.die)
+          {
+            mode_ = problem.contact.method == "fixed" ? Mode::bilateral : Mode::unilateral;
+            half_width_ = mode_ == Mode::bilateral ? problem.contact.half_width.value_or(a) : a;
+            if (mode_ == Mode::bilateral)
+              split_ = half_width_;
+          }
+      }
+
+      FemResult run();
+
+    private:
+      enum class Mode
+      {
+        none,
+        bilateral,
+        unilateral
+      };
+
+      void make_mesh();
+      void setup_system();
+      template <typename Finish>
+      void active_set_loop(FemResult &result, int pass, const Finish &finish);
+      void assemble_base();
+      void add_penalty(const std::vector<char> &active);
+      void solve_linear();
+      std::vector<char> active_set() const;
+      Evaluation evaluate(const std::vector<char> *active) const;
+      std::vector<FieldSample> samples() const;
+      void write_vtu() const;
+      void progress(const std::string &line) const
+      {
+        if (options_.progress)
+          std::cerr << "fem: " << line << '\n';
+      }
+      bool is_outer(unsigned int id) const
+      {
+        return id == outer_contact_boundary || id == outer_free_boundary;
+      }
+
+      const rfm::Problem &problem_;
+      FemOptions options_;
+      StressFunction exact_;
+      Mode mode_ = Mode::none;
+      double half_width_ = 0;
+      std::optional<double> split_; ///< z where the outer line is split (contact edge)
+      int level_ = 0;               ///< mesh level of the current pass
+
+      Triangulation<2> triangulation_;
+      FESystem<2> fe_;
+      DoFHandler<2> dof_handler_;
+      MappingQ1<2> mapping_;
+      Stiffness d_;
+      QGauss<2> cell_quadrature_;
+      QGaussLobatto<1> face_quadrature_; // on r = R2: penalty, active set, traces
+      AffineConstraints<double> constraints_;
+      SparsityPattern sparsity_;
+      SparseMatrix<double> base_matrix_, system_matrix_;
+      Vector<double> base_rhs_, system_rhs_, solution_;
+      // Faces on r = R2, in cell order; contact quadrature point k * n_q + q.
+      std::vector<std::pair<DoFHandler<2>::active_cell_iterator, unsigned int>> outer_faces_;
+      double h_min_ = 0, kappa_ = 0;
+      double assembly_s_ = 0, solve_s_ = 0;
+    };
+
+    // 1. Mesh.
+    void AxisymmetricSolver::make_mesh()
+    {
+      const rfm::Geometry &g = problem_.geometry;
+      HalfSectionMeshSpec spec;
+      spec.inner_radius = g.inner_radius;
+      spec.outer_radius = g.outer_radius;
+      spec.half_length = g.half_length();
+      spec.level = level_;
+      spec.base_cells_r = options_.base_cells_r;
+      spec.base_cells_z = options_.base_cells_z;
+      spec.radial_ratio = options_.radial_grading;
+      spec.axial_ratio = options_.axial_grading;
+      if (split_)
+        {
+          // Grade toward the contact edge z = c (a corner when c = a).
+          spec.split = split_;
+          spec.grade_toward_end = !spec.is_split();
+        }
+
+      if (options_.mesh == FemOptions::MeshGenerator::gmsh)
+        {
+          static std::atomic<int> counter{0};
+          const std::filesystem::path path =
+            std::filesystem::temp_directory_path() /
+            ("rfm_fem_" + std::to_string(::getpid()) + "_" + std::to_string(counter++) + ".msh");
+          write_gmsh_mesh(spec, path.string());
+          GridIn<2> grid_in;
+          grid_in.attach_triangulation(triangulation_);
+          try
+            {
+              std::ifstream in(path);
+              grid_in.read_msh(in);
+            }
+          catch (...)
+            {
+              std::filesystem::remove(path);
+              throw;
+            }
+          std::filesystem::remove(path);
+        }
+      else
+        {
+          std::vector<std::vector<double>> steps(2);
+          steps[0] = spec.radial_segment().steps();
+          for (const GradedSegment &s : spec.axial_segments())
+            for (const double h : s.steps())
+              steps[1].push_back(h);
+          GridGenerator::subdivided_hyper_rectangle(triangulation_, steps,
+                                                    Point<2>(g.inner_radius, 0.0),
+                                                    Point<2>(g.outer_radius, g.half_length()));
+          const double tol = 1e-9 * g.outer_radius;
+          const double split = spec.is_split() ? *spec.split : g.half_length();
+          for (const auto &cell : triangulation_.active_cell_iterators())
+            for (const auto &face : cell->face_iterators())
+              if (face->at_boundary())
+                {
+                  const Point<2> x = face->center();
+                  if (std::abs(x[0] - g.inner_radius) < tol)
+                    face->set_boundary_id(inner_boundary);
+                  else if (std::abs(x[0] - g.outer_radius) < tol)
+                    face->set_boundary_id(x[1] < split ? outer_contact_boundary
+                                                       : outer_free_boundary);
+                  else if (std::abs(x[1]) < tol)
+                    face->set_boundary_id(symmetry_boundary);
+                  else
+                    face->set_boundary_id(end_boundary);
+                }
+        }
+
+      // Every boundary face must carry one of our ids (a gmsh group lost would be silent).
+      for (const auto &cell : triangulation_.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() &&
+              (face->boundary_id() < inner_boundary || face->boundary_id() > symmetry_boundary))
+            throw std::runtime_error("mesh: boundary face at (" + std::to_string(face->center()[0]) +
+                                     ", " + std::to_string(face->center()[1]) +
+                                     ") has no physical group (id " +
+                                     std::to_string(face->boundary_id()) + ")");
+    }
+
+    // 2. Degrees of freedom and constraints.
+    void AxisymmetricSolver::setup_system()
+    {
+      dof_handler_.distribute_dofs(fe_);
+      constraints_.clear();
+      DoFTools::make_hanging_node_constraints(dof_handler_, constraints_);
+      const FEValuesExtractors::Scalar u_r(0), u_z(1);
+      VectorTools::interpolate_boundary_values(mapping_, dof_handler_, symmetry_boundary,
+                                               Functions::ZeroFunction<2>(2), constraints_,
+                                               fe_.component_mask(u_z));
+      if (mode_ == Mode::bilateral)
+        VectorTools::interpolate_boundary_values(mapping_, dof_handler_, outer_contact_boundary,
+                                                 DieDisplacement(*problem_.die, problem_.geometry),
+                                                 constraints_, fe_.component_mask(u_r));
+      constraints_.close();
+
+      base_matrix_.clear(); // they refer to the sparsity pattern rebuilt below
+      system_matrix_.clear();
+      DynamicSparsityPattern dsp(dof_handler_.n_dofs());
+      DoFTools::make_sparsity_pattern(dof_handler_, dsp, constraints_, false);
+      sparsity_.copy_from(dsp);
+      base_matrix_.reinit(sparsity_);
+      system_matrix_.reinit(sparsity_);
+      base_rhs_.reinit(dof_handler_.n_dofs());
+      system_rhs_.reinit(dof_handler_.n_dofs());
+      solution_.reinit(dof_handler_.n_dofs());
+
+      outer_faces_.clear();
+      h_min_ = std::numeric_limits<double>::infinity();
+      for (const auto &cell : dof_handler_.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() && is_outer(cell->face(f)->boundary_id()))
+            {
+              outer_faces_.emplace_back(cell, f);
+              h_min_ = std::min(h_min_, cell->face(f)->measure());
+            }
+      kappa_ = options_.penalty_factor * problem_.material.youngs_modulus / h_min_;
+    }
+
+    // 3. Assembly: int e(v).D e(u) r dr dz and int t.v r ds for the pressures.
+    void AxisymmetricSolver::assemble_base()
+    {
+      const auto t0 = Clock::now();
+      FEValues<2> fe_values(mapping_, fe_, cell_quadrature_,
+                            update_values | update_gradients | update_quadrature_points |
+                              update_JxW_values);
+      FEFaceValues<2> fe_face_values(mapping_, fe_, QGauss<1>(options_.degree + 1),
+                                     update_values | update_quadrature_points |
+                                       update_JxW_values);
+      const unsigned int n = fe_.n_dofs_per_cell();
+      FullMatrix<double> cell_matrix(n, n);
+      Vector<double> cell_rhs(n);
+      std::vector<types::global_dof_index> dofs(n);
+      std::vector<Stress> b(n), db(n);
+      const double p_in = problem_.loading ? problem_.loading->inner_pressure : 0.0;
+      const double p_out = problem_.loading ? problem_.loading->outer_pressure : 0.0;
+
+      base_matrix_ = 0;
+      base_rhs_ = 0;
+      for (const auto &cell : dof_handler_.active_cell_iterators())
+        {
+          cell_matrix = 0;
+          cell_rhs = 0;
+          fe_values.reinit(cell);
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              const double r = fe_values.quadrature_point(q)[0];
+              const double w = r * fe_values.JxW(q);
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const unsigned int c = fe_.system_to_component_index(i).first;
+                  b[i] = shape_strain(c, r, fe_values.shape_value_component(i, q, c),
+                                      fe_values.shape_grad_component(i, q, c));
+                  db[i] = d_ * b[i];
+                }
+              for (unsigned int i = 0; i < n; ++i)
+                for (unsigned int j = 0; j <= i; ++j)
+                  cell_matrix(i, j) += dot(b[i], db[j]) * w;
+            }
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = i + 1; j < n; ++j)
+              cell_matrix(i, j) = cell_matrix(j, i);
+
+          // Pressure p on a face with outward normal n: t = -p n, t.v = -p n_r v_r here.
+          for (const unsigned int f : cell->face_indices())
+            {
+              if (!cell->face(f)->at_boundary())
+                continue;
+              const unsigned int id = cell->face(f)->boundary_id();
+              double pressure = 0, normal_r = 0;
+              if (id == inner_boundary)
+                pressure = p_in, normal_r = -1;
+              else if (is_outer(id))
+                pressure = p_out, normal_r = 1;
+              if (pressure == 0)
+                continue;
+              fe_face_values.reinit(cell, f);
+              for (const unsigned int q : fe_face_values.quadrature_point_indices())
+                {
+                  const double r = fe_face_values.quadrature_point(q)[0];
+                  for (unsigned int i = 0; i < n; ++i)
+                    if (fe_.system_to_component_index(i).first == 0)
+                      cell_rhs(i) += -pressure * normal_r * fe_face_values.shape_value(i, q) * r *
+                                     fe_face_values.JxW(q);
+                }
+            }
+          cell->get_dof_indices(dofs);
+          constraints_.distribute_local_to_global(cell_matrix, cell_rhs, dofs, base_matrix_,
+                                                  base_rhs_);
+        }
+      assembly_s_ += seconds_since(t0);
+    }
+
+    // 5a. Penalty kappa int_A (u_r - u_r*) v_r r ds added to a copy of the base system.
+    void AxisymmetricSolver::add_penalty(const std::vector<char> &active)
+    {
+      const auto t0 = Clock::now();
+      system_matrix_.copy_from(base_matrix_);
+      system_rhs_ = base_rhs_;
+      FEFaceValues<2> fv(mapping_, fe_, face_quadrature_,
+                         update_values | update_quadrature_points | update_JxW_values);
+      const unsigned int n = fe_.n_dofs_per_cell(), n_q = face_quadrature_.size();
+      FullMatrix<double> m(n, n);
+      Vector<double> rhs(n);
+      std::vector<types::global_dof_index> dofs(n);
+      for (std::size_t k = 0; k < outer_faces_.size(); ++k)
+        {
+          bool any = false;
+          for (unsigned int q = 0; q < n_q; ++q)
+            any = any || active[k * n_q + q];
+          if (!any)
+            continue;
+          const auto &[cell, f] = outer_faces_[k];
+          fv.reinit(cell, f);
+          m = 0;
+          rhs = 0;
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              if (!active[k * n_q + q])
+                continue;
+              const Point<2> x = fv.quadrature_point(q);
+              const double w = kappa_ * x[0] * fv.JxW(q);
+              const double target = rfm::die_u_r(*problem_.die, problem_.geometry, x[1]);
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  if (fe_.system_to_component_index(i).first != 0)
+                    continue;
+                  const double phi_i = fv.shape_value(i, q);
+                  rhs(i) += w * target * phi_i;
+                  for (unsigned int j = 0; j < n; ++j)
+                    if (fe_.system_to_component_index(j).first == 0)
+                      m(i, j) += w * phi_i * fv.shape_value(j, q);
+                }
+            }
+          cell->get_dof_indices(dofs);
+          constraints_.distribute_local_to_global(m, rhs, dofs, system_matrix_, system_rhs_);
+        }
+      assembly_s_ += seconds_since(t0);
+    }
+
+    // 4. Linear solve; throws on failure (the caller turns it into a numerical outcome).
+    void AxisymmetricSolver::solve_linear()
+    {
+      const auto t0 = Clock::now();
+      if (options_.linear_solver == FemOptions::LinearSolver::direct)
+        {
+          SparseDirectUMFPACK umfpack;
+          umfpack.initialize(system_matrix_);
+          umfpack.vmult(solution_, system_rhs_);
+        }
+      else
+        {
+          SolverControl control(20 * dof_handler_.n_dofs() + 100,
+                                options_.linear_tolerance * system_rhs_.l2_norm());
+          SolverCG<Vector<double>> cg(control);
+          PreconditionSSOR<SparseMatrix<double>> ssor;
+          ssor.initialize(system_matrix_, 1.2);
+          cg.solve(system_matrix_, solution_, system_rhs_, ssor);
+        }
+      constraints_.distribute(solution_);
+      for (const double x : solution_)
+        if (!std::isfinite(x))
+          throw std::runtime_error("linear solve produced non-finite values (singular matrix?)");
+      solve_s_ += seconds_since(t0);
+    }
+
+    // 5b. The active set of the current solution: g = u_r - u_r* > 0 at the contact points.
+    std::vector<char> AxisymmetricSolver::active_set() const
+    {
+      FEFaceValues<2> fv(mapping_, fe_, face_quadrature_, update_values | update_quadrature_points);
+      const unsigned int n_q = face_quadrature_.size();
+      std::vector<char> active(outer_faces_.size() * n_q);
+      std::vector<Vector<double>> u(n_q, Vector<double>(2));
+      for (std::size_t k = 0; k < outer_faces_.size(); ++k)
+        {
+          fv.reinit(outer_faces_[k].first, outer_faces_[k].second);
+          fv.get_function_values(solution_, u);
+          for (unsigned int q = 0; q < n_q; ++q)
+            active[k * n_q + q] =
+              u[q][0] - rfm::die_u_r(*problem_.die, problem_.geometry, fv.quadrature_point(q)[1]) >
+              0.0;
+        }
+      return active;
+    }
+
+    // 6. Post-processing of the current solution. `active`: the penalty set used in the solve.
+    Evaluation AxisymmetricSolver::evaluate(const std::vector<char> *active) const
+    {
+      Evaluation ev;
+      const rfm::Geometry &g = problem_.geometry;
+      const double r1 = g.inner_radius, r2 = g.outer_radius;
+
+      // Volume: U_h, the consistent reaction int s.e(v) r with v = (psi, 0), the stress error.
+      FEValues<2> fe_values(mapping_, fe_, cell_quadrature_,
+                            update_values | update_gradients | update_quadrature_points |
+                              update_JxW_values);
+      const unsigned int n_q = cell_quadrature_.size();
+      std::vector<Vector<double>> u(n_q, Vector<double>(2));
+      std::vector<std::vector<Tensor<1, 2>>> grad(n_q, std::vector<Tensor<1, 2>>(2));
+      double energy = 0, reaction = 0, error_sq = 0, norm_sq = 0;
+      for (const auto &cell : dof_handler_.active_cell_iterators())
+        {
+          fe_values.reinit(cell);
+          fe_values.get_function_values(solution_, u);
+          fe_values.get_function_gradients(solution_, grad);
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              const Point<2> x = fe_values.quadrature_point(q);
+              const double w = x[0] * fe_values.JxW(q);
+              const Stress e = strain(x[0], u[q][0], grad[q][0], grad[q][1]);
+              const Stress s = d_ * e;
+              energy += 0.5 * dot(e, s) * w;
+              const double psi = (x[0] - r1) / (r2 - r1);
+              reaction += (s[0] / (r2 - r1) + s[2] * psi / x[0]) * w;
+              if (exact_)
+                {
+                  const Stress se = exact_(x[0], x[1]);
+                  for (int k = 0; k < 4; ++k)
+                    error_sq += (s[k] - se[k]) * (s[k] - se[k]) * w,
+                      norm_sq += se[k] * se[k] * w;
+                }
+            }
+        }
+      if (exact_)
+        ev.error_sq = 2 * error_sq, ev.norm_sq = 2 * norm_sq;
+
+      // Boundary: work of the pressures; on r = R2 the traces, gap and contact terms.
+      const double p_in = problem_.loading ? problem_.loading->inner_pressure : 0.0;
+      const double p_out = problem_.loading ? problem_.loading->outer_pressure : 0.0;
+      FEFaceValues<2> fv(mapping_, fe_, face_quadrature_,
+                         update_values | update_gradients | update_quadrature_points |
+                           update_JxW_values);
+      const unsigned int n_fq = face_quadrature_.size();
+      std::vector<Vector<double>> uf(n_fq, Vector<double>(2));
+      std::vector<std::vector<Tensor<1, 2>>> gradf(n_fq, std::vector<Tensor<1, 2>>(2));
+      double work = 0, trace = 0, penalty_force = 0, penalty_energy = 0, b_c = 0, b_r = 0;
+      std::vector<std::pair<double, double>> gap_samples; // (z, g)
+      for (const auto &cell : dof_handler_.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          {
+            if (!cell->face(f)->at_boundary())
+              continue;
+            const unsigned int id = cell->face(f)->boundary_id();
+            if (id != inner_boundary && !is_outer(id))
+              continue;
+            fv.reinit(cell, f);
+            fv.get_function_values(solution_, uf);
+            for (unsigned int q = 0; q < n_fq; ++q)
+              {
+                const double r = fv.quadrature_point(q)[0];
+                work += (id == inner_boundary ? p_in : -p_out) * uf[q][0] * r * fv.JxW(q);
+              }
+          }
+      if (problem_.die)
+        {
+          for (std::size_t k = 0; k < outer_faces_.size(); ++k)
+            {
+              const auto &[cell, f] = outer_faces_[k];
+              fv.reinit(cell, f);
+              fv.get_function_values(solution_, uf);
+              fv.get_function_gradients(solution_, gradf);
+              const bool prescribed_face = mode_ == Mode::bilateral &&
+                                           cell->face(f)->boundary_id() == outer_contact_boundary;
+              for (unsigned int q = 0; q < n_fq; ++q)
+                {
+                  const Point<2> x = fv.quadrature_point(q);
+                  const double w = x[0] * fv.JxW(q); // r ds with r = R2
+                  const double target = rfm::die_u_r(*problem_.die, g, x[1]);
+                  const double gap = uf[q][0] - target;
+                  const Stress s = d_ * strain(x[0], uf[q][0], gradf[q][0], gradf[q][1]);
+                  trace += s[0] * fv.JxW(q);
+                  const bool in_zone =
+                    active ? static_cast<bool>((*active)[k * n_fq + q]) : prescribed_face;
+                  double p = -s[0];
+                  if (active)
+                    {
+                      p = in_zone ? kappa_ * gap : 0.0;
+                      penalty_force += p * fv.JxW(q);
+                      if (in_zone)
+                        penalty_energy += 0.5 * kappa_ * gap * gap * w;
+                    }
+                  if (in_zone)
+                    b_c += s[0] * target * w, b_r += s[0] * gap * w;
+                  ev.max_penetration = std::max(ev.max_penetration, gap);
+                  ev.pressure.push_back({x[1], p, -s[0], gap});
+                  gap_samples.emplace_back(x[1], gap);
+                }
+            }
+          std::stable_sort(ev.pressure.begin(), ev.pressure.end(),
+                           [](const PressurePoint &a, const PressurePoint &b) { return a.z < b.z; });
+          std::stable_sort(gap_samples.begin(), gap_samples.end());
+        }
+
+      // Full body: twice the half section; forces also times 2 pi.
+      Functionals &phi = ev.functionals;
+      phi.strain_energy = 2 * energy;
+      phi.external_work = 2 * work;
+      phi.penalty_energy = 2 * penalty_energy;
+      phi.lagrange = phi.strain_energy - phi.external_work;
+      phi.castigliano = -phi.strain_energy + 2 * b_c;
+      phi.reissner = phi.strain_energy - phi.external_work - 2 * b_r;
+      ev.force = -2 * pi * 2 * reaction;
+      ev.force_trace = -2 * pi * r2 * 2 * trace;
+      ev.force_penalty = 2 * pi * r2 * 2 * penalty_force;
+
+      // Half-width (unilateral): the sign change of the gap after its last positive sample,
+      // located (a) by linear interpolation of the gap and (b) by the square-root
+      // law of a smooth contact edge, p ~ sqrt(c - z) (DESIGN.md 4.3): p^2 of the last two
+      // samples with positive pressure extrapolated linearly to zero, kept inside the
+      // bracket [last positive, first non-positive]. (b) is the reported half_width.
+      ev.half_width = ev.half_width_gap = half_width_;
+      if (mode_ == Mode::unilateral && !gap_samples.empty())
+        {
+          ev.half_width = ev.half_width_gap = g.half_length();
+          if (gap_samples.front().second <= 0)
+            ev.half_width = ev.half_width_gap = 0;
+          // The last positive sample: sign noise of g ~ p/kappa inside the zone is ignored.
+          for (std::size_t i = gap_samples.size() - 1; i > 0; --i)
+            if (gap_samples[i - 1].second > 0 && gap_samples[i].second <= 0)
+              {
+                const auto [z0, g0] = gap_samples[i - 1];
+                const auto [z1, g1] = gap_samples[i];
+                ev.half_width_gap = z0 + g0 * (z1 - z0) / (g0 - g1);
+                ev.half_width = ev.half_width_gap;
+                std::size_t k = i - 1; // previous positive sample at a distinct z
+                while (k > 0 && gap_samples[k - 1].first >= z0)
+                  --k;
+                if (k > 0 && gap_samples[k - 1].second > g0)
+                  {
+                    const auto [zm, gm] = gap_samples[k - 1];
+                    const double c = z0 + g0 * g0 * (z0 - zm) / (gm * gm - g0 * g0);
+                    ev.half_width = std::clamp(c, z0, z1);
+                  }
+                break;
+              }
+        }
+      return ev;
+    }
+
+    // Fields at the sample points; z < 0 mirrored (u_z and sigma_rz are odd in z).
+    std::vector<FieldSample> AxisymmetricSolver::samples() const
+    {
+      std::vector<FieldSample> out;
+      for (const auto &[r, z] : problem_.samples)
+        {
+          const Point<2> x(r, std::abs(z));
+          const auto found = GridTools::find_active_cell_around_point(mapping_, dof_handler_, x);
+          const Quadrature<2> point(std::vector<Point<2>>{found.second});
+          FEValues<2> fv(mapping_, fe_, point, update_values | update_gradients);
+          fv.reinit(found.first);
+          std::vector<Vector<double>> u(1, Vector<double>(2));
+          std::vector<std::vector<Tensor<1, 2>>> grad(1, std::vector<Tensor<1, 2>>(2));
+          fv.get_function_values(solution_, u);
+          fv.get_function_gradients(solution_, grad);
+          const Stress s = d_ * strain(r, u[0][0], grad[0][0], grad[0][1]);
+          const double sign = z < 0 ? -1.0 : 1.0;
+          out.push_back({r, z, u[0][0], sign * u[0][1], {{s[0], s[1], s[2], sign * s[3]}}});
+        }
+      return out;
+    }
+
+    void AxisymmetricSolver::write_vtu() const
+    {
+      const StressPostprocessor post(d_);
+      DataOut<2> data_out;
+      data_out.attach_dof_handler(dof_handler_);
+      data_out.add_data_vector(solution_, post);
+      data_out.build_patches(mapping_, options_.degree);
+      const std::filesystem::path path =
+        std::filesystem::path(options_.vtu_directory) / "fem_solution.vtu";
+      std::ofstream out(path);
+      if (!out)
+        throw std::runtime_error("cannot write " + path.string());
+      data_out.write_vtu(out);
+    }
+
+    FemResult AxisymmetricSolver::run()
+    {
+      const auto t_start = Clock::now();
+      FemResult result;
+      result.degree = options_.degree;
+      result.refinements = options_.refinements;
+      result.mesh_generator =
+        options_.mesh == FemOptions::MeshGenerator::gmsh ? "gmsh" : "structured";
+      if (problem_.die)
+        {
+          result.contact.emplace();
+          result.contact->method = problem_.contact.method;
+          result.contact->unilateral = mode_ == Mode::unilateral;
+        }
+
+      auto finish = [&](const Evaluation &ev) {
+        result.functionals = ev.functionals;
+        if (ev.error_sq)
+          result.stress_l2_error = std::sqrt(*ev.error_sq),
+          result.stress_l2_norm = std::sqrt(*ev.norm_sq);
+        if (result.contact)
+          {
+            ContactResult &c = *result.contact;
+            c.half_width = ev.half_width;
+            c.half_width_gap = ev.half_width_gap;
+            c.force = ev.force;
+            c.force_trace = ev.force_trace;
+            c.force_penalty = ev.force_penalty;
+            c.max_penetration = ev.max_penetration;
+            c.pressure = ev.pressure;
+          }
+        result.assembly_seconds = assembly_s_;
+        result.solve_seconds = solve_s_;
+        result.total_seconds = seconds_since(t_start);
+      };
+
+      // Unilateral: pass 0 on a mesh without a split; each further pass remeshes with the
+      // outer line split (and graded) at the half-width found by the previous pass.
+      const double a = problem_.geometry.half_length();
+      const int n_passes = mode_ == Mode::unilateral ? 1 + options_.edge_fitting_passes : 1;
+      try
+        {
+          for (int pass = 0; pass < n_passes; ++pass)
+            {
+              if (pass > 0)
+                {
+                  const double c = result.contact->half_width;
+                  if (!(c > 1e-3 * a && c < a * (1 - 1e-3)))
+                    break; // no interior edge to fit
+                  split_ = c;
+                  dof_handler_.clear();
+                  triangulation_.clear();
+                }
+              // Passes before the last one only locate the edge: one level coarser each.
+              level_ = std::max(0, options_.refinements - (n_passes - 1 - pass));
+              const auto t0 = Clock::now();
+              make_mesh();
+              setup_system();
+              assembly_s_ += seconds_since(t0);
+              assemble_base();
+              result.n_dofs = dof_handler_.n_dofs();
+              result.n_cells = triangulation_.n_active_cells();
+              std::ostringstream line;
+              line.precision(6);
+              line << "pass " << pass << ", L = " << level_ << ", Q" << options_.degree << ": "
+                   << result.n_cells << " cells, " << result.n_dofs << " dofs ("
+                   << result.mesh_generator << " mesh";
+              if (split_)
+                line << ", outer side split at z = " << *split_ << " = " << *split_ / a << " a";
+              progress(line.str() + ")");
+              if (result.contact)
+                result.contact->h_min = h_min_;
+
+              if (mode_ != Mode::unilateral)
+                {
+                  system_matrix_.copy_from(base_matrix_);
+                  system_rhs_ = base_rhs_;
+                  solve_linear();
+                  finish(evaluate(nullptr));
+                  result.success = true;
+                }
+              else
+                {
+                  result.contact->penalty = kappa_;
+                  result.contact->penalty_factor = options_.penalty_factor;
+                  result.contact->edge_fitting_passes = pass;
+                  result.success = false;
+                  active_set_loop(result, pass, finish);
+                  if (!result.success)
+                    break;
+                }
+            }
+          if (result.success)
+            result.samples = samples();
+        }
+      catch (const std::exception &e)
+        {
+          result.success = false;
+          result.message = std::string("numerical failure: ") + e.what();
+        }
+      if (!options_.vtu_directory.empty() && result.success)
+        write_vtu();
+      result.total_seconds = seconds_since(t_start);
+      return result;
+    }
+
+    // 5c. Active-set loop, from the whole outer side in contact (paper iteration 0), until the
+    // set repeats its previous state; a repeat of an older state is a cycle (failure).
+    template <typename Finish>
+    void AxisymmetricSolver::active_set_loop(FemResult &result, int pass, const Finish &finish)
+    {
+      ContactResult &contact = *result.contact;
+      // Start: all in contact (pass 0), or z < c of the previous pass (the split point).
+      std::vector<char> start(outer_faces_.size() * face_quadrature_.size(), 1);
+      if (pass > 0 && split_)
+        {
+          FEFaceValues<2> fv(mapping_, fe_, face_quadrature_, update_quadrature_points);
+          const unsigned int n_q = face_quadrature_.size();
+          for (std::size_t k = 0; k < outer_faces_.size(); ++k)
+            {
+              fv.reinit(outer_faces_[k].first, outer_faces_[k].second);
+              for (unsigned int q = 0; q < n_q; ++q)
+                start[k * n_q + q] = fv.quadrature_point(q)[1] < *split_;
+            }
+        }
+      std::vector<std::vector<char>> history{start};
+      for (int it = 0;; ++it)
+        {
+          const std::vector<char> &active = history.back();
+          add_penalty(active);
+          solve_linear();
+          const Evaluation ev = evaluate(&active);
+          std::vector<char> next = active_set();
+          ActiveSetStep step;
+          step.pass = pass;
+          step.iteration = it;
+          step.n_active = static_cast<int>(std::count(active.begin(), active.end(), 1));
+          for (std::size_t i = 0; i < next.size(); ++i)
+            step.n_changed += next[i] != active[i];
+          step.half_width = ev.half_width;
+          step.force = ev.force;
+          step.force_trace = ev.force_trace;
+          step.force_penalty = ev.force_penalty;
+          step.functionals = ev.functionals;
+          contact.iterations.push_back(step);
+          contact.active_set_iterations = it + 1;
+          std::ostringstream line;
+          line.precision(6);
+          line << "pass " << pass << ", active-set step " << it << ": |A| = " << step.n_active
+               << " of " << active.size() << ", changed " << step.n_changed
+               << ", c/a = " << ev.half_width / problem_.geometry.half_length()
+               << ", P = " << ev.force << " N (trace " << ev.force_trace << ")";
+          progress(line.str());
+          finish(ev);
+          if (step.n_changed == 0)
+            {
+              result.success = true;
+              return;
+            }
+          const auto seen = std::find(history.begin(), history.end(), next);
+          if (seen != history.end())
+            {
+              result.message = "active set cycles: step " + std::to_string(it + 1) +
+                               " would repeat step " + std::to_string(seen - history.begin()) +
+                               " (pass " + std::to_string(pass) + ")";
+              return;
+            }
+          if (it + 1 >= options_.max_active_set_iterations)
+            {
+              result.message = "active set not converged in " +
+                               std::to_string(options_.max_active_set_iterations) +
+                               " iterations (pass " + std::to_string(pass) + ")";
+              return;
+            }
+          history.push_back(std::move(next));
+        }
+    }
+  } // namespace
+
+  FemResult solve(const rfm::Problem &problem, const FemOptions &options,
+                  const StressFunction &exact_stress)
+  {
+    options.validate();
+    AxisymmetricSolver solver(problem, options, exact_stress);
+    return solver.run();
+  }
+
+  std::string format_convergence_table(const std::vector<TableColumn> &columns)
+  {
+    ConvergenceTable table;
+    std::size_t n_rows = 0;
+    for (const TableColumn &c : columns)
+      n_rows = std::max(n_rows, c.values.size());
+    for (std::size_t row = 0; row < n_rows; ++row)
+      for (const TableColumn &c : columns)
+        if (row < c.values.size())
+          table.add_value(c.name, c.values[row]);
+    for (const TableColumn &c : columns)
+      {
+        table.set_precision(c.name, c.precision);
+        table.set_scientific(c.name, c.scientific);
+        if (c.rates)
+          table.evaluate_convergence_rates(c.name, ConvergenceTable::reduction_rate_log2);
+      }
+    std::ostringstream out;
+    table.write_text(out);
+    return out.str();
+  }
+} // namespace fem

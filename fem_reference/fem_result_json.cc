@@ -1,0 +1,102 @@
+#include "fem_reference/fem_result_json.h"
+
+namespace fem
+{
+  namespace
+  {
+    nlohmann::json functionals_to_json(const Functionals &f)
+    {
+      return {{"lagrange", f.lagrange},
+              {"castigliano", f.castigliano},
+              {"reissner", f.reissner},
+              {"strain_energy", f.strain_energy},
+              {"external_work", f.external_work},
+              {"penalty_energy", f.penalty_energy},
+              {"units", "J per radian"}};
+    }
+  } // namespace
+
+  nlohmann::json result_to_json(const rfm::Problem &problem, const FemOptions &options,
+                                const FemResult &r)
+  {
+    nlohmann::json j;
+    j["solver"] = "fem";
+    j["problem"] = problem.source;
+    j["discretization"] = {
+      {"degree", r.degree},
+      {"refinements", r.refinements},
+      {"dofs", r.n_dofs},
+      {"cells", r.n_cells},
+      {"mesh", r.mesh_generator},
+      {"refinement_rule", "cells per line x 2^L, geometric grading q^(1/2^L) (nested)"},
+      {"base_cells", {options.base_cells_r, options.base_cells_z}},
+      {"grading", {options.radial_grading, options.axial_grading}},
+      {"linear_solver",
+       options.linear_solver == FemOptions::LinearSolver::direct ? "umfpack" : "cg-ssor"},
+      {"section", "upper half z in [0, length/2], symmetry plane z = 0"}};
+    j["diagnostics"] = {{"status", r.success ? "ok" : "failed"}, {"message", r.message}};
+    if (r.stress_l2_error)
+      {
+        j["diagnostics"]["stress_l2_error"] = *r.stress_l2_error;
+        j["diagnostics"]["stress_l2_norm"] = *r.stress_l2_norm;
+      }
+    j["timing"] = {{"assembly_s", r.assembly_seconds},
+                   {"solve_s", r.solve_seconds},
+                   {"total_s", r.total_seconds}};
+    if (r.success || (r.contact && !r.contact->iterations.empty()))
+      j["functionals"] = functionals_to_json(r.functionals);
+    if (r.contact)
+      {
+        const ContactResult &c = *r.contact;
+        const double a = problem.geometry.half_length();
+        nlohmann::json contact = {{"method", c.method},
+                                  {"mode", c.unilateral ? "unilateral-penalty" : "bilateral"},
+                                  {"half_width", c.half_width},
+                                  {"half_width_ratio", c.half_width / a},
+                                  {"force", c.force},
+                                  {"force_trace", c.force_trace},
+                                  {"h_min", c.h_min},
+                                  {"max_penetration", c.max_penetration}};
+        if (c.unilateral)
+          {
+            contact["half_width_gap"] = c.half_width_gap;
+            contact["force_penalty"] = c.force_penalty;
+            contact["penalty"] = c.penalty;
+            contact["penalty_factor"] = c.penalty_factor;
+            contact["active_set_iterations"] = c.active_set_iterations;
+            contact["edge_fitting_passes"] = c.edge_fitting_passes;
+          }
+        nlohmann::json iterations = nlohmann::json::array();
+        for (const ActiveSetStep &s : c.iterations)
+          iterations.push_back({{"pass", s.pass},
+                                {"iteration", s.iteration},
+                                {"n_active", s.n_active},
+                                {"n_changed", s.n_changed},
+                                {"half_width", s.half_width},
+                                {"force", s.force},
+                                {"force_trace", s.force_trace},
+                                {"force_penalty", s.force_penalty},
+                                {"lagrange", s.functionals.lagrange},
+                                {"castigliano", s.functionals.castigliano},
+                                {"reissner", s.functionals.reissner}});
+        contact["iterations"] = iterations;
+        nlohmann::json pressure = nlohmann::json::array();
+        for (const PressurePoint &p : c.pressure)
+          pressure.push_back({{"z", p.z}, {"p", p.p}, {"p_trace", p.p_trace}, {"gap", p.gap}});
+        contact["pressure"] = pressure;
+        j["contact"] = contact;
+      }
+    nlohmann::json samples = nlohmann::json::array();
+    for (const FieldSample &s : r.samples)
+      samples.push_back({{"r", s.r},
+                         {"z", s.z},
+                         {"u_r", s.u_r},
+                         {"u_z", s.u_z},
+                         {"sigma_rr", s.sigma[0]},
+                         {"sigma_zz", s.sigma[1]},
+                         {"sigma_tt", s.sigma[2]},
+                         {"sigma_rz", s.sigma[3]}});
+    j["samples"] = samples;
+    return j;
+  }
+} // namespace fem

@@ -1,0 +1,14 @@
+// Result JSON of the FEM reference (DESIGN.md section 7), the same keys as rfm_solve's.
+#pragma once
+
+#include "fem_reference/axisymmetric_fem.h"
+
+#include <nlohmann/json.hpp>
+
+namespace fem
+{
+  /// {"solver": "fem", "problem", "discretization", "functionals", "contact", "samples",
+  ///  "diagnostics", "timing"}; "functionals" and "contact" only when the solve produced them.
+  nlohmann::json result_to_json(const rfm::Problem &problem, const FemOptions &options,
+                                const FemResult &result);
+} // namespace fem

@@ -1,0 +1,121 @@
+// fem_solve: the deal.II finite-element reference on one problem file.
+//
+// Solves the axisymmetric elastic problem of PROBLEM.json (DESIGN.md section 7) on the half
+// section z in [0, a] with Q_p elements (p = fem.degree) on the gmsh mesh of level L
+// (fem.refinements or --refinements) and writes the result JSON with the same keys as
+// rfm_solve: discretization, the Lagrange/Castigliano/Reissner functionals (J per radian),
+// the contact half-width, force and pressure profile when the problem has a die, fields at
+// the sample points, timings. The conventions are in fem_reference/axisymmetric_fem.h.
+//
+// Sample run:
+//   build/bin/fem_solve verification/problems/die_unilateral.json --refinements 3
+//       --output die.json --vtu /tmp
+//
+// Exit status: 0 success, 2 bad input (nothing written), 3 numerical failure (the result
+// with the history so far is still written).
+#include "fem_reference/axisymmetric_fem.h"
+#include "fem_reference/fem_result_json.h"
+#include "rfm/problem.h"
+#include "rfm/result_io.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+
+#include <filesystem>
+#include <iostream>
+
+int main(int argc, char **argv)
+{
+  try
+    {
+      // 1. Command line.
+      CLI::App app{"deal.II FEM reference (axisymmetric elasticity, die contact)"};
+      std::string problem_path, output_path, vtu_directory, mesh = "gmsh", solver = "direct";
+      int refinements = -1, edge_fitting_passes = -1, max_iterations = -1;
+      double penalty_factor = -1;
+      app.add_option("problem", problem_path, "problem file (JSON, SI units)")->required();
+      app.add_option("--refinements", refinements,
+                     "mesh level L: cells per line x 2^L (nested graded meshes)");
+      app.add_option("--output", output_path, "result file (JSON); default: stdout");
+      app.add_option("--vtu", vtu_directory, "write DIR/fem_solution.vtu (u and stresses)");
+      app.add_option("--mesh", mesh, "mesh generator")->check(CLI::IsMember({"gmsh", "structured"}));
+      app.add_option("--linear-solver", solver, "direct (UMFPACK) or cg (CG + SSOR)")
+        ->check(CLI::IsMember({"direct", "cg"}));
+      app.add_option("--penalty-factor", penalty_factor,
+                     "unilateral contact: kappa = factor * E / h_min (default 1e3)");
+      app.add_option("--edge-fitting-passes", edge_fitting_passes,
+                     "unilateral contact: remesh at the found contact edge this many times "
+                     "(default 1)");
+      app.add_option("--max-active-set-iterations", max_iterations,
+                     "unilateral contact: iteration limit per pass (default 50); exceeding it "
+                     "is a numerical failure (exit 3)");
+      try
+        {
+          app.parse(argc, argv);
+        }
+      catch (const CLI::ParseError &e)
+        {
+          const int status = app.exit(e);
+          return status == 0 ? 0 : 2;
+        }
+
+      // 2. Input: everything is checked before any work or output.
+      const rfm::Problem problem = rfm::read_problem_file(problem_path);
+      fem::FemOptions options = fem::options_from_problem(problem);
+      if (refinements >= 0)
+        options.refinements = refinements;
+      else if (refinements != -1)
+        throw rfm::InputError("--refinements = " + std::to_string(refinements) + ": must be >= 0");
+      if (edge_fitting_passes != -1)
+        options.edge_fitting_passes = edge_fitting_passes;
+      if (max_iterations != -1)
+        options.max_active_set_iterations = max_iterations;
+      if (penalty_factor != -1)
+        options.penalty_factor = penalty_factor;
+      options.mesh = mesh == "gmsh" ? fem::FemOptions::MeshGenerator::gmsh
+                                    : fem::FemOptions::MeshGenerator::structured;
+      options.linear_solver = solver == "direct" ? fem::FemOptions::LinearSolver::direct
+                                                 : fem::FemOptions::LinearSolver::cg;
+      options.vtu_directory = vtu_directory;
+      options.validate();
+      if (!output_path.empty())
+        rfm::check_output_path("--output", output_path);
+      if (!vtu_directory.empty() && !std::filesystem::is_directory(vtu_directory))
+        throw rfm::InputError("--vtu = " + vtu_directory + ": must be an existing directory");
+      fmt::print(stderr, "fem_solve: Q{} elements, level L = {}, {} mesh, {} solver{}\n",
+                 options.degree, options.refinements, mesh, solver,
+                 problem.die ? ", contact.method = " + problem.contact.method : "");
+
+      // 3. Solve and write.
+      const fem::FemResult r = fem::solve(problem, options);
+      const nlohmann::json result = fem::result_to_json(problem, options, r);
+      if (!output_path.empty())
+        rfm::write_json_atomically(output_path, result);
+      else
+        std::cout << result.dump(2) << '\n';
+      if (!r.success)
+        {
+          fmt::print(stderr, "fem_solve: numerical failure: {}\n", r.message);
+          return 3;
+        }
+      fmt::print(stderr, "fem_solve: Phi_L = {:.6e}, Phi_C = {:.6e}, Phi_R = {:.6e} J/rad; "
+                         "assembly {:.3f} s, solve {:.3f} s\n",
+                 r.functionals.lagrange, r.functionals.castigliano, r.functionals.reissner,
+                 r.assembly_seconds, r.solve_seconds);
+      if (r.contact)
+        fmt::print(stderr, "fem_solve: c = {:.6g} m (c/a = {:.4f}), P = {:.6g} N (trace {:.6g} N)\n",
+                   r.contact->half_width, r.contact->half_width / problem.geometry.half_length(),
+                   r.contact->force, r.contact->force_trace);
+      return 0;
+    }
+  catch (const rfm::InputError &e)
+    {
+      std::cerr << "fem_solve: error: " << e.what() << '\n';
+      return 2;
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "fem_solve: error: " << e.what() << '\n';
+      return 3;
+    }
+}

@@ -1,0 +1,40 @@
+// libFuzzer target for the problem-file parser (rfm/problem.h). Any input must either
+// parse into a valid Problem or be rejected with rfm::InputError; every other exception,
+// crash or sanitizer report is a bug. Build and run: scripts/fuzz.sh [SECONDS].
+#include "rfm/problem.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <cstdio>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
+{
+  // Same path as read_problem_file: JSON errors are bad input.
+  nlohmann::json j;
+  try
+    {
+      j = nlohmann::json::parse(data, data + size);
+    }
+  catch (const nlohmann::json::exception &)
+    {
+      return 0;
+    }
+  try
+    {
+      const rfm::Problem p = rfm::parse_problem(j);
+      // A parsed problem is physically valid.
+      if (!(p.geometry.outer_radius > p.geometry.inner_radius && p.geometry.inner_radius > 0 &&
+            p.material.poisson_ratio < 0.5 && p.material.poisson_ratio > -1))
+        std::abort();
+    }
+  catch (const rfm::InputError &)
+    {
+    }
+  catch (const std::exception &e)
+    {
+      std::fprintf(stderr, "unexpected exception: %s\n", e.what());
+      std::abort();
+    }
+  return 0;
+}

@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer target for the problem-file parser with clang (AddressSanitizer
+# and UndefinedBehaviorSanitizer) and runs it for a bounded time (default 60 s), seeded
+# with the problem files in fuzz/corpus/. Needs clang-14 and libclang-rt-14-dev.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-60}
+out=build-fuzz
+mkdir -p "$out" "$out/corpus"
+clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
+  -I. -I/usr/include/eigen3 fuzz/problem_fuzzer.cc rfm/problem.cc -o "$out/problem_fuzzer"
+"$out/problem_fuzzer" -max_total_time="$seconds" -print_final_stats=1 -dict=fuzz/problem.dict \
+  "$out/corpus" fuzz/corpus
