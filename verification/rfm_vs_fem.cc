@@ -1,0 +1,266 @@
+// rfm_vs_fem: the RFM solver against the deal.II FEM reference on the same problem files.
+//
+//   1. Lame cylinder (paper case): FEM Q1 and Q2 under refinement and RFM over p, both
+//      against the exact solution: relative L2 stress error vs DoFs / N, wall times, and
+//      the time each method needs to reach a stress error of 1e-2, 1e-3 and 1e-4.
+//   2. Die contact: iteration 0 (c = a) and the unilateral problem (c, P) from both
+//      methods; the FEM's P(c) at a few fixed zones beside the RFM's; the time each
+//      method needs to reach 1 % and 0.1 % on P against the finest FEM solution.
+//   3. The tolerance gate (verification/tolerances.json, entry "rfm_vs_fem").
+//
+// Sample run:
+//   build/bin/rfm_vs_fem --mode quick --output-dir build/verification-output
+#include "fem_reference/axisymmetric_fem.h"
+#include "rfm/contact.h"
+#include "rfm/result_io.h"
+#include "verification/lame_errors.h"
+#include "verification/tolerances.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+
+namespace
+{
+  double seconds_since(std::chrono::steady_clock::time_point t0)
+  {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+
+  // Smallest time among runs whose error is at or below the target (inf if none).
+  double time_to(const nlohmann::json &runs, const char *err_key, double target)
+  {
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto &r : runs)
+      if (r[err_key].get<double>() <= target)
+        best = std::min(best, r["seconds"].get<double>());
+    return best;
+  }
+
+  nlohmann::json finite_or_null(double x)
+  {
+    return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
+  }
+} // namespace
+
+int main(int argc, char **argv)
+{
+  try
+    {
+      CLI::App app{"RFM against the deal.II FEM reference"};
+      std::string mode = "quick", output_dir = "verification-output", tolerances;
+      std::string source_dir = RFM_SOURCE_DIR;
+      app.add_option("--mode", mode, "quick (CI) or full (report)")
+        ->check(CLI::IsMember({"quick", "full"}));
+      app.add_option("--output-dir", output_dir, "where rfm_vs_fem.json is written");
+      app.add_option("--source-dir", source_dir, "project source (problem files)");
+      app.add_option("--tolerances", tolerances, "tolerance file to check (default: none)");
+      CLI11_PARSE(app, argc, argv);
+      std::filesystem::create_directories(output_dir);
+      const bool full = mode == "full";
+      nlohmann::json results = {{"driver", "rfm_vs_fem"}, {"mode", mode}};
+
+      // 1. Lame cylinder.
+      const rfm::Problem lame =
+        rfm::read_problem_file(source_dir + "/verification/problems/lame_paper.json");
+      const verification::LameCylinder exact = verification::exact_of(lame);
+      fmt::print("== Lame cylinder: stress error against work ==\n");
+      nlohmann::json fem_runs = nlohmann::json::array(), rfm_runs = nlohmann::json::array();
+      for (const int degree : {1, 2})
+        for (int level = 0; level <= (full ? 5 : 4); ++level)
+          {
+            fem::FemOptions o = fem::options_from_problem(lame);
+            o.degree = degree;
+            o.refinements = level;
+            o.progress = false;
+            const auto t0 = std::chrono::steady_clock::now();
+            const fem::FemResult r =
+              fem::solve(lame, o, [&](double rr, double zz) { return exact.stress(rr, zz); });
+            const double t = seconds_since(t0);
+            if (!r.success)
+              throw std::runtime_error("FEM failed: " + r.message);
+            const double err = *r.stress_l2_error / *r.stress_l2_norm;
+            fmt::print("FEM Q{} L={} dofs={:>7} L2 err={:.3e} time={:.3f} s\n", degree, level,
+                       r.n_dofs, err, t);
+            fem_runs.push_back({{"degree", degree}, {"refinements", level}, {"dofs", r.n_dofs},
+                                {"stress_l2_relative", err}, {"seconds", t},
+                                {"reissner", r.functionals.reissner}});
+          }
+      for (int p = 0; p <= 14; ++p)
+        {
+          rfm::DiscretizationOptions o = lame.rfm;
+          o.degree = p;
+          rfm::SolverOptions so;
+          so.compute_diagnostics = false; // time the solve itself, as a user would run it
+          const auto t0 = std::chrono::steady_clock::now();
+          const rfm::RfmModel m(lame, o, std::nullopt, so);
+          const double t = seconds_since(t0);
+          const double err = verification::stress_errors(m, exact).first;
+          fmt::print("RFM p={:>2} N={:>3} unknowns={:>5} L2 err={:.3e} time={:.4f} s\n", p,
+                     (p + 1) * (p + 1), 6 * (p + 1) * (p + 1), err, t);
+          rfm_runs.push_back({{"degree", p}, {"N", (p + 1) * (p + 1)}, {"unknowns", 6 * (p + 1) * (p + 1)},
+                              {"stress_l2_relative", err}, {"seconds", t}});
+        }
+      results["lame"] = {{"fem", fem_runs}, {"rfm", rfm_runs}};
+      for (const double target : {1e-2, 1e-3, 1e-4})
+        {
+          const double tf = time_to(fem_runs, "stress_l2_relative", target);
+          const double tr = time_to(rfm_runs, "stress_l2_relative", target);
+          const std::string key = fmt::format("{:.0e}", target);
+          results["lame"]["time_to_accuracy"][key] = {
+            {"fem_s", finite_or_null(tf)}, {"rfm_s", finite_or_null(tr)},
+            {"fem_over_rfm", finite_or_null(tf / tr)}};
+          fmt::print("time to L2 stress error {}: FEM {:.4f} s, RFM {:.5f} s, ratio {:.1f}\n", key,
+                     tf, tr, tf / tr);
+        }
+
+      // 2. Die contact.
+      rfm::Problem die =
+        rfm::read_problem_file(source_dir + "/verification/problems/die_paper.json");
+      const double a = die.geometry.half_length();
+      fmt::print("\n== Die contact ==\n");
+      // 2a. Iteration 0, both methods.
+      {
+        rfm::Problem d0 = die;
+        d0.contact.method = "fixed";
+        d0.contact.half_width = a;
+        fem::FemOptions o = fem::options_from_problem(d0);
+        o.refinements = full ? 5 : 3;
+        o.progress = false;
+        const fem::FemResult fr = fem::solve(d0, o);
+        d0.rfm.degree = 10;
+        const rfm::ContactResult rr = rfm::solve_contact(d0, d0.rfm, rfm::ContactOptions{});
+        if (!fr.success || !rr.success)
+          throw std::runtime_error("iteration 0 failed");
+        results["die"]["iteration0"] = {
+          {"fem_force", fr.contact->force}, {"rfm_force", rr.final.force},
+          {"fem_reissner", fr.functionals.lagrange}, {"rfm_reissner", rr.final.reissner},
+          {"force_difference_relative", std::abs(rr.final.force - fr.contact->force) / fr.contact->force},
+          {"energy_difference_relative",
+           std::abs(rr.final.reissner - fr.functionals.lagrange) / fr.functionals.lagrange}};
+        fmt::print("iteration 0: P FEM {:.1f} N, RFM {:.1f} N; energy FEM {:.7f}, RFM {:.7f} J/rad\n",
+                   fr.contact->force, rr.final.force, fr.functionals.lagrange, rr.final.reissner);
+      }
+      // 2b. The unilateral problem: FEM under refinement, RFM over p.
+      nlohmann::json fem_die = nlohmann::json::array(), rfm_die = nlohmann::json::array();
+      const int fem_levels = full ? 5 : 4;
+      for (int level = 0; level <= fem_levels; ++level)
+        {
+          rfm::Problem d = die;
+          d.contact.method = "iterate";
+          fem::FemOptions o = fem::options_from_problem(d);
+          o.refinements = level;
+          o.progress = false;
+          const auto t0 = std::chrono::steady_clock::now();
+          const fem::FemResult fr = fem::solve(d, o);
+          const double t = seconds_since(t0);
+          if (!fr.success)
+            throw std::runtime_error("FEM unilateral failed: " + fr.message);
+          fmt::print("FEM Q2 L={} dofs={:>7} c/a={:.5f} P={:.1f} N time={:.2f} s\n", level, fr.n_dofs,
+                     fr.contact->half_width / a, fr.contact->force, t);
+          fem_die.push_back({{"refinements", level}, {"dofs", fr.n_dofs},
+                             {"half_width_ratio", fr.contact->half_width / a},
+                             {"force", fr.contact->force}, {"seconds", t}});
+        }
+      const double p_ref = fem_die.back()["force"].get<double>();
+      const double c_ref = fem_die.back()["half_width_ratio"].get<double>();
+      for (const int p : full ? std::vector<int>{4, 6, 8, 10, 12, 14, 16} : std::vector<int>{6, 8, 10, 14})
+        for (const std::string method : {"iterate", "max-force"})
+          {
+            rfm::Problem d = die;
+            d.contact.method = method;
+            d.rfm.degree = p;
+            const auto t0 = std::chrono::steady_clock::now();
+            const rfm::ContactResult r = rfm::solve_contact(d, d.rfm, rfm::ContactOptions{});
+            const double t = seconds_since(t0);
+            if (!r.success)
+              throw std::runtime_error("RFM " + method + " failed: " + r.message);
+            fmt::print("RFM {:>9} p={:>2} c/a={:.5f} P={:.1f} N time={:.2f} s\n", method, p,
+                       r.final.half_width / a, r.final.force, t);
+            nlohmann::json j = {{"method", method}, {"degree", p}, {"N", (p + 1) * (p + 1)},
+                                {"half_width_ratio", r.final.half_width / a},
+                                {"force", r.final.force}, {"seconds", t},
+                                {"force_error_vs_fem", std::abs(r.final.force - p_ref) / p_ref}};
+            if (r.half_width_range)
+              j["half_width_range_ratio"] = {r.half_width_range->first / a,
+                                             r.half_width_range->second / a};
+            rfm_die.push_back(j);
+          }
+      for (auto &f : fem_die)
+        f["force_error_vs_finest"] = std::abs(f["force"].get<double>() - p_ref) / p_ref;
+      results["die"]["fem"] = fem_die;
+      results["die"]["rfm"] = rfm_die;
+      // Agreement at the largest common p.
+      const nlohmann::json *it_best = nullptr, *mf_best = nullptr;
+      for (const auto &r : rfm_die)
+        (r["method"] == "iterate" ? it_best : mf_best) = &r;
+      const double c_it = (*it_best)["half_width_ratio"], c_mf = (*mf_best)["half_width_ratio"];
+      results["die"]["agreement"] = {
+        {"fem_half_width_ratio", c_ref},
+        {"fem_force", p_ref},
+        {"iterate_force_difference_relative", std::abs((*it_best)["force"].get<double>() - p_ref) / p_ref},
+        {"max_force_force_difference_relative", std::abs((*mf_best)["force"].get<double>() - p_ref) / p_ref},
+        {"iterate_half_width_difference_relative", std::abs(c_it - c_ref) / c_ref},
+        {"max_force_half_width_difference_relative", std::abs(c_mf - c_ref) / c_ref},
+        {"fem_c_above_rfm_interval_low", c_ref - (*it_best)["half_width_range_ratio"][0].get<double>()},
+        {"fem_c_below_rfm_interval_high", (*it_best)["half_width_range_ratio"][1].get<double>() - c_ref},
+        {"fem_finest_change_last_refinement_force",
+         std::abs(fem_die[fem_levels]["force"].get<double>() - fem_die[fem_levels - 1]["force"].get<double>()) / p_ref},
+        {"fem_finest_change_last_refinement_c",
+         std::abs(fem_die[fem_levels]["half_width_ratio"].get<double>() -
+                  fem_die[fem_levels - 1]["half_width_ratio"].get<double>())}};
+      fmt::print("agreement: {}\n", results["die"]["agreement"].dump());
+      for (const double target : {1e-2, 1e-3})
+        {
+          const double tf = time_to(fem_die, "force_error_vs_finest", target);
+          nlohmann::json its = nlohmann::json::array();
+          for (const auto &r : rfm_die)
+            if (r["method"] == "iterate")
+              its.push_back(r);
+          const double tr = time_to(its, "force_error_vs_fem", target);
+          const std::string key = fmt::format("{:.0e}", target);
+          results["die"]["time_to_accuracy"][key] = {
+            {"fem_s", finite_or_null(tf)}, {"rfm_s", finite_or_null(tr)},
+            {"fem_over_rfm", finite_or_null(tf / tr)}};
+          fmt::print("time to P within {}: FEM {:.3f} s, RFM {:.3f} s\n", key, tf, tr);
+        }
+      // 2c. P(c) of the bilateral problem from the FEM at a few zones (report figure).
+      if (full)
+        for (const double ca : {0.45, 0.5, 0.52, 0.54, 0.6, 0.7})
+          {
+            rfm::Problem d = die;
+            d.contact.method = "fixed";
+            d.contact.half_width = ca * a;
+            fem::FemOptions o = fem::options_from_problem(d);
+            o.refinements = 4;
+            o.progress = false;
+            const fem::FemResult fr = fem::solve(d, o);
+            if (fr.success)
+              results["die"]["fem_force_curve"].push_back(
+                {{"half_width_ratio", ca}, {"force", fr.contact->force}});
+          }
+
+      // 3. Write and gate.
+      const std::string out_file = output_dir + "/rfm_vs_fem.json";
+      rfm::write_json_atomically(out_file, results);
+      fmt::print("\nwrote {}\n", out_file);
+      if (!tolerances.empty())
+        {
+          const auto report =
+            verification::check_tolerances(tolerances, "rfm_vs_fem", results, std::cout);
+          fmt::print("{} passed, {} failed\n", report.n_passed, report.n_failed);
+          return report.n_failed == 0 ? 0 : 1;
+        }
+      return 0;
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "rfm_vs_fem: error: " << e.what() << '\n';
+      return 2;
+    }
+}
