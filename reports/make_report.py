@@ -423,7 +423,7 @@ def comparison_section(cmp, die, out_dir):
 
 
 def benchmark_section(bench, out_dir):
-    md = ["## 4. Benchmarks (Google Benchmark, 1 thread)", ""]
+    md = ["## 4. Benchmarks (Google Benchmark, 1 thread; `cmake --build --preset benchmarks`)", ""]
     rows = [b for b in bench["benchmarks"] if b.get("run_type") == "iteration"]
     def series(prefix):
         return [(b["N"] if "N" in b else b["n"], b["real_time"], b.get("flops", 0)) for b in rows if b["name"].startswith(prefix + "/")]
@@ -508,6 +508,17 @@ def main():
     bench = load(args.data, "benchmark_rfm.json")
     if bench:
         md += benchmark_section(bench, args.out)
+    fem_bench = load(args.data, "benchmark_fem.json")
+    if fem_bench:
+        md.append("FEM reference (Q2, `fem_benchmark`): time per solve against DoFs, with the assembly "
+                  "and linear-solve parts measured inside fem::solve.")
+        md.append("")
+        md.append("| benchmark | DoFs | time [ms] | assembly [s] | solve [s] |")
+        md.append("|---|---|---|---|---|")
+        for b in fem_bench["benchmarks"]:
+            if b.get("run_type") == "iteration":
+                md.append(f"| {b['name']} | {int(b['dofs'])} | {b['real_time']:.1f} | {b['assembly_s']:.3f} | {b['solve_s']:.3f} |")
+        md.append("")
     for name in ("fem_convergence_lame.json", "fem_convergence_die.json"):
         fc = load(args.data, name)
         if fc:

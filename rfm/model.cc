@@ -36,6 +36,21 @@ namespace rfm
     return s;
   }
 
+  double estimate_memory_bytes(const Problem &problem, const DiscretizationOptions &options,
+                               const std::optional<double> half_width)
+  {
+    const Section s = build_section(problem, half_width);
+    const auto r_cells = section_cells(s.r_min(), s.r_max(), options.n_cells_r, s.r_breaks(),
+                                       options.n_graded_layers, options.grading_ratio);
+    const auto z_cells = section_cells(s.z_min(), s.z_max(), options.n_cells_z, s.z_breaks(),
+                                       options.n_graded_layers, options.grading_ratio);
+    const double n_gauss = options.degree + options.extra_gauss_points;
+    const double n_q = (r_cells.size() - 1.0) * (z_cells.size() - 1.0) * n_gauss * n_gauss;
+    const double n = (options.degree + 1.0) * (options.degree + 1.0);
+    return 8.0 * (14.0 * n_q * n + 2.0 * (4 * n) * (4 * n) + 3.0 * (4 * n) * (2 * n) +
+                  2.0 * (2 * n) * (2 * n));
+  }
+
   RfmModel::RfmModel(const Problem &problem, const DiscretizationOptions &options,
                      const std::optional<double> half_width, const SolverOptions &solver_options)
     : half_width_(half_width)

@@ -23,6 +23,12 @@ namespace rfm
   /// Precondition: problem validated; 0 < half_width <= a when the problem has a die.
   Section build_section(const Problem &problem, std::optional<double> half_width);
 
+  /// Peak memory of one solve [bytes], estimated before any allocation: quadrature
+  /// points times basis size for the ~14 dense point-by-function matrices of assembly,
+  /// plus the saddle-point matrices (R11, R12, their factors and the Schur complement).
+  double estimate_memory_bytes(const Problem &problem, const DiscretizationOptions &options,
+                               std::optional<double> half_width);
+
   struct ContactForce
   {
     double domain = 0.0; ///< P = -2 pi int s . e(v) r dr dz, v = ((r - R1)/(R2 - R1), 0) [N]

@@ -19,6 +19,7 @@
 #include <fmt/core.h>
 
 #include <iostream>
+#include <unistd.h>
 
 namespace
 {
@@ -131,6 +132,23 @@ int main(int argc, char **argv)
         problem.rfm.degree = degree;
       if (!output_path.empty())
         rfm::check_output_path("--output", output_path);
+      {
+        // Memory: estimated before any allocation, against the machine's physical memory.
+        const double bytes = rfm::estimate_memory_bytes(
+          problem, problem.rfm,
+          problem.die ? std::optional<double>(problem.contact.half_width.value_or(
+                          problem.geometry.half_length()))
+                      : std::nullopt);
+        const double available = static_cast<double>(sysconf(_SC_PHYS_PAGES)) *
+                                 static_cast<double>(sysconf(_SC_PAGE_SIZE));
+        if (bytes > 0.75 * available)
+          throw rfm::InputError(fmt::format(
+            "rfm.degree = {} (with extra_gauss_points = {}, n_graded_layers = {}, n_cells = {} x {}): "
+            "a solve needs about {:.1f} GiB, more than 75 % of this machine's {:.1f} GiB: lower the "
+            "degree or the quadrature",
+            problem.rfm.degree, problem.rfm.extra_gauss_points, problem.rfm.n_graded_layers,
+            problem.rfm.n_cells_r, problem.rfm.n_cells_z, bytes / (1 << 30), available / (1 << 30)));
+      }
 
       // 3. Solve: one linear solve, or the contact search for a die problem.
       const int p = problem.rfm.degree;

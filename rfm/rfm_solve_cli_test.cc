@@ -125,7 +125,10 @@ namespace
       Case{"degree_too_large", with("/rfm/degree", 1000), "rfm.degree"},
       Case{"degree_fraction", with("/rfm/degree", 2.5), "rfm.degree"},
       Case{"grading_ratio", with("/rfm/grading_ratio", 1.5), "rfm.grading_ratio"},
-      Case{"fem_degree", with("/fem/degree", 9), "fem.degree"}),
+      Case{"fem_degree", with("/fem/degree", 9), "fem.degree"},
+      Case{"memory_too_large",
+           with("/rfm", {{"degree", 40}, {"extra_gauss_points", 40}, {"n_cells_r", 64}, {"n_cells_z", 64}}),
+           "GiB"}),
     [](const ::testing::TestParamInfo<Case> &info) { return info.param.name; });
 
   TEST(RfmSolveCli, MissingFileAndUnwritableOutput)

@@ -5,6 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
+command -v clang++ >/dev/null || { echo "fuzz.sh: needs clang: apt-get install clang-14 libclang-rt-14-dev" >&2; exit 1; }
 out=build-fuzz
 mkdir -p "$out" "$out/corpus"
 clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
