@@ -3,23 +3,14 @@
 // problems as rfm_benchmark). Reported times are per solve; the counters split them into
 // assembly and linear solve as measured inside fem::solve.
 #include "fem_reference/axisymmetric_fem.h"
-#include "rfm/problem.h"
+
+#include "benchmarks/benchmark_problems.h"
 
 #include <benchmark/benchmark.h>
 
 namespace
 {
-  rfm::Problem make_problem(bool die)
-  {
-    nlohmann::json j = {
-      {"geometry", {{"inner_radius", 0.1}, {"outer_radius", 0.2}, {"length", 0.4}}},
-      {"material", {{"youngs_modulus", 2.1e11}, {"poisson_ratio", 0.3}}}};
-    if (die)
-      j["die"] = {{"indentation", 1e-6}}, j["contact"] = {{"method", "fixed"}, {"half_width", 0.106}};
-    else
-      j["loading"] = {{"inner_pressure", 1e7}};
-    return rfm::parse_problem(j);
-  }
+  using benchmarks::make_problem;
 
   void fem_solve(benchmark::State &state, bool die)
   {

@@ -10,26 +10,18 @@
 //
 //   build/bin/rfm_benchmark --benchmark_out=reports/data/benchmark_rfm.json
 //                           --benchmark_out_format=json     (or: cmake --build --preset benchmarks)
+#include "benchmarks/benchmark_problems.h"
 #include "rfm/assembly.h"
 #include "rfm/model.h"
 #include "rfm/saddle_point_solver.h"
 
 #include <Eigen/Cholesky>
+
 #include <benchmark/benchmark.h>
 
 namespace
 {
-  rfm::Problem make_problem(bool die)
-  {
-    nlohmann::json j = {
-      {"geometry", {{"inner_radius", 0.1}, {"outer_radius", 0.2}, {"length", 0.4}}},
-      {"material", {{"youngs_modulus", 2.1e11}, {"poisson_ratio", 0.3}}}};
-    if (die)
-      j["die"] = {{"indentation", 1e-6}}, j["contact"] = {{"method", "fixed"}, {"half_width", 0.106}};
-    else
-      j["loading"] = {{"inner_pressure", 1e7}};
-    return rfm::parse_problem(j);
-  }
+  using benchmarks::make_problem;
 
   std::optional<double> zone(const rfm::Problem &p)
   {

@@ -27,6 +27,28 @@ namespace rfm
     return out;
   }
 
+  nlohmann::json to_json(const ContactIterate &it, const Problem &problem)
+  {
+    const double a = problem.geometry.half_length();
+    const double delta = problem.die ? problem.die->indentation : 1.0;
+    return {{"phase", it.phase},
+            {"half_width", it.half_width},
+            {"half_width_ratio", it.half_width / a},
+            {"force", it.force},
+            {"force_trace", it.force_trace},
+            {"lagrange", it.lagrange},
+            {"castigliano", it.castigliano},
+            {"reissner", it.reissner},
+            {"max_tension", it.max_tension},
+            {"max_penetration", it.max_penetration},
+            {"max_tension_relative", it.max_tension / std::max(it.peak_pressure, 1e-300)},
+            {"max_penetration_relative", it.max_penetration / delta},
+            {"condition_1_2_holds", !it.tension},
+            {"condition_1_3_holds", !it.penetration},
+            {"conditions_hold", it.conditions_hold()},
+            {"seconds", it.assembly_s + it.solve_s}};
+  }
+
   ContactIterate check_contact(const Problem &problem, const RfmModel &model,
                                const ContactOptions &options)
   {

@@ -86,6 +86,11 @@ namespace rfm
   ContactIterate check_contact(const Problem &problem, const RfmModel &model,
                                const ContactOptions &options);
 
+  /// One iterate as JSON (result files and drivers): c [m], c/a, P and P trace [N], the
+  /// functionals [J/rad], the violations (absolute and relative to the peak pressure and
+  /// to delta), the two conditions, the phase and the time [s].
+  nlohmann::json to_json(const ContactIterate &it, const Problem &problem);
+
   /// Contact pressure p(z) = -sigma_rr(R2, z) for z in [0, c] at n points.
   std::vector<std::pair<double, double>> contact_pressure(const RfmModel &model, double c, int n);
 } // namespace rfm

@@ -45,29 +45,13 @@ namespace
     return out;
   }
 
-  nlohmann::json iterate_to_json(const rfm::ContactIterate &it, double a)
-  {
-    return {{"half_width", it.half_width},
-            {"half_width_ratio", it.half_width / a},
-            {"force", it.force},
-            {"force_trace", it.force_trace},
-            {"lagrange", it.lagrange},
-            {"castigliano", it.castigliano},
-            {"reissner", it.reissner},
-            {"max_tension", it.max_tension},
-            {"max_penetration", it.max_penetration},
-            {"condition_1_2_holds", !it.tension},
-            {"condition_1_3_holds", !it.penetration},
-            {"phase", it.phase}};
-  }
-
   nlohmann::json contact_to_json(const rfm::Problem &problem, const rfm::ContactResult &c)
   {
     const double a = problem.geometry.half_length();
     nlohmann::json out = {{"method", c.method}, {"message", c.message}};
     nlohmann::json iterations = nlohmann::json::array();
     for (const auto &it : c.history)
-      iterations.push_back(iterate_to_json(it, a));
+      iterations.push_back(rfm::to_json(it, problem));
     out["iterations"] = iterations;
     if (!c.success)
       return out;
@@ -77,7 +61,7 @@ namespace
     out["force_trace"] = c.final.force_trace;
     if (c.half_width_range)
       out["half_width_range"] = {c.half_width_range->first, c.half_width_range->second};
-    out["conditions"] = iterate_to_json(c.final, a);
+    out["conditions"] = rfm::to_json(c.final, problem);
     nlohmann::json pressure = nlohmann::json::array();
     for (const auto &[z, p] : rfm::contact_pressure(*c.model, c.final.half_width, 101))
       pressure.push_back({{"z", z}, {"p", p}});

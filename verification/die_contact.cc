@@ -42,22 +42,6 @@ namespace
                 {"note", "iteration 5 is the check with c = 0.48 a"}}},
     {"half_width_ratio", 0.543}};
 
-  nlohmann::json iterate_json(const rfm::ContactIterate &it, double a, double delta)
-  {
-    return {{"phase", it.phase},
-            {"half_width", it.half_width},
-            {"half_width_ratio", it.half_width / a},
-            {"force", it.force},
-            {"force_trace", it.force_trace},
-            {"lagrange", it.lagrange},
-            {"castigliano", it.castigliano},
-            {"reissner", it.reissner},
-            {"max_tension_relative", it.max_tension / std::max(it.peak_pressure, 1e-300)},
-            {"max_penetration_relative", it.max_penetration / delta},
-            {"conditions_hold", it.conditions_hold()},
-            {"seconds", it.assembly_s + it.solve_s}};
-  }
-
   nlohmann::json pressure_json(const rfm::RfmModel &model, double c)
   {
     nlohmann::json z = nlohmann::json::array(), p = nlohmann::json::array();
@@ -114,7 +98,7 @@ int main(int argc, char **argv)
           fmt::print("{:>3} {:>5} {:>12.1f} {:>12.1f} {:>11.6f} {:>11.6f} {:>11.6f}\n", p,
                      (p + 1) * (p + 1), it.force, it.force_trace, it.castigliano, it.reissner,
                      it.lagrange);
-          nlohmann::json j = iterate_json(it, a, base.die->indentation);
+          nlohmann::json j = rfm::to_json(it, base);
           j["force_vs_paper_relative"] = std::abs(it.force - 128.7e3) / 128.7e3;
           j["reissner_vs_paper_relative"] = std::abs(it.reissner - 0.0176) / 0.0176;
           j["castigliano_vs_paper_relative"] = std::abs(it.castigliano - 0.0176) / 0.0176;
@@ -169,7 +153,7 @@ int main(int argc, char **argv)
                               {"degree", run.degree},
                               {"N", (run.degree + 1) * (run.degree + 1)},
                               {"quadrature", run.doubled ? "doubled" : "default"},
-                              {"final", iterate_json(f, a, base.die->indentation)},
+                              {"final", rfm::to_json(f, base)},
                               {"message", r.message},
                               {"n_solves", r.history.size()},
                               {"seconds", seconds}};
@@ -177,7 +161,7 @@ int main(int argc, char **argv)
             j["half_width_range_ratio"] = {r.half_width_range->first / a,
                                            r.half_width_range->second / a};
           for (const auto &it : r.history)
-            j["history"].push_back(iterate_json(it, a, base.die->indentation));
+            j["history"].push_back(rfm::to_json(it, base));
           const std::string key = run.method + "_p" + std::to_string(run.degree) +
                                   (run.doubled ? "_quad2" : "");
           results["runs"][key] = j;
