@@ -192,10 +192,11 @@ namespace rfm
                 holds = true;
                 break;
               }
-            // Both violated: side with the larger relative violation.
-            const double rel_t = it.max_tension / std::max(1e-300, it.peak_pressure);
-            const double rel_u = it.max_penetration / problem.die->indentation;
-            const bool too_long = it.tension && (!it.penetration || rel_t >= rel_u);
+            // Penetration outside the zone means the zone is too short, whatever the
+            // pressure does: a too-long zone opens a gap beyond its edge. Tension together
+            // with penetration is the oscillation of a compressive edge singularity that
+            // the polynomial stresses cannot represent, not a sign of a too-long zone.
+            const bool too_long = it.tension && !it.penetration;
             double proposal;
             if (too_long)
               hi = std::min(hi, c), proposal = it.first_tension_z;

@@ -12,7 +12,8 @@
 //   fixed:     the given c (c = a is the paper's iteration 0); gives P(c).
 //   iterate:   the paper's successive iterations, from c = a: remove the points where the
 //              pressure is tensile (c <- first zero of p), add the points that penetrate
-//              (c <- end of the penetrating interval), until both conditions hold. Each
+//              (c <- end of the penetrating interval), until both conditions hold. When
+//              both are violated, penetration decides (the zone is too short). Each
 //              step is kept inside the bracket [too short, too long] found so far; a step
 //              that leaves it is replaced by a bisection step (the raw fixed-point
 //              iteration can overshoot and cycle). At finite N both conditions hold on

@@ -66,4 +66,16 @@ namespace rfm
     for (const auto &it : ri.history)
       EXPECT_LE(it.force, rm.final.force * (1 + 1e-9)) << "c = " << it.half_width;
   }
+  // Regression: at p = 12 an early iterate (c = 0.37 a) shows both tension (the oscillation
+  // of the compressive edge singularity) and penetration; deciding by the larger relative
+  // violation sent the zone to c = 0.156 a. Penetration must decide.
+  TEST(Contact, PenetrationDecidesWhenBothConditionsFail)
+  {
+    const Problem p = die_problem(1e-6, "iterate", 12);
+    const ContactResult r = solve_contact(p, p.rfm, ContactOptions{});
+    ASSERT_TRUE(r.success) << r.message;
+    EXPECT_TRUE(r.final.conditions_hold());
+    EXPECT_GT(r.final.half_width / 0.2, 0.49);
+    EXPECT_LT(r.final.half_width / 0.2, 0.56);
+  }
 } // namespace rfm
