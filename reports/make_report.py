@@ -46,12 +46,22 @@ def save(fig, out_dir, name):
     return f"figures/{name}"
 
 
+def decorate(ax, xlabel, ylabel, title=None, legend_size=8):
+    """Axis labels (with units), optional title, light grid and legend: every figure alike."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    if title:
+        ax.set_title(title)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=legend_size)
+
+
 def degrees_of(case):
     rows = sorted(case["degrees"].values(), key=lambda d: d["degree"])
     return rows
 
 
-def lame_section(lame, out_dir):
+def lame_section(lame, cmp, out_dir):
     md = ["## 1. Lame cylinder: RFM against the exact solution", ""]
     md.append("Hollow cylinder under inner/outer pressure with free ends; exact solution "
               "`verification/lame_exact.h` (DESIGN.md section 4.1). RFM on the half section "
@@ -114,11 +124,7 @@ def lame_section(lame, out_dir):
         r_exact = p
     ax.plot(np.array(r_exact["r"])[::4] * 1e3, np.array(r_exact["sigma_rr_exact"])[::4] / 1e6, "ko",
             ms=4, label="exact (Lame)")
-    ax.set_xlabel("radius r [mm]")
-    ax.set_ylabel("radial stress sigma_rr at z = 0 [MPa]")
-    ax.set_title("Fig. 1 analog: sigma_rr(r) converging to the Lame solution")
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=8)
+    decorate(ax, "radius r [mm]", "radial stress sigma_rr at z = 0 [MPa]", "Fig. 1 analog: sigma_rr(r) converging to the Lame solution")
     f1 = save(fig, out_dir, "lame_fig1_sigma_rr.png")
 
     # Convergence in N.
@@ -127,17 +133,13 @@ def lame_section(lame, out_dir):
         rows = degrees_of(case)
         ax.semilogy([r["N"] for r in rows], [r["stress_l2_relative"] for r in rows], "o-", ms=3,
                     label=f"RFM {name}")
-    fem = case_fem_lame(out_dir)
+    fem = fem_lame_rows(cmp)
     if fem:
         for deg, rows in fem.items():
             ax.semilogy([r["dofs"] for r in rows], [r["stress_l2_relative"] for r in rows], "s--",
                         ms=3, label=f"FEM Q{deg} (paper case), vs DoFs")
         ax.set_xscale("log")
-    ax.set_xlabel("N (coordinate functions per component); FEM: DoFs")
-    ax.set_ylabel("relative L2 stress error [-]")
-    ax.set_title("Lame cylinder: stress error")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
+    decorate(ax, "N (coordinate functions per component); FEM: DoFs", "relative L2 stress error [-]", "Lame cylinder: stress error")
     f2 = save(fig, out_dir, "lame_convergence.png")
 
     # A-posteriori indicator against the true energy error.
@@ -148,11 +150,7 @@ def lame_section(lame, out_dir):
                   ms=3, label=name)
     lims = [1e-16, 1]
     ax.loglog(lims, lims, "k:", lw=1, label="indicator = error")
-    ax.set_xlabel("true energy error |Phi_R - Phi_exact| / |Phi_exact| [-]")
-    ax.set_ylabel("indicator |Phi_L - Phi_C| / |Phi_R| [-]")
-    ax.set_title("A-posteriori estimate against the true error")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
+    decorate(ax, "true energy error |Phi_R - Phi_exact| / |Phi_exact| [-]", "indicator |Phi_L - Phi_C| / |Phi_R| [-]", "A-posteriori estimate against the true error")
     f3 = save(fig, out_dir, "lame_indicator.png")
 
     # Timings.
@@ -167,11 +165,7 @@ def lame_section(lame, out_dir):
             k, c = np.polyfit(np.log(n[ok]), np.log(t[ok]), 1)
             ax.loglog(n[ok], np.exp(c) * n[ok] ** k, "k:", lw=1)
             ax.annotate(f"slope {k:.2f}", (n[ok][-1], t[ok][-1]), fontsize=8)
-    ax.set_xlabel("N (coordinate functions per component)")
-    ax.set_ylabel("wall time [s]")
-    ax.set_title("RFM time against N (paper cylinder, 1 thread)")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
+    decorate(ax, "N (coordinate functions per component)", "wall time [s]", "RFM time against N (paper cylinder, 1 thread)")
     f4 = save(fig, out_dir, "lame_timing.png")
 
     # Stresses along the end z = a.
@@ -180,11 +174,7 @@ def lame_section(lame, out_dir):
     for key in ("sigma_rr", "sigma_zz", "sigma_tt", "sigma_rz"):
         ax.plot(np.array(end["r"]) * 1e3, np.array(end[key]) / 1e6, label=f"RFM {key}, N = 64")
         ax.plot(np.array(end["r"])[::5] * 1e3, np.array(end[key + "_exact"])[::5] / 1e6, "k.", ms=3)
-    ax.set_xlabel("radius r [mm]")
-    ax.set_ylabel("stress at the free end z = a [MPa]")
-    ax.set_title("Stresses along the end (dots: exact)")
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=8)
+    decorate(ax, "radius r [mm]", "stress at the free end z = a [MPa]", "Stresses along the end (dots: exact)")
     f5 = save(fig, out_dir, "lame_end_stresses.png")
 
     md += [f"![Fig. 1 analog]({f1})", "", f"![convergence]({f2})", "", f"![indicator]({f3})", "",
@@ -264,11 +254,7 @@ def die_section(die, out_dir):
         ax.plot(np.array(pj["z"]) / a, np.array(pj["p"]) / 1e6,
                 label=f"{pj['phase']} {i}: c = {pj['half_width']/a:.3f} a")
     ax.axhline(0, color="k", lw=0.8)
-    ax.set_xlabel("z / a [-]")
-    ax.set_ylabel("contact pressure p = -sigma_rr(R2, z) [MPa]")
-    ax.set_title("Fig. 3 analog: contact pressure per iteration (RFM)")
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
+    decorate(ax, "z / a [-]", "contact pressure p = -sigma_rr(R2, z) [MPa]", "Fig. 3 analog: contact pressure per iteration (RFM)", legend_size=7)
     f1 = save(fig, out_dir, "die_fig3_pressure.png")
 
     # P(c).
@@ -286,11 +272,7 @@ def die_section(die, out_dir):
     ax.plot([mf["half_width_ratio"]], [mf["force"] / 1e3], "r*", ms=10,
             label=f"max-force: c = {mf['half_width_ratio']:.3f} a, P = {mf['force']/1e3:.1f} kN")
     ax.plot([0.543], [195.2], "kx", ms=8, label="paper: 0.543 a, 195.2 kN")
-    ax.set_xlabel("contact half-width c / a [-]")
-    ax.set_ylabel("contact force P [kN]")
-    ax.set_title("P(c) of the bilateral problem (p = 12, N = 169)")
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
+    decorate(ax, "contact half-width c / a [-]", "contact force P [kN]", "P(c) of the bilateral problem (p = 12, N = 169)", legend_size=7)
     f2 = save(fig, out_dir, "die_force_curve.png")
 
     # c and P against N.
@@ -300,8 +282,8 @@ def die_section(die, out_dir):
                       key=lambda r: r["N"])
         axs[0].plot([r["N"] for r in rows], [r["final"]["half_width_ratio"] for r in rows], mk, ms=4, label=method)
         axs[1].plot([r["N"] for r in rows], [r["final"]["force"] / 1e3 for r in rows], mk, ms=4, label=method)
-    axs[0].set_xlabel("N"); axs[0].set_ylabel("c / a [-]"); axs[0].grid(True, alpha=0.3); axs[0].legend(fontsize=8)
-    axs[1].set_xlabel("N"); axs[1].set_ylabel("P [kN]"); axs[1].grid(True, alpha=0.3); axs[1].legend(fontsize=8)
+    decorate(axs[0], "N", "c / a [-]")
+    decorate(axs[1], "N", "P [kN]")
     fig.suptitle("Contact half-width and force against N (RFM)")
     f3 = save(fig, out_dir, "die_convergence.png")
 
@@ -311,11 +293,7 @@ def die_section(die, out_dir):
         s = die["sigma_rr_mid"]
         fig, ax = plt.subplots(figsize=(6.4, 4.4))
         ax.plot(np.array(s["r"]) * 1e3, np.array(s["sigma_rr"]) / 1e6, label=f"RFM, p = {s['degree']}")
-        ax.set_xlabel("radius r [mm]")
-        ax.set_ylabel("sigma_rr at z = 0 [MPa]")
-        ax.set_title("Radial stress through the thickness at z = 0 (converged zone)")
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=8)
+        decorate(ax, "radius r [mm]", "sigma_rr at z = 0 [MPa]", "Radial stress through the thickness at z = 0 (converged zone)")
         f4 = save(fig, out_dir, "die_sigma_rr_mid.png")
     md += [f"![Fig. 3 analog]({f1})", "", f"![P(c)]({f2})", "", f"![c and P against N]({f3})", ""]
     if f4:
@@ -358,10 +336,8 @@ def comparison_section(cmp, die, out_dir):
     rows = lame["rfm"]
     axs[0].loglog([r["unknowns"] for r in rows], [r["stress_l2_relative"] for r in rows], "o-", ms=4, label="RFM (6N unknowns)")
     axs[1].loglog([max(r["seconds"], 1e-5) for r in rows], [r["stress_l2_relative"] for r in rows], "o-", ms=4, label="RFM")
-    axs[0].set_xlabel("unknowns (FEM: DoFs; RFM: 6N)"); axs[0].set_ylabel("relative L2 stress error [-]")
-    axs[1].set_xlabel("wall time [s]"); axs[1].set_ylabel("relative L2 stress error [-]")
-    for ax in axs:
-        ax.grid(True, which="both", alpha=0.3); ax.legend(fontsize=8)
+    for ax, xlabel in zip(axs, ("unknowns (FEM: DoFs; RFM: 6N)", "wall time [s]")):
+        decorate(ax, xlabel, "relative L2 stress error [-]")
     fig.suptitle("Lame cylinder: RFM against FEM")
     f1 = save(fig, out_dir, "rfm_vs_fem_lame.png")
 
@@ -414,9 +390,7 @@ def comparison_section(cmp, die, out_dir):
         ax.axvline(ag["fem_half_width_ratio"], color="k", lw=1, ls=":", label=f"FEM unilateral c = {ag['fem_half_width_ratio']:.4f} a")
         ax.set_xlim(0.4, 0.75)
         ax.set_ylim(180, 194)
-        ax.set_xlabel("contact half-width c / a [-]"); ax.set_ylabel("contact force P [kN]")
-        ax.set_title("P(c) near its maximum: RFM and FEM")
-        ax.grid(True, alpha=0.3); ax.legend(fontsize=8)
+        decorate(ax, "contact half-width c / a [-]", "contact force P [kN]", "P(c) near its maximum: RFM and FEM")
         figs += [f"![P(c) RFM and FEM]({save(fig, out_dir, 'rfm_vs_fem_force_curve.png')})", ""]
     md += figs
     return md
@@ -451,15 +425,13 @@ def benchmark_section(bench, out_dir):
         if ok.sum() >= 2:
             k, c = np.polyfit(np.log(n[ok]), np.log(t[ok]), 1)
             ax.annotate(f"slope {k:.2f}", (n[ok][-1], t[ok][-1]), fontsize=7)
-    ax.set_xlabel("N (coordinate functions per component)"); ax.set_ylabel("time [s]")
-    ax.set_title("RFM assembly and solve against N")
-    ax.grid(True, which="both", alpha=0.3); ax.legend(fontsize=8)
+    decorate(ax, "N (coordinate functions per component)", "time [s]", "RFM assembly and solve against N")
     md += [f"![benchmarks]({save(fig, out_dir, 'benchmark_rfm.png')})", ""]
     return md
 
 
-def case_fem_lame(out_dir):
-    cmp = load(os.path.join(out_dir, "data"), "rfm_vs_fem.json")
+def fem_lame_rows(cmp):
+    """FEM Lame runs of the comparison driver, grouped by element degree (None without it)."""
     if not cmp:
         return None
     out = {}
@@ -498,11 +470,11 @@ def main():
             md.append(f"* driver `{d['driver']}` in mode `{d['mode']}`; the problem files it read are "
                       "echoed in `reports/data/*.json`")
     md.append("")
+    cmp = load(args.data, "rfm_vs_fem.json")
     if lame:
-        md += lame_section(lame, args.out)
+        md += lame_section(lame, cmp, args.out)
     if die:
         md += die_section(die, args.out)
-    cmp = load(args.data, "rfm_vs_fem.json")
     if cmp:
         md += comparison_section(cmp, die, args.out)
     bench = load(args.data, "benchmark_rfm.json")
