@@ -150,6 +150,9 @@ namespace fem
     /// r-weighted L2 norms over the full body (per radian), when an exact stress is given:
     /// ||s_h - s|| and ||s||, s = (rr, zz, tt, rz) with the Euclidean norm.
     std::optional<double> stress_l2_error, stress_l2_norm;
+    /// max |s_h - s| and max |s| over the components and the Gauss-Lobatto points of
+    /// every cell (p + 2 per direction, so cell and domain boundaries are included).
+    std::optional<double> stress_max_error, stress_max_norm;
     double assembly_seconds = 0, solve_seconds = 0, total_seconds = 0;
   };
 

@@ -122,7 +122,7 @@ int main(int argc, char **argv)
       study["problem"] = problem.source;
       study["degree"] = base.degree;
       study["levels"] = nlohmann::json::array();
-      std::vector<double> level_col, cells, dofs, seconds, force, trace, ratio, ratio_gap, error,
+      std::vector<double> level_col, cells, dofs, seconds, force, trace, ratio, ratio_gap, error, max_error,
         energy_error,
         lagrange, iterations;
       bool failed = false;
@@ -155,6 +155,8 @@ int main(int argc, char **argv)
               const double u = -exact->strain_energy();
               energy_error.push_back(std::abs(r.functionals.lagrange - u) / std::abs(u));
               row["stress_l2_relative_error"] = error.back();
+              max_error.push_back(*r.stress_max_error / *r.stress_max_norm);
+              row["stress_max_relative_error"] = max_error.back();
               row["lagrange_relative_error"] = energy_error.back();
             }
           if (r.contact)
@@ -182,6 +184,7 @@ int main(int argc, char **argv)
       if (exact)
         {
           cols.push_back({"|s-s_h|/|s|", error, 3, true, true});
+          cols.push_back({"max|s-s_h|/max|s|", max_error, 3, true, true});
           cols.push_back({"|Phi_L+U|/U", energy_error, 3, true, true});
           cols.push_back({"Phi_L [J/rad]", lagrange, 8, true, false});
         }

@@ -40,6 +40,11 @@ namespace fem
         j["diagnostics"]["stress_l2_error"] = *r.stress_l2_error;
         j["diagnostics"]["stress_l2_norm"] = *r.stress_l2_norm;
       }
+    if (r.stress_max_error)
+      {
+        j["diagnostics"]["stress_max_error"] = *r.stress_max_error;
+        j["diagnostics"]["stress_max_norm"] = *r.stress_max_norm;
+      }
     j["timing"] = {{"assembly_s", r.assembly_seconds},
                    {"solve_s", r.solve_seconds},
                    {"total_s", r.total_seconds}};

@@ -1,11 +1,13 @@
 // rfm_vs_fem: the RFM solver against the deal.II FEM reference on the same problem files.
 //
 //   1. Lame cylinder (paper case): FEM Q1 and Q2 under refinement and RFM over p, both
-//      against the exact solution: relative L2 stress error vs DoFs / N, wall times, and
-//      the time each method needs to reach a stress error of 1e-2, 1e-3 and 1e-4.
+//      against the exact solution: relative L2 and max stress errors vs DoFs / N, the FEM's
+//      observed orders, wall times, and the time each method needs to reach an L2 stress
+//      error of 1e-2, 1e-3 and 1e-4.
 //   2. Die contact: iteration 0 (c = a) and the unilateral problem (c, P) from both
 //      methods; the FEM's P(c) at a few fixed zones beside the RFM's; the time each
-//      method needs to reach 1 % and 0.1 % on P against the finest FEM solution.
+//      method needs to reach 1 % and 0.1 % on P against the finest FEM solution; the
+//      contact pressure p(z) and sigma_rr(r, 0) of the finest FEM and the largest RFM p.
 //   3. The tolerance gate (verification/tolerances.json, entry "rfm_vs_fem").
 //
 // Sample run:
@@ -85,11 +87,12 @@ int main(int argc, char **argv)
             if (!r.success)
               throw std::runtime_error("FEM failed: " + r.message);
             const double err = *r.stress_l2_error / *r.stress_l2_norm;
-            fmt::print("FEM Q{} L={} dofs={:>7} L2 err={:.3e} time={:.3f} s\n", degree, level,
-                       r.n_dofs, err, t);
+            const double err_max = *r.stress_max_error / *r.stress_max_norm;
+            fmt::print("FEM Q{} L={} dofs={:>7} L2 err={:.3e} max err={:.3e} time={:.3f} s\n",
+                       degree, level, r.n_dofs, err, err_max, t);
             fem_runs.push_back({{"degree", degree}, {"refinements", level}, {"dofs", r.n_dofs},
-                                {"stress_l2_relative", err}, {"seconds", t},
-                                {"reissner", r.functionals.reissner}});
+                                {"stress_l2_relative", err}, {"stress_max_relative", err_max},
+                                {"seconds", t}, {"reissner", r.functionals.reissner}});
           }
       for (int p = 0; p <= 14; ++p)
         {
@@ -100,13 +103,26 @@ int main(int argc, char **argv)
           const auto t0 = std::chrono::steady_clock::now();
           const rfm::RfmModel m(lame, o, std::nullopt, so);
           const double t = seconds_since(t0);
-          const double err = verification::stress_errors(m, exact).first;
-          fmt::print("RFM p={:>2} N={:>3} unknowns={:>5} L2 err={:.3e} time={:.4f} s\n", p,
-                     (p + 1) * (p + 1), 6 * (p + 1) * (p + 1), err, t);
+          const auto [err, err_max] = verification::stress_errors(m, exact);
+          fmt::print("RFM p={:>2} N={:>3} unknowns={:>5} L2 err={:.3e} max err={:.3e} time={:.4f} s\n",
+                     p, (p + 1) * (p + 1), 6 * (p + 1) * (p + 1), err, err_max, t);
           rfm_runs.push_back({{"degree", p}, {"N", (p + 1) * (p + 1)}, {"unknowns", 6 * (p + 1) * (p + 1)},
-                              {"stress_l2_relative", err}, {"seconds", t}});
+                              {"stress_l2_relative", err}, {"stress_max_relative", err_max},
+                              {"seconds", t}});
         }
       results["lame"] = {{"fem", fem_runs}, {"rfm", rfm_runs}};
+      // Observed FEM orders at the last refinement (h halves): the reference must show its
+      // nominal order p in both norms before it can arbitrate anything.
+      for (const int degree : {1, 2})
+        for (const char *norm : {"stress_l2_relative", "stress_max_relative"})
+          {
+            std::vector<double> e;
+            for (const auto &r : fem_runs)
+              if (r["degree"] == degree)
+                e.push_back(r[norm].get<double>());
+            results["lame"]["fem_observed_order"][fmt::format("q{}_{}", degree, norm)] =
+              std::log2(e[e.size() - 2] / e.back());
+          }
       for (const double target : {1e-2, 1e-3, 1e-4})
         {
           const double tf = time_to(fem_runs, "stress_l2_relative", target);
@@ -149,10 +165,20 @@ int main(int argc, char **argv)
       // 2b. The unilateral problem: FEM under refinement, RFM over p.
       nlohmann::json fem_die = nlohmann::json::array(), rfm_die = nlohmann::json::array();
       const int fem_levels = full ? 5 : 4;
+      // Radii of the sigma_rr(r, 0) profiles of both methods (report figure).
+      const double r1 = die.geometry.inner_radius, r2 = die.geometry.outer_radius;
+      const Eigen::VectorXd profile_r = Eigen::VectorXd::LinSpaced(81, r1, r2);
       for (int level = 0; level <= fem_levels; ++level)
         {
           rfm::Problem d = die;
           d.contact.method = "iterate";
+          const bool finest = level == fem_levels;
+          if (finest) // sigma_rr through the thickness at z = 0 (timed with the solve)
+            {
+              d.samples.clear();
+              for (const double r : profile_r)
+                d.samples.push_back({r, 0.0});
+            }
           fem::FemOptions o = fem::options_from_problem(d);
           o.refinements = level;
           o.progress = false;
@@ -166,10 +192,30 @@ int main(int argc, char **argv)
           fem_die.push_back({{"refinements", level}, {"dofs", fr.n_dofs},
                              {"half_width_ratio", fr.contact->half_width / a},
                              {"force", fr.contact->force}, {"seconds", t}});
+          if (finest)
+            {
+              // Penalty pressure kappa (u_r - u_r*)_+ and the -sigma_rr trace along r = R2.
+              nlohmann::json &prof = results["die"]["profiles"]["fem"];
+              prof["refinements"] = level;
+              prof["half_width_ratio"] = fr.contact->half_width / a;
+              for (const fem::PressurePoint &pp : fr.contact->pressure)
+                {
+                  prof["pressure"]["z_ratio"].push_back(pp.z / a);
+                  prof["pressure"]["p_pa"].push_back(pp.p);
+                  prof["pressure"]["p_trace_pa"].push_back(pp.p_trace);
+                }
+              for (const fem::FieldSample &fs : fr.samples)
+                {
+                  prof["sigma_rr_z0"]["r_m"].push_back(fs.r);
+                  prof["sigma_rr_z0"]["sigma_rr_pa"].push_back(fs.sigma[0]);
+                }
+            }
         }
       const double p_ref = fem_die.back()["force"].get<double>();
       const double c_ref = fem_die.back()["half_width_ratio"].get<double>();
-      for (const int p : full ? std::vector<int>{4, 6, 8, 10, 12, 14, 16} : std::vector<int>{6, 8, 10, 14})
+      const std::vector<int> rfm_degrees =
+        full ? std::vector<int>{4, 6, 8, 10, 12, 14, 16} : std::vector<int>{6, 8, 10, 14};
+      for (const int p : rfm_degrees)
         for (const std::string method : {"iterate", "max-force"})
           {
             rfm::Problem d = die;
@@ -190,6 +236,25 @@ int main(int argc, char **argv)
               j["half_width_range_ratio"] = {r.half_width_range->first / a,
                                              r.half_width_range->second / a};
             rfm_die.push_back(j);
+            if (p == rfm_degrees.back())
+              {
+                // p(z) = -sigma_rr(R2, z) on [0, c] and sigma_rr(r, 0) at the accepted c.
+                nlohmann::json &prof = results["die"]["profiles"][method];
+                prof["degree"] = p;
+                prof["half_width_ratio"] = r.final.half_width / a;
+                for (const auto &[z, pz] : rfm::contact_pressure(*r.model, r.final.half_width, 201))
+                  {
+                    prof["pressure"]["z_ratio"].push_back(z / a);
+                    prof["pressure"]["p_pa"].push_back(pz);
+                  }
+                const rfm::FieldValues f =
+                  r.model->evaluate(profile_r, Eigen::VectorXd::Zero(profile_r.size()));
+                for (Eigen::Index k = 0; k < profile_r.size(); ++k)
+                  {
+                    prof["sigma_rr_z0"]["r_m"].push_back(profile_r[k]);
+                    prof["sigma_rr_z0"]["sigma_rr_pa"].push_back(f.sigma(k, rfm::rr));
+                  }
+              }
           }
       for (auto &f : fem_die)
         f["force_error_vs_finest"] = std::abs(f["force"].get<double>() - p_ref) / p_ref;
