@@ -326,6 +326,11 @@ def comparison_section(cmp, die, out_dir):
               "(fem_reference/README.md). Times are wall-clock seconds on this machine, 1 thread, and include "
               "meshing, assembly and solve (RFM: assembly and solve; no eigenvalue diagnostics).")
     md.append("")
+    if "configuration" in cmp:
+        cfg = cmp["configuration"]
+        md.append(f"Resolved configuration: problems `{cfg['lame_problem_file']}` and `{cfg['die_problem_file']}`; "
+                  f"FEM `{json.dumps(cfg['fem'])}`; RFM `{json.dumps(cfg['rfm'])}`.")
+        md.append("")
     lame = cmp["lame"]
     md.append("### 3.1 Lame cylinder (paper case): error against unknowns and time")
     md.append("")
@@ -608,12 +613,12 @@ def main():
         md.append(f"* {k}: `{v}`")
     md.append(f"* machine: `{platform.machine()}`, {os.cpu_count()} cores; Python {platform.python_version()}, "
               f"numpy {np.__version__}, matplotlib {matplotlib.__version__}")
-    for d in (lame, die):
+    cmp = load(args.data, "rfm_vs_fem.json")
+    for d in (lame, die, cmp):
         if d:
             md.append(f"* driver `{d['driver']}` in mode `{d['mode']}`; the problem files it read are "
                       "echoed in `reports/data/*.json`")
     md.append("")
-    cmp = load(args.data, "rfm_vs_fem.json")
     if lame:
         md += lame_section(lame, cmp, args.out)
     if die:

@@ -168,6 +168,26 @@ int main(int argc, char **argv)
         rfm::read_problem_file(source_dir + "/verification/problems/die_paper.json");
       const double a = die.geometry.half_length();
       fmt::print("\n== Die contact ==\n");
+      // The resolved configuration: the problem files as read and the FEM options they give.
+      {
+        const fem::FemOptions o = fem::options_from_problem(die);
+        results["configuration"] = {
+          {"lame_problem_file", "verification/problems/lame_paper.json"},
+          {"lame_problem", lame.source},
+          {"die_problem_file", "verification/problems/die_paper.json"},
+          {"die_problem", die.source},
+          {"fem", {{"mesh", "gmsh"},
+                   {"base_cells", {o.base_cells_r, o.base_cells_z}},
+                   {"grading", {o.radial_grading, o.axial_grading}},
+                   {"linear_solver", "umfpack"},
+                   {"penalty_factor", o.penalty_factor},
+                   {"edge_fitting_passes", o.edge_fitting_passes},
+                   {"contact_points_per_face", "p + 1 (Gauss-Lobatto)"}}},
+          {"rfm", {{"extra_gauss_points", die.rfm.extra_gauss_points},
+                   {"n_graded_layers", die.rfm.n_graded_layers},
+                   {"grading_ratio", die.rfm.grading_ratio},
+                   {"contact_options", "defaults of rfm::ContactOptions (60 solves, tolerance 5e-4 a, 2001 check points)"}}}};
+      }
       // 2a. Iteration 0, both methods.
       {
         rfm::Problem d0 = die;
