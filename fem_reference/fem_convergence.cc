@@ -149,7 +149,7 @@ int main(int argc, char **argv)
                                 {"castigliano", r.functionals.castigliano},
                                 {"reissner", r.functionals.reissner},
                                 {"seconds", r.total_seconds}};
-          if (exact)
+          if (exact && r.success)
             {
               error.push_back(*r.stress_l2_error / *r.stress_l2_norm);
               const double u = -exact->strain_energy();
