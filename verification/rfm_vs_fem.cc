@@ -171,6 +171,7 @@ int main(int argc, char **argv)
       // The resolved configuration: the problem files as read and the FEM options they give.
       {
         const fem::FemOptions o = fem::options_from_problem(die);
+        const rfm::ContactOptions co; // what solve_contact is called with below
         results["configuration"] = {
           {"lame_problem_file", "verification/problems/lame_paper.json"},
           {"lame_problem", lame.source},
@@ -187,10 +188,10 @@ int main(int argc, char **argv)
           {"rfm", {{"extra_gauss_points", die.rfm.extra_gauss_points},
                    {"n_graded_layers", die.rfm.n_graded_layers},
                    {"grading_ratio", die.rfm.grading_ratio},
-                   {"contact_options", {{"max_iterations", rfm::ContactOptions{}.max_iterations},
-                                        {"tolerance", rfm::ContactOptions{}.tolerance},
-                                        {"n_check_points", rfm::ContactOptions{}.n_check_points},
-                                        {"violation_tolerance", rfm::ContactOptions{}.violation_tolerance}}}}}};
+                   {"contact_options", {{"max_iterations", co.max_iterations},
+                                        {"tolerance", co.tolerance},
+                                        {"n_check_points", co.n_check_points},
+                                        {"violation_tolerance", co.violation_tolerance}}}}}};
       }
       // 2a. Iteration 0, both methods.
       {
