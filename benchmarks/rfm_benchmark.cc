@@ -33,7 +33,7 @@ namespace
     const rfm::Problem problem = make_problem(die);
     rfm::DiscretizationOptions o;
     o.degree = static_cast<int>(state.range(0));
-    const rfm::DiscreteSpace space(rfm::Structures(rfm::build_section(problem, zone(problem))), o);
+    const rfm::DiscreteSpace space(rfm::Structures(rfm::build_section(problem, zone(problem))), o, problem.material);
     const double n = static_cast<double>(space.n_basis_functions());
     const double n_q = static_cast<double>(space.quadrature().n_points());
     for (auto _ : state)
@@ -50,7 +50,7 @@ namespace
     const rfm::Problem problem = make_problem(die);
     rfm::DiscretizationOptions o;
     o.degree = static_cast<int>(state.range(0));
-    const rfm::DiscreteSpace space(rfm::Structures(rfm::build_section(problem, zone(problem))), o);
+    const rfm::DiscreteSpace space(rfm::Structures(rfm::build_section(problem, zone(problem))), o, problem.material);
     const rfm::ReissnerSystem system = rfm::assemble_reissner_system(space, problem.material);
     rfm::SolverOptions so;
     so.compute_diagnostics = false;

@@ -17,6 +17,126 @@ namespace rfm
     return v;
   }
 
+  AllColumns all_columns(const DiscreteSpace &space, const BasisValues &b,
+                         const StressStructureValues &s, const DisplacementStructureValues &d,
+                         const EdgeColumns *edge, const Eigen::Ref<const Eigen::VectorXd> &r)
+  {
+    const Eigen::Index n = space.n_basis_functions(), n_e = edge ? edge->stress[0].cols() : 0;
+    const Eigen::Index n_p = r.size();
+    AllColumns a;
+    for (int c = 0; c < n_stress_components; ++c)
+      {
+        a.stress[c].setZero(n_p, 4 * n + n_e);
+        a.stress[c].middleCols(c * n, n) = s.omega.col(c).asDiagonal() * b.value;
+        if (n_e > 0)
+          a.stress[c].rightCols(n_e) = edge->stress[c];
+        a.strain[c].setZero(n_p, 2 * n + n_e);
+        if (n_e > 0)
+          a.strain[c].rightCols(n_e) = edge->strain[c];
+      }
+    for (int m = 0; m < 2; ++m)
+      a.u[m].setZero(n_p, 2 * n + n_e);
+    const DisplacementBasisValues v = displacement_basis(b, d);
+    a.u[0].middleCols(0, n) = v.value[0];
+    a.u[1].middleCols(n, n) = v.value[1];
+    if (n_e > 0)
+      a.u[0].rightCols(n_e) = edge->u[0], a.u[1].rightCols(n_e) = edge->u[1];
+    a.strain[rr].middleCols(0, n) = v.d_r[0];
+    a.strain[tt].middleCols(0, n) = r.cwiseInverse().asDiagonal() * v.value[0];
+    a.strain[rz].middleCols(0, n) = v.d_z[0];
+    a.strain[zz].middleCols(n, n) = v.d_z[1];
+    a.strain[rz].middleCols(n, n) = v.d_r[1];
+    return a;
+  }
+
+  namespace
+  {
+    // The products with the enrichment columns, on the near-edge rule: the borders of
+    // R11 and R12 and the enrichment rows of p_s and p_u. The polynomial-polynomial blocks
+    // (tensor rule) are not touched.
+    void add_edge_terms(const DiscreteSpace &space, const Material &material, ReissnerSystem &sys)
+    {
+      const Eigen::Index n = space.n_basis_functions(), n_e = space.n_edge_columns();
+      const Eigen::Index n_s = sys.r11.rows(), n_u = sys.r12.cols();
+      const Eigen::Matrix4d c = material.compliance();
+      const Quadrature2D &q = space.edge_quadrature();
+      const Eigen::VectorXd &mu = space.edge_measure();
+      const StressStructureValues &s = space.edge_stress_structure();
+      const DisplacementStructureValues &d = space.edge_displacement_structure();
+      const AllColumns a = all_columns(space, space.edge_basis_values(), s, d,
+                                       &space.edge_columns(), q.r);
+
+      // C X_e for the enrichment stress columns (n_points x n_e per component), weighted.
+      Eigen::MatrixXd cx[n_stress_components];
+      for (int k = 0; k < n_stress_components; ++k)
+        {
+          cx[k].setZero(q.n_points(), n_e);
+          for (int l = 0; l < n_stress_components; ++l)
+            if (c(k, l) != 0.0)
+              cx[k] += c(k, l) * a.stress[l].rightCols(n_e);
+          cx[k] = mu.asDiagonal() * cx[k];
+        }
+      // 1. R11 border: - int X_all . C X_e, mirrored.
+      Eigen::MatrixXd border = Eigen::MatrixXd::Zero(n_s, n_e);
+      for (int k = 0; k < n_stress_components; ++k)
+        border.noalias() -= a.stress[k].transpose() * cx[k];
+      sys.r11.rightCols(n_e) = border;
+      sys.r11.bottomRows(n_e) = border.transpose();
+
+      // 2. R12 borders: int X_all . e(Phi_e) and int X_e . e(Phi_poly).
+      Eigen::MatrixXd wx_e[n_stress_components];
+      for (int k = 0; k < n_stress_components; ++k)
+        wx_e[k] = mu.asDiagonal() * a.stress[k].rightCols(n_e);
+      Eigen::MatrixXd col_border = Eigen::MatrixXd::Zero(n_s, n_e);
+      Eigen::MatrixXd row_border = Eigen::MatrixXd::Zero(n_e, 2 * n);
+      for (int k = 0; k < n_stress_components; ++k)
+        {
+          col_border.noalias() +=
+            a.stress[k].transpose() * (mu.asDiagonal() * a.strain[k].rightCols(n_e));
+          row_border.noalias() += wx_e[k].transpose() * a.strain[k].leftCols(2 * n);
+        }
+      sys.r12.rightCols(n_e) = col_border;
+      sys.r12.bottomLeftCorner(n_e, 2 * n) = row_border;
+
+      // 3. p_s rows: int X_e . (e(u0) - C s0).
+      const Eigen::MatrixXd residual = initial_strain_residual(s, d, q.r, c);
+      for (int k = 0; k < n_stress_components; ++k)
+        sys.p_s.tail(n_e).noalias() += wx_e[k].transpose() * residual.col(k);
+
+      // 4. p_u rows: int s0 . e(Phi_e) - int_{S_t} t . Phi_e.
+      for (int k = 0; k < n_stress_components; ++k)
+        sys.p_u.tail(n_e).noalias() +=
+          a.strain[k].rightCols(n_e).transpose() * mu.cwiseProduct(s.s0.col(k));
+      const BoundaryQuadrature &bq = space.boundary_quadrature();
+      const auto &parts = space.structures().section().parts();
+      const EdgeColumns be = space.enrichment()->evaluate(bq.r, bq.z);
+      for (Eigen::Index k = 0; k < bq.weights.size(); ++k)
+        {
+          const BoundaryPart &part = parts[bq.part[k]];
+          if (part.condition != Condition::traction)
+            continue;
+          const double t_r = part.normal_stress * bq.n_r[k];
+          const double t_z = part.normal_stress * bq.n_z[k];
+          sys.p_u.tail(n_e) -=
+            bq.weights[k] * (t_r * be.u[0].row(k) + t_z * be.u[1].row(k)).transpose();
+        }
+      (void)n_u;
+    }
+  } // namespace
+
+  Eigen::MatrixXd initial_strain_residual(const StressStructureValues &s,
+                                          const DisplacementStructureValues &d,
+                                          const Eigen::Ref<const Eigen::VectorXd> &r,
+                                          const Eigen::Matrix4d &c)
+  {
+    Eigen::MatrixXd e0(r.size(), n_stress_components);
+    e0.col(rr) = d.u0_r.col(0);
+    e0.col(zz) = d.u0_z.col(1);
+    e0.col(tt) = d.u0.col(0).cwiseQuotient(r);
+    e0.col(rz) = d.u0_z.col(0) + d.u0_r.col(1);
+    return e0 - s.s0 * c.transpose(); // rows: (e0 - C s0)^T
+  }
+
   ReissnerSystem assemble_reissner_system(const DiscreteSpace &space, const Material &material)
   {
     const Eigen::Index n = space.n_basis_functions();
@@ -28,9 +148,10 @@ namespace rfm
     const DisplacementStructureValues &d = space.displacement_structure();
     const Eigen::Index n_q = mu.size();
 
+    const Eigen::Index n_s = space.n_stress_unknowns(), n_u = space.n_displacement_unknowns();
     ReissnerSystem sys;
-    sys.r11.setZero(4 * n, 4 * n);
-    sys.r12.setZero(4 * n, 2 * n);
+    sys.r11.setZero(n_s, n_s);
+    sys.r12.setZero(n_s, n_u);
 
     // Weighted stress bases: WX_c = diag(mu omega_c) B. Products with them give every block.
     Eigen::MatrixXd wx[n_stress_components];
@@ -60,22 +181,18 @@ namespace rfm
     sys.r12.block(rz * n, n, n, n).noalias() = wx[rz].transpose() * v.d_r[1];
 
     // 3. p_s = int X . (e(u0) - C s0).
-    Eigen::MatrixXd e0(n_q, n_stress_components);
-    e0.col(rr) = d.u0_r.col(0);
-    e0.col(zz) = d.u0_z.col(1);
-    e0.col(tt) = d.u0.col(0).cwiseProduct(inv_r);
-    e0.col(rz) = d.u0_z.col(0) + d.u0_r.col(1);
-    const Eigen::MatrixXd residual = e0 - s.s0 * c.transpose(); // rows: (e0 - C s0)^T
-    sys.p_s.resize(4 * n);
+    const Eigen::MatrixXd residual = initial_strain_residual(s, d, r, c);
+    sys.p_s.setZero(n_s);
     for (int k = 0; k < n_stress_components; ++k)
       sys.p_s.segment(k * n, n).noalias() = wx[k].transpose() * residual.col(k);
+    (void)n_q;
 
     // 4. p_u = int s0 . e(Phi) - int_{S_t} t . Phi.
     const Eigen::VectorXd m_rr = mu.cwiseProduct(s.s0.col(rr));
     const Eigen::VectorXd m_zz = mu.cwiseProduct(s.s0.col(zz));
     const Eigen::VectorXd m_tt = mu.cwiseProduct(s.s0.col(tt)).cwiseProduct(inv_r);
     const Eigen::VectorXd m_rz = mu.cwiseProduct(s.s0.col(rz));
-    sys.p_u.resize(2 * n);
+    sys.p_u.setZero(n_u);
     sys.p_u.segment(0, n).noalias() = v.d_r[0].transpose() * m_rr + v.value[0].transpose() * m_tt +
                                       v.d_z[0].transpose() * m_rz;
     sys.p_u.segment(n, n).noalias() = v.d_z[1].transpose() * m_zz + v.d_r[1].transpose() * m_rz;
@@ -95,6 +212,8 @@ namespace rfm
         sys.p_u.segment(0, n) -= (bq.weights[k] * t_r * bd.omega(k, 0)) * bb.value.row(k).transpose();
         sys.p_u.segment(n, n) -= (bq.weights[k] * t_z * bd.omega(k, 1)) * bb.value.row(k).transpose();
       }
+    if (space.n_edge_columns() > 0)
+      add_edge_terms(space, material, sys);
     return sys;
   }
 } // namespace rfm

@@ -24,12 +24,14 @@
 
 namespace rfm
 {
+  /// Sizes: n_s = 4N + n_e stress and n_u = 2N + n_e displacement unknowns
+  /// (DiscreteSpace: the enrichment columns last).
   struct ReissnerSystem
   {
-    Eigen::MatrixXd r11; ///< 4N x 4N
-    Eigen::MatrixXd r12; ///< 4N x 2N
-    Eigen::VectorXd p_s; ///< 4N
-    Eigen::VectorXd p_u; ///< 2N
+    Eigen::MatrixXd r11; ///< n_s x n_s
+    Eigen::MatrixXd r12; ///< n_s x n_u
+    Eigen::VectorXd p_s; ///< n_s
+    Eigen::VectorXd p_u; ///< n_u
   };
 
   ReissnerSystem assemble_reissner_system(const DiscreteSpace &space, const Material &material);
@@ -42,4 +44,22 @@ namespace rfm
   };
   DisplacementBasisValues displacement_basis(const BasisValues &b,
                                              const DisplacementStructureValues &d);
+
+  /// Every column of both spaces at points, as dense component matrices: stress[c] is
+  /// n_points x n_s (component c of every stress column), u[m] and strain[c] are
+  /// n_points x n_u. The polynomial columns are block-sparse here (zeros elsewhere): used
+  /// on the near-edge rule only, where all products with the enrichment are taken.
+  struct AllColumns
+  {
+    Eigen::MatrixXd stress[4], u[2], strain[4];
+  };
+  AllColumns all_columns(const DiscreteSpace &space, const BasisValues &b,
+                         const StressStructureValues &s, const DisplacementStructureValues &d,
+                         const EdgeColumns *edge, const Eigen::Ref<const Eigen::VectorXd> &r);
+
+  /// e(u0) - C s0 at points (n_points x 4): the data of p_s.
+  Eigen::MatrixXd initial_strain_residual(const StressStructureValues &s,
+                                          const DisplacementStructureValues &d,
+                                          const Eigen::Ref<const Eigen::VectorXd> &r,
+                                          const Eigen::Matrix4d &c);
 } // namespace rfm

@@ -15,7 +15,7 @@ namespace rfm
     {
       DiscretizationOptions o;
       o.degree = degree;
-      return DiscreteSpace(Structures(die_section()), o);
+      return DiscreteSpace(Structures(die_section()), o, Material{});
     }
   } // namespace
 
@@ -24,8 +24,9 @@ namespace rfm
     const DiscreteSpace space = make_space(3);
     const ReissnerSystem sys = assemble_reissner_system(space, Material{});
     const Eigen::Index n = space.n_basis_functions();
-    ASSERT_EQ(sys.r11.rows(), 4 * n);
-    ASSERT_EQ(sys.r12.cols(), 2 * n);
+    ASSERT_EQ(sys.r11.rows(), 4 * n + space.n_edge_columns());
+    ASSERT_EQ(space.n_edge_columns(), 2);
+    ASSERT_EQ(sys.r12.cols(), 2 * n + space.n_edge_columns());
     EXPECT_LT((sys.r11 - sys.r11.transpose()).cwiseAbs().maxCoeff(),
               1e-14 * sys.r11.cwiseAbs().maxCoeff());
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(sys.r11);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace rfm
@@ -36,6 +37,8 @@ namespace rfm
             {"half_width_ratio", it.half_width / a},
             {"force", it.force},
             {"force_trace", it.force_trace},
+            {"edge_intensity", std::isfinite(it.edge_intensity) ? nlohmann::json(it.edge_intensity)
+                                                                 : nlohmann::json(nullptr)},
             {"lagrange", it.lagrange},
             {"castigliano", it.castigliano},
             {"reissner", it.reissner},
@@ -62,6 +65,7 @@ namespace rfm
     const Functionals phi = model.solution().functionals();
     it.lagrange = phi.lagrange, it.castigliano = phi.castigliano, it.reissner = phi.reissner;
     it.assembly_s = model.assembly_seconds(), it.solve_s = model.solve_seconds();
+    it.edge_intensity = c < a ? model.edge_intensity() : std::numeric_limits<double>::quiet_NaN();
 
     // Grid on the outer side with c itself as a node.
     const int n = options.n_check_points;
@@ -176,7 +180,136 @@ namespace rfm
         return result;
       }
 
-    // 2. The paper's successive iterations, safeguarded by the bracket [lo, hi]:
+    // 2. The root of the edge intensity K(c).
+    if (problem.contact.method == "edge-intensity")
+      {
+        if (discretization.edge_modes < 1)
+          {
+            result.message = "contact.method edge-intensity needs the n = 1 edge mode "
+                             "(rfm.edge_modes >= 1)";
+            return result;
+          }
+        const double tol = options.root_tolerance * a;
+        int n_solves = 0;
+        auto solve_k = [&](const double c, const char *phase) {
+          ++n_solves;
+          if (!s.solve(c, it, phase))
+            return false;
+          if (!std::isfinite(it.edge_intensity))
+            {
+              result.message = "no edge intensity at c = " + std::to_string(c) + " m";
+              return false;
+            }
+          return true;
+        };
+        // 2a. Bracket: K < 0 at lo (too short), K > 0 at hi (too long). Secant steps,
+        //     each kept within a factor of the distance to the ends of (0, a).
+        double c0 = 0.5 * a;
+        if (!solve_k(c0, "bracket"))
+          return result;
+        double k0 = it.edge_intensity;
+        double c1 = k0 < 0 ? 0.6 * a : 0.4 * a;
+        if (!solve_k(c1, "bracket"))
+          return result;
+        double k1 = it.edge_intensity;
+        const double c_min = 0.01 * a, c_max = a * (1.0 - 0.01);
+        while ((k0 < 0) == (k1 < 0) && k1 != 0.0)
+          {
+            if (n_solves >= options.max_iterations)
+              {
+                result.message = "edge intensity: no sign change of K found in " +
+                                 std::to_string(n_solves) + " solves";
+                return result;
+              }
+            if (k1 < 0 && c1 >= c_max)
+              {
+                // K < 0 up to the end of the side: the zone reaches it (full contact) if
+                // the pressure is compressive there.
+                if (!s.solve(a, it, "final"))
+                  return result;
+                if (!it.tension)
+                  {
+                    result.success = true;
+                    result.message = "K(c) < 0 up to c = 0.99 a and no tension at c = a: full "
+                                     "contact";
+                    result.half_width_range = {a, a};
+                    return result;
+                  }
+                result.message = "edge intensity: the root of K(c) is not bracketed in (0, a] "
+                                 "(K < 0 up to 0.99 a, tension at c = a)";
+                return result;
+              }
+            if (k1 > 0 && c1 <= c_min)
+              {
+                result.message = "edge intensity: the root of K(c) is not bracketed in (0, a] "
+                                 "(K > 0 down to c = 0.01 a)";
+                return result;
+              }
+            double next = k1 != k0 ? c1 - k1 * (c1 - c0) / (k1 - k0) : c1;
+            if (k1 < 0)
+              next = std::clamp(next, c1 + 0.05 * (a - c1), c1 + 0.5 * (a - c1));
+            else
+              next = std::clamp(next, 0.5 * c1, c1 - 0.05 * c1);
+            next = std::clamp(next, c_min, c_max);
+            c0 = c1, k0 = k1, c1 = next;
+            if (!solve_k(c1, "bracket"))
+              return result;
+            k1 = it.edge_intensity;
+          }
+        double lo = k0 < 0 ? c0 : c1, k_lo = k0 < 0 ? k0 : k1;
+        double hi = k0 < 0 ? c1 : c0, k_hi = k0 < 0 ? k1 : k0;
+        double c = k1 == 0.0 ? c1 : 0.0;
+
+        // 2b. Illinois (regula falsi that halves the retained end's K when the same end
+        //     is kept twice): superlinear on the nearly linear K(c), never leaves the bracket.
+        int side = 0; // -1: the last step replaced lo, +1: it replaced hi
+        double c_prev = c1;
+        while (k1 != 0.0)
+          {
+            c = (lo * k_hi - hi * k_lo) / (k_hi - k_lo);
+            if (std::abs(c - c_prev) < tol || hi - lo < tol)
+              break;
+            if (n_solves >= options.max_iterations)
+              {
+                result.message = "edge intensity: the secant iteration did not converge in " +
+                                 std::to_string(n_solves) + " solves";
+                return result;
+              }
+            if (!solve_k(c, "secant"))
+              return result;
+            const double k = it.edge_intensity;
+            c_prev = c;
+            if (k == 0.0)
+              break;
+            if (k < 0)
+              {
+                lo = c, k_lo = k;
+                if (side == -1)
+                  k_hi *= 0.5;
+                side = -1;
+              }
+            else
+              {
+                hi = c, k_hi = k;
+                if (side == 1)
+                  k_lo *= 0.5;
+                side = 1;
+              }
+          }
+
+        // 2c. The answer: a final solve at the root, with the check of 1.2 and 1.3.
+        if (!s.solve(c, it, "final"))
+          return result;
+        result.half_width_range = {lo, hi};
+        result.success = true;
+        result.message = std::string("root of the edge intensity K(c) at c = ") +
+                         std::to_string(c / a) + " a (" + std::to_string(result.history.size()) +
+                         " solves); conditions 1.2 and 1.3 " +
+                         (it.conditions_hold() ? "hold there" : "are violated there beyond the tolerance");
+        return result;
+      }
+
+    // 3. The paper's successive iterations, safeguarded by the bracket [lo, hi]:
     //    lo is a zone known to be too short (penetration), hi one known too long (tension).
     if (problem.contact.method == "iterate")
       {
@@ -196,7 +329,12 @@ namespace rfm
             // pressure does: a too-long zone opens a gap beyond its edge. Tension together
             // with penetration is the oscillation of a compressive edge singularity that
             // the polynomial stresses cannot represent, not a sign of a too-long zone.
-            const bool too_long = it.tension && !it.penetration;
+            // With the edge modes, the sign of K tells a too-long zone (tensile edge) from a
+            // too-short one directly, and decides when both conditions fail (the violations
+            // of a nearly right zone are then both at the noise level).
+            const bool too_long = (it.tension && it.penetration && std::isfinite(it.edge_intensity))
+                                    ? it.edge_intensity > 0
+                                    : it.tension && !it.penetration;
             double proposal;
             if (too_long)
               hi = std::min(hi, c), proposal = it.first_tension_z;
@@ -253,7 +391,7 @@ namespace rfm
         return result;
       }
 
-    // 3. Barber's principle: golden-section maximization of P(c) on [0.05 a, a].
+    // 4. Barber's principle: golden-section maximization of P(c) on [0.05 a, a].
     const double g = 0.5 * (std::sqrt(5.0) - 1.0);
     double lo = 0.05 * a, hi = a;
     double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);

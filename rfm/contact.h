@@ -8,17 +8,28 @@
 //   * condition 1.3 violated: penetration u_r > u_r* outside the zone (c too short).
 // Both are checked on a fine grid of points along the outer side.
 //
-// Three ways to fix c (problem file: contact.method):
+// Four ways to fix c (problem file: contact.method):
+//   edge-intensity (default): the root of the edge intensity K(c) (DESIGN.md 4.4). The
+//              enriched bilateral solve at a trial c gives K = sqrt(2 pi) a_1 from the
+//              coefficient of the n = 1 edge mode: K < 0 when the zone is too short
+//              (compressive rho^-1/2 pressure at the edge), K > 0 when it is too long, and
+//              K changes sign linearly through the true c while P(c) is stationary there.
+//              From c = a/2 a secant step on K finds a bracket, the Illinois method closes
+//              it, and a final solve at the root checks conditions 1.2 and 1.3. If K < 0
+//              up to the end of the side, c = a (full contact) is accepted when it has no
+//              tension; otherwise the root is not bracketed in (0, a]: a numerical failure.
 //   fixed:     the given c (c = a is the paper's iteration 0); gives P(c).
 //   iterate:   the paper's successive iterations, from c = a: remove the points where the
 //              pressure is tensile (c <- first zero of p), add the points that penetrate
 //              (c <- end of the penetrating interval), until both conditions hold. When
-//              both are violated, penetration decides (the zone is too short). Each
+//              both are violated, the sign of K decides (with the edge modes), else
+//              penetration (the zone is too short). Each
 //              step is kept inside the bracket [too short, too long] found so far; a step
 //              that leaves it is replaced by a bisection step (the raw fixed-point
-//              iteration can overshoot and cycle). At finite N both conditions hold on
-//              an interval of c (the structures force p(c) = 0 and cannot represent the
-//              edge singularity that would flag a slightly wrong c); bisection then finds
+//              iteration can overshoot and cycle). At finite N both conditions may hold on
+//              an interval of c (without the edge modes the structures force p(c) = 0 and
+//              cannot represent the singularity that flags a slightly wrong c; with them the
+//              interval closes and the bracket ends at noise-level violations); bisection then finds
 //              both ends and c is the midpoint, the half-length its uncertainty.
 //   max-force: Barber's principle: the true zone maximizes P(c). Golden-section search
 //              on P(c), then conditions 1.2 and 1.3 checked at the maximizer. P(c) is flat
@@ -47,6 +58,8 @@ namespace rfm
     /// A violation counts when it exceeds this fraction of the peak pressure (1.2) or of
     /// the indentation delta (1.3): discretization noise below it is not a violation.
     double violation_tolerance = 1e-4;
+    /// edge-intensity: stop when a secant step moves c by less than this times a.
+    double root_tolerance = 1e-5;
   };
 
   /// One solve at a fixed c, with its check of conditions 1.2 and 1.3.
@@ -58,10 +71,12 @@ namespace rfm
     double peak_pressure = 0.0;   ///< max p inside the zone [Pa]
     double max_tension = 0.0;     ///< max(-p)+ inside the zone [Pa] (condition 1.2)
     double max_penetration = 0.0; ///< max(u_r - u_r*)+ outside the zone [m] (condition 1.3)
+    double edge_intensity = 0.0;  ///< K [Pa m^1/2] (NaN without the n = 1 edge mode)
     double first_tension_z = 0.0; ///< first zero of p where it turns tensile [m] (or c)
     double penetration_end_z = 0.0; ///< end of the penetrating interval beyond c [m] (or c)
     bool tension = false, penetration = false; ///< violations above the tolerances
-    std::string phase; ///< "fixed", "iteration", "refinement", "search" or "final"
+    /// "fixed", "iteration", "refinement", "search", "bracket", "secant" or "final"
+    std::string phase;
     double assembly_s = 0.0, solve_s = 0.0;
     bool conditions_hold() const { return !tension && !penetration; }
   };
@@ -73,7 +88,8 @@ namespace rfm
     std::string method;
     std::vector<ContactIterate> history; ///< every solve, in order
     ContactIterate final;                ///< the accepted iterate
-    /// iterate: the interval of c on which 1.2 and 1.3 hold at this N (c is its midpoint)
+    /// iterate: the interval of c on which 1.2 and 1.3 hold at this N (c is its midpoint);
+    /// edge-intensity: the last bracket of the root of K(c)
     std::optional<std::pair<double, double>> half_width_range;
     std::unique_ptr<RfmModel> model;     ///< the model at the accepted c
   };

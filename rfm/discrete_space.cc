@@ -25,6 +25,12 @@ namespace rfm
       fail("n_graded_layers", n_graded_layers, "an integer in [0, 40]");
     if (!(grading_ratio > 0.0 && grading_ratio < 1.0))
       fail("grading_ratio", grading_ratio, "in (0, 1)");
+    if (edge_modes < 0 || edge_modes > 4)
+      fail("edge_modes", edge_modes, "an integer in [0, 4]");
+    if (!(edge_cutoff > 0.0 && edge_cutoff < 1.0))
+      fail("edge_cutoff", edge_cutoff, "in (0, 1) (a fraction of min(c, a - c, R2 - R1))");
+    if (edge_extra_points < 0 || edge_extra_points > 40)
+      fail("edge_extra_points", edge_extra_points, "an integer in [0, 40]");
   }
 
   std::vector<double> section_cells(const double a, const double b, const int n_uniform,
@@ -45,8 +51,19 @@ namespace rfm
     return cells;
   }
 
+  std::vector<std::array<double, 2>> contact_edges(const Section &s)
+  {
+    std::vector<std::array<double, 2>> edges;
+    const double tol = 1e-12 * (s.z_max() - s.z_min());
+    for (const auto &p : s.parts())
+      if (p.side == Side::outer && p.condition == Condition::contact &&
+          p.end < s.z_max() - tol)
+        edges.push_back({s.r_max(), p.end});
+    return edges;
+  }
+
   DiscreteSpace::DiscreteSpace(const Structures &structures,
-                               const DiscretizationOptions &options)
+                               const DiscretizationOptions &options, const Material &material)
     : structures_(structures)
     , options_((options.validate(), options))
     , basis_(options.degree, structures.section().r_min(), structures.section().r_max(),
@@ -72,7 +89,35 @@ namespace rfm
     stress_ = structures_.stress(quadrature_.r, quadrature_.z);
     displacement_ = structures_.displacement(quadrature_.r, quadrature_.z);
 
-    // 2. Boundary quadrature on every part, on the same cells along the side.
+    // 2. Contact-edge enrichment and its near-edge rule (one edge at most: the half section
+    //    of a die problem has the zone [0, c] on its outer side).
+    const auto edges = contact_edges(s);
+    if (edges.size() > 1)
+      throw std::invalid_argument("DiscreteSpace: more than one contact edge is not supported");
+    std::vector<double> edge_z;
+    if (!edges.empty() && options_.edge_modes > 0)
+      {
+        const double r_e = edges[0][0], z_e = edges[0][1];
+        const double rho_max =
+          std::min({z_e - s.z_min(), s.z_max() - z_e, s.r_max() - s.r_min()});
+        std::vector<int> modes;
+        for (int k = 0; k < options_.edge_modes; ++k)
+          modes.push_back(2 * k + 1);
+
+        enrichment_.emplace(r_e, z_e, options_.edge_cutoff * rho_max, modes, material);
+        const int n_edge = n_gauss + options_.edge_extra_points;
+        edge_quadrature_ =
+          half_disc_gauss(r_e, z_e, enrichment_->cutoff_radius(), n_edge, n_edge);
+        edge_measure_ = weight_factor_ * edge_quadrature_.weights.cwiseProduct(edge_quadrature_.r);
+        edge_basis_values_ = basis_.evaluate(edge_quadrature_.r, edge_quadrature_.z);
+        edge_stress_ = structures_.stress(edge_quadrature_.r, edge_quadrature_.z);
+        edge_displacement_ = structures_.displacement(edge_quadrature_.r, edge_quadrature_.z);
+        edge_columns_ = enrichment_->evaluate(edge_quadrature_.r, edge_quadrature_.z);
+        edge_z.push_back(z_e);
+      }
+
+    // 3. Boundary quadrature on every part, on the same cells along the side; cells that
+    //    end at an enriched edge take the t^2 map (the traces behave like sqrt(|z - c|)).
     std::vector<double> rr, zz, ww, nr, nz;
     for (std::size_t i = 0; i < s.parts().size(); ++i)
       {
@@ -84,7 +129,7 @@ namespace rfm
           if (x > p.begin && x < p.end)
             cells.push_back(x);
         cells.push_back(p.end);
-        const GaussRule1D g = gauss_on_cells(cells, n_gauss);
+        const GaussRule1D g = gauss_on_cells(cells, n_gauss, radial ? edge_z : std::vector<double>{});
         for (Eigen::Index k = 0; k < g.nodes.size(); ++k)
           {
             double r = 0, z = 0, n_r = 0, n_z = 0;

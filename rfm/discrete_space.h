@@ -9,10 +9,15 @@
 #pragma once
 
 #include "rfm/basis.h"
+#include "rfm/edge_modes.h"
 #include "rfm/quadrature.h"
 #include "rfm/structures.h"
 
 #include <Eigen/Core>
+
+#include <array>
+#include <optional>
+#include <vector>
 
 namespace rfm
 {
@@ -24,6 +29,15 @@ namespace rfm
     int n_cells_z = 1;          ///< uniform cells in z before splitting at break points
     int n_graded_layers = 8;    ///< geometric layers toward each break point
     double grading_ratio = 0.35; ///< width ratio between successive graded layers
+    /// Contact-edge enrichment (edge_modes.h): the odd modes n = 1, 3, ..., 2 k - 1 for
+    /// k = edge_modes, added to both the stress and the displacement space at every
+    /// contact edge; 0 switches it off.
+    int edge_modes = 2;
+    /// Cutoff radius rho_0 as a fraction of the largest admissible one,
+    /// min(c - z_min, z_max - c, r_max - r_min) (the support must not reach another side).
+    double edge_cutoff = 0.9;
+    /// Gauss points per direction of the near-edge rule = p + extra_gauss_points + this.
+    int edge_extra_points = 6;
 
     /// Throws std::invalid_argument naming the field, the value and the rule.
     void validate() const;
@@ -37,10 +51,27 @@ namespace rfm
     std::vector<int> part;         ///< index into Section::parts()
   };
 
+  /// The edges where a contact part of the outer side ends inside it (the zone [.., c]
+  /// followed by a traction part): one (r_edge, z_edge) each.
+  std::vector<std::array<double, 2>> contact_edges(const Section &section);
+
+  /// Unknown layout: q_s = (q_rr, q_zz, q_tt, q_rz, q_edge), each q_c of size N and q_edge
+  /// one coefficient per enrichment column; q_u = (q_r, q_z, q_edge) likewise. The
+  /// enrichment columns are vector fields (chi times a mode), the polynomial ones carry one
+  /// component each (structures.h).
+  ///
+  /// Integrals: products of two polynomial columns with the tensor rule on the whole
+  /// section (`quadrature()`); every product with an enrichment column with the near-edge
+  /// rule on the half disc that supports it (`edge_quadrature()`), where the singular
+  /// products are polynomials in rho = rho_0 s^2. Post-processing integrates fields the
+  /// same way (a bilinear form of two fields: the polynomial parts on the tensor rule,
+  /// the rest on the near-edge rule), so functionals match the assembled system.
   class DiscreteSpace
   {
   public:
-    DiscreteSpace(const Structures &structures, const DiscretizationOptions &options);
+    /// The material enters the enrichment columns only (the modes are elastic fields).
+    DiscreteSpace(const Structures &structures, const DiscretizationOptions &options,
+                  const Material &material);
 
     const Structures &structures() const { return structures_; }
     const TensorLegendreBasis &basis() const { return basis_; }
@@ -58,6 +89,26 @@ namespace rfm
 
     const BoundaryQuadrature &boundary_quadrature() const { return boundary_; }
 
+    // Enrichment (nullptr / empty without a contact edge or with edge_modes = 0):
+    const EdgeEnrichment *enrichment() const { return enrichment_ ? &*enrichment_ : nullptr; }
+    Eigen::Index n_edge_columns() const { return enrichment_ ? enrichment_->n_columns() : 0; }
+    Eigen::Index n_stress_unknowns() const { return 4 * n_basis_functions() + n_edge_columns(); }
+    Eigen::Index n_displacement_unknowns() const
+    {
+      return 2 * n_basis_functions() + n_edge_columns();
+    }
+    /// The near-edge rule and, at its points, the per-radian measure and everything the
+    /// tensor rule has, plus the enrichment columns.
+    const Quadrature2D &edge_quadrature() const { return edge_quadrature_; }
+    const Eigen::VectorXd &edge_measure() const { return edge_measure_; }
+    const BasisValues &edge_basis_values() const { return edge_basis_values_; }
+    const StressStructureValues &edge_stress_structure() const { return edge_stress_; }
+    const DisplacementStructureValues &edge_displacement_structure() const
+    {
+      return edge_displacement_;
+    }
+    const EdgeColumns &edge_columns() const { return edge_columns_; }
+
   private:
     Structures structures_;
     DiscretizationOptions options_;
@@ -69,6 +120,13 @@ namespace rfm
     StressStructureValues stress_;
     DisplacementStructureValues displacement_;
     BoundaryQuadrature boundary_;
+    std::optional<EdgeEnrichment> enrichment_;
+    Quadrature2D edge_quadrature_;
+    Eigen::VectorXd edge_measure_;
+    BasisValues edge_basis_values_;
+    StressStructureValues edge_stress_;
+    DisplacementStructureValues edge_displacement_;
+    EdgeColumns edge_columns_;
   };
 
   /// Uniform cells on [a, b], then split and graded at the break points.

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 namespace rfm
 {
@@ -47,8 +48,15 @@ namespace rfm
     const double n_gauss = options.degree + options.extra_gauss_points;
     const double n_q = (r_cells.size() - 1.0) * (z_cells.size() - 1.0) * n_gauss * n_gauss;
     const double n = (options.degree + 1.0) * (options.degree + 1.0);
-    return 8.0 * (14.0 * n_q * n + 2.0 * (4 * n) * (4 * n) + 3.0 * (4 * n) * (2 * n) +
-                  2.0 * (2 * n) * (2 * n));
+    // Enrichment: a near-edge rule of 2 n_e^2 points where ~20 matrices of all columns
+    // are formed, and n_edge more unknowns in each space.
+    const bool edge = !contact_edges(s).empty() && options.edge_modes > 0;
+    const double n_edge_pts = n_gauss + options.edge_extra_points;
+    const double n_eq = edge ? 2.0 * n_edge_pts * n_edge_pts : 0.0;
+    const double n_s = 4 * n + (edge ? options.edge_modes : 0);
+    const double n_u = 2 * n + (edge ? options.edge_modes : 0);
+    return 8.0 * (14.0 * n_q * n + 20.0 * n_eq * n_s + 2.0 * n_s * n_s + 3.0 * n_s * n_u +
+                  2.0 * n_u * n_u);
   }
 
   RfmModel::RfmModel(const Problem &problem, const DiscretizationOptions &options,
@@ -58,7 +66,7 @@ namespace rfm
     using clock = std::chrono::steady_clock;
     const auto t0 = clock::now();
     const Structures structures(build_section(problem, half_width));
-    space_ = std::make_unique<DiscreteSpace>(structures, options);
+    space_ = std::make_unique<DiscreteSpace>(structures, options, problem.material);
     const ReissnerSystem system = assemble_reissner_system(*space_, problem.material);
     const auto t1 = clock::now();
     SaddlePointSolution s = solve_saddle_point(system, solver_options);
@@ -69,6 +77,15 @@ namespace rfm
     if (summary_.success)
       solution_ = std::make_unique<RfmSolution>(*space_, problem.material, std::move(s.q_s),
                                                 std::move(s.q_u));
+  }
+
+  double RfmModel::edge_intensity() const
+  {
+    const EdgeEnrichment *e = space_->enrichment();
+    if (!e || e->singular_column() < 0)
+      return std::numeric_limits<double>::quiet_NaN();
+    const Eigen::VectorXd &q = solution_->stress_coefficients();
+    return std::sqrt(2.0 * M_PI) * q[4 * space_->n_basis_functions() + e->singular_column()];
   }
 
   FieldValues RfmModel::evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
@@ -93,16 +110,13 @@ namespace rfm
     const double r1 = s.r_min(), r2 = s.r_max();
 
     // Domain integral with the test field v = (psi, 0), psi = (r - R1)/(R2 - R1):
-    // e(v) = (1/(R2 - R1), 0, psi/r, 0).
-    const Quadrature2D &q = space_->quadrature();
-    const FieldValues f = solution_->evaluate(q.r, q.z);
-    double integral = 0.0;
-    for (Eigen::Index k = 0; k < q.n_points(); ++k)
-      {
-        const double psi = (q.r[k] - r1) / (r2 - r1);
-        integral += space_->measure()[k] *
-                    (f.sigma(k, rr) / (r2 - r1) + f.sigma(k, tt) * psi / q.r[k]);
-      }
+    // e(v) = (1/(R2 - R1), 0, psi/r, 0), on the assembly's rules.
+    const double integral = solution_->integrate(
+      [&](const FieldValues &f, const Eigen::VectorXd &r, const auto &) -> Eigen::VectorXd {
+        return f.sigma.col(rr) / (r2 - r1) +
+               f.sigma.col(tt).cwiseProduct((r.array() - r1).matrix().cwiseQuotient(r)) /
+                 (r2 - r1);
+      });
     p.domain = -2.0 * M_PI * integral;
 
     // Trace on r = R2 with the outer side's boundary points (weights carry r ds and

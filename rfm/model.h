@@ -54,6 +54,10 @@ namespace rfm
     FieldValues evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
                          const Eigen::Ref<const Eigen::VectorXd> &z) const;
     ContactForce contact_force() const;
+    /// Edge intensity K = sqrt(2 pi) a_1 [Pa m^1/2] from the coefficient a_1 of the n = 1
+    /// stress column at the contact edge (edge_modes.h: K < 0 zone too short, K > 0 too
+    /// long); NaN without that column. Precondition: ok().
+    double edge_intensity() const;
 
   private:
     std::optional<double> half_width_;

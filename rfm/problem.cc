@@ -158,7 +158,8 @@ namespace rfm
         if (c.has("curve_points"))
           p.contact.curve_points = c.integer("curve_points", 0, 200);
         if (c.has("method"))
-          p.contact.method = c.string("method", {"fixed", "iterate", "max-force"});
+          p.contact.method =
+            c.string("method", {"edge-intensity", "fixed", "iterate", "max-force"});
         if (c.has("half_width"))
           {
             const double a = p.geometry.half_length();
@@ -196,7 +197,8 @@ namespace rfm
       {
         const ObjectReader r(top.at("rfm"), "rfm",
                              {"degree", "extra_gauss_points", "n_cells_r", "n_cells_z",
-                              "n_graded_layers", "grading_ratio"});
+                              "n_graded_layers", "grading_ratio", "edge_modes", "edge_cutoff",
+                              "edge_extra_points"});
         if (r.has("degree"))
           p.rfm.degree = r.integer("degree", 0, 40);
         if (r.has("extra_gauss_points"))
@@ -210,6 +212,14 @@ namespace rfm
         if (r.has("grading_ratio"))
           p.rfm.grading_ratio =
             r.number("grading_ratio", "must be in (0, 1)", [](double x) { return x > 0 && x < 1; });
+        if (r.has("edge_modes"))
+          p.rfm.edge_modes = r.integer("edge_modes", 0, 4);
+        if (r.has("edge_cutoff"))
+          p.rfm.edge_cutoff = r.number(
+            "edge_cutoff", "must be in (0, 1): the cutoff radius as a fraction of min(c, a - c, R2 - R1)",
+            [](double x) { return x > 0 && x < 1; });
+        if (r.has("edge_extra_points"))
+          p.rfm.edge_extra_points = r.integer("edge_extra_points", 0, 40);
       }
     if (top.has("fem"))
       {

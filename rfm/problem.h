@@ -4,10 +4,11 @@
 //     "material": {"youngs_modulus": Pa, "poisson_ratio": -},
 //     "loading":  {"inner_pressure": Pa, "outer_pressure": Pa},          // optional
 //     "die":      {"indentation": m, "profile": "parabolic"},            // optional
-//     "contact":  {"method": "iterate" | "max-force" | "fixed", "half_width": m,
-//                  "curve_points": n},                                  // n: P(c) curve
+//     "contact":  {"method": "edge-intensity" | "iterate" | "max-force" | "fixed",
+//                  "half_width": m, "curve_points": n},   // n: P(c) and K(c) curve
 //     "samples":  [[r, z], ...],
-//     "rfm": {"degree": p, ...}, "fem": {"degree": p, "refinements": L} }
+//     "rfm": {"degree": p, "edge_modes": k, "edge_cutoff": f, ...},
+//     "fem": {"degree": p, "refinements": L} }
 //
 // At least one of loading and die. Unknown keys, wrong types, non-finite numbers and
 // non-physical values are rejected with InputError naming the field (as a JSON path),
@@ -55,7 +56,8 @@ namespace rfm
 
   struct ContactSettings
   {
-    std::string method = "fixed";     ///< "fixed", "iterate" or "max-force"
+    /// "edge-intensity" (default: the root of K(c)), "fixed", "iterate" or "max-force"
+    std::string method = "edge-intensity";
     std::optional<double> half_width; ///< c [m] for "fixed"; default a
     int curve_points = 0;             ///< extension: sample P(c) at this many c in (0, a]
   };

@@ -114,23 +114,73 @@ namespace rfm
     return cells;
   }
 
-  GaussRule1D gauss_on_cells(const std::vector<double> &cells, const int n_points)
+  GaussRule1D gauss_on_cells(const std::vector<double> &cells, const int n_points,
+                             const std::vector<double> &sqrt_points)
   {
     assert(cells.size() >= 2);
     const GaussRule1D ref = gauss_legendre(n_points);
     const Eigen::Index n_cells = static_cast<Eigen::Index>(cells.size()) - 1;
+    const double scale = std::abs(cells.back() - cells.front());
+    auto singular = [&](const double x) {
+      for (const double s : sqrt_points)
+        if (std::abs(s - x) <= 1e-14 * scale)
+          return true;
+      return false;
+    };
     GaussRule1D rule;
     rule.nodes.resize(n_cells * n_points);
     rule.weights.resize(n_cells * n_points);
     for (Eigen::Index c = 0; c < n_cells; ++c)
       {
-        const double half = 0.5 * (cells[c + 1] - cells[c]);
-        const double mid = 0.5 * (cells[c + 1] + cells[c]);
-        rule.nodes.segment(c * n_points, n_points) =
-          (mid + half * ref.nodes.array()).matrix();
-        rule.weights.segment(c * n_points, n_points) = half * ref.weights;
+        const double x0 = cells[c], x1 = cells[c + 1];
+        const bool s0 = singular(x0), s1 = singular(x1);
+        for (int k = 0; k < n_points; ++k)
+          {
+            const double t = 0.5 * (1.0 + ref.nodes[k]), w = 0.5 * ref.weights[k];
+            double x, dx;
+            if (s0 || s1)
+              {
+                // t^2 toward the singular end (the lower one when both are).
+                const double xs = s0 ? x0 : x1, xo = s0 ? x1 : x0;
+                x = xs + (xo - xs) * t * t;
+                dx = 2.0 * std::abs(xo - xs) * t;
+              }
+            else
+              x = x0 + (x1 - x0) * t, dx = x1 - x0;
+            rule.nodes[c * n_points + k] = x;
+            rule.weights[c * n_points + k] = w * dx;
+          }
       }
     return rule;
+  }
+
+  Quadrature2D half_disc_gauss(const double r_c, const double z_c, const double rho_0,
+                               const int n_radial, const int n_angular)
+  {
+    const GaussRule1D gs = gauss_legendre(n_radial), gt = gauss_legendre(n_angular);
+    Quadrature2D q;
+    const Eigen::Index n = 2 * n_radial * n_angular;
+    q.r.resize(n);
+    q.z.resize(n);
+    q.weights.resize(n);
+    Eigen::Index k = 0;
+    for (int panel = 0; panel < 2; ++panel)
+      for (int j = 0; j < n_angular; ++j)
+        {
+          // theta in [panel pi/2, (panel + 1) pi/2]
+          const double theta = 0.25 * M_PI * (2 * panel + 1 + gt.nodes[j]);
+          const double w_theta = 0.25 * M_PI * gt.weights[j];
+          for (int i = 0; i < n_radial; ++i, ++k)
+            {
+              const double s = 0.5 * (1.0 + gs.nodes[i]), w_s = 0.5 * gs.weights[i];
+              const double rho = rho_0 * s * s;
+              q.r[k] = r_c - rho * std::sin(theta);
+              q.z[k] = z_c - rho * std::cos(theta);
+              // dr dz = rho drho dtheta = rho_0 s^2 * 2 rho_0 s ds dtheta
+              q.weights[k] = 2.0 * rho_0 * rho_0 * s * s * s * w_s * w_theta;
+            }
+        }
+    return q;
   }
 
   Quadrature2D tensor_gauss(const std::vector<double> &r_cells,

@@ -42,5 +42,20 @@ namespace rfm
                             const std::vector<double> &z_cells, int n_points);
 
   /// Gauss rule on the cells of a 1-D partition: nodes and plain length weights.
-  GaussRule1D gauss_on_cells(const std::vector<double> &cells, int n_points);
+  /// A cell with an end at one of `sqrt_points` is mapped by x = x_s + (x_o - x_s) t^2,
+  /// t in [0, 1] (x_s the singular end, x_o the other), so that integrands behaving like
+  /// |x - x_s|^(k/2) (the traces of the contact-edge modes) become polynomials in t:
+  /// exact for |x - x_s|^(k/2) with k <= 4 n - 2, k >= -1.
+  GaussRule1D gauss_on_cells(const std::vector<double> &cells, int n_points,
+                             const std::vector<double> &sqrt_points = {});
+
+  /// Polar rule on the half disc of radius rho_0 about (r_c, z_c) on the side r <= r_c
+  /// (the near-edge rule of a contact edge on an outer side): r = r_c - rho sin theta,
+  /// z = z_c - rho cos theta, theta in [0, pi] in two panels split at pi/2, and
+  /// rho = rho_0 s^2 with Gauss in s, so that rho dr dz = 2 rho_0^2 s^3 ds dtheta.
+  /// Integrands rho^(k/2) g(theta) with k >= -2 become polynomials in s: the rule is exact
+  /// in rho for k/2 + 1 <= n_radial - 1 and converges exponentially in theta for smooth g.
+  /// Weights are plain area weights dr dz, as in tensor_gauss.
+  Quadrature2D half_disc_gauss(double r_c, double z_c, double rho_0, int n_radial,
+                               int n_angular);
 } // namespace rfm

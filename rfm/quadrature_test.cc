@@ -81,4 +81,42 @@ namespace rfm
     const double exact = (std::pow(0.2, 8) - std::pow(0.1, 8)) / 8 * std::pow(0.2, 7) / 7;
     EXPECT_NEAR(s, exact, 1e-13 * exact);
   }
+
+  // The t^2 map toward a singular end integrates x^(k/2) exactly for k >= -1.
+  TEST(GaussOnCells, SqrtMapIntegratesHalfPowersExactly)
+  {
+    const std::vector<double> cells{0.0, 0.5, 1.0};
+    const GaussRule1D g = gauss_on_cells(cells, 6, {0.5});
+    for (const double power : {-0.5, 0.5, 1.5, 2.5})
+      {
+        double s = 0.0;
+        for (Eigen::Index k = 0; k < g.nodes.size(); ++k)
+          s += g.weights[k] * std::pow(std::abs(g.nodes[k] - 0.5), power);
+        const double exact = 2.0 * std::pow(0.5, power + 1) / (power + 1);
+        EXPECT_NEAR(s, exact, 1e-13 * exact) << "power " << power;
+      }
+    // Without singular points it is the plain rule.
+    const GaussRule1D plain = gauss_on_cells(cells, 6);
+    EXPECT_NEAR(plain.weights.sum(), 1.0, 1e-15);
+  }
+
+  // Half-disc rule: area and moments of the half disc r <= r_c (a polynomial of degree
+  // d in r, z is a polynomial of degree 2 d in s times trigonometric terms in theta).
+  TEST(HalfDiscGauss, AreaAndMoments)
+  {
+    const double rc = 0.2, zc = 0.1, rho0 = 0.05;
+    const Quadrature2D q = half_disc_gauss(rc, zc, rho0, 12, 16);
+    EXPECT_NEAR(q.weights.sum(), 0.5 * M_PI * rho0 * rho0, 1e-15);
+    EXPECT_LE(q.r.maxCoeff(), rc);
+    // int (rc - r) dA = int rho sin(theta) rho drho dtheta = 2 rho0^3 / 3
+    EXPECT_NEAR(q.weights.dot((rc - q.r.array()).matrix()), 2.0 * std::pow(rho0, 3) / 3.0, 1e-17);
+    // int (z - zc)^2 dA = int rho^2 cos^2 rho drho dtheta = rho0^4 pi / 8
+    EXPECT_NEAR(q.weights.dot((q.z.array() - zc).square().matrix()), std::pow(rho0, 4) * M_PI / 8.0,
+                1e-13 * std::pow(rho0, 4));
+    // int rho^-1 dA = pi rho0 (the 1/rho singularity of two n = 1 stresses)
+    double s = 0.0;
+    for (Eigen::Index k = 0; k < q.n_points(); ++k)
+      s += q.weights[k] / std::hypot(q.r[k] - rc, q.z[k] - zc);
+    EXPECT_NEAR(s, M_PI * rho0, 1e-14);
+  }
 } // namespace rfm

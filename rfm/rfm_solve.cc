@@ -59,6 +59,9 @@ namespace
     out["half_width_ratio"] = c.final.half_width / a;
     out["force"] = c.final.force;
     out["force_trace"] = c.final.force_trace;
+    out["edge_intensity"] = std::isfinite(c.final.edge_intensity)
+                              ? nlohmann::json(c.final.edge_intensity)
+                              : nlohmann::json(nullptr);
     if (c.half_width_range)
       out["half_width_range"] = {c.half_width_range->first, c.half_width_range->second};
     out["conditions"] = rfm::to_json(c.final, problem);
@@ -82,7 +85,12 @@ namespace
         if (!m.ok())
           continue;
         const rfm::ContactForce f = m.contact_force();
-        out.push_back({{"half_width", c}, {"force", f.domain}, {"force_trace", f.trace}});
+        const double k_edge = m.edge_intensity();
+        out.push_back({{"half_width", c},
+                       {"force", f.domain},
+                       {"force_trace", f.trace},
+                       {"edge_intensity", std::isfinite(k_edge) ? nlohmann::json(k_edge)
+                                                                : nlohmann::json(nullptr)}});
       }
     return out;
   }
@@ -152,12 +160,16 @@ int main(int argc, char **argv)
         model_ptr = std::make_unique<rfm::RfmModel>(problem, problem.rfm, std::nullopt);
 
       const auto n_basis = static_cast<long>((p + 1) * (p + 1));
+      const long n_edge = model_ptr ? static_cast<long>(model_ptr->space().n_edge_columns()) : 0;
       result["discretization"] = {
         {"degree", p},
         {"N", n_basis},
-        {"unknowns", 6 * n_basis},
-        {"stress_unknowns", 4 * n_basis},
-        {"displacement_unknowns", 2 * n_basis},
+        {"unknowns", 6 * n_basis + 2 * n_edge},
+        {"stress_unknowns", 4 * n_basis + n_edge},
+        {"displacement_unknowns", 2 * n_basis + n_edge},
+        {"edge_modes", n_edge},
+        {"edge_cutoff_radius", n_edge > 0 ? nlohmann::json(model_ptr->space().enrichment()->cutoff_radius())
+                                          : nlohmann::json(nullptr)},
         {"gauss_points_per_cell", p + problem.rfm.extra_gauss_points},
         {"n_graded_layers", problem.rfm.n_graded_layers},
         {"grading_ratio", problem.rfm.grading_ratio},

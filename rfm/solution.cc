@@ -17,33 +17,51 @@ namespace rfm
   {}
 
   FieldValues RfmSolution::evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
-                                    const Eigen::Ref<const Eigen::VectorXd> &z) const
+                                    const Eigen::Ref<const Eigen::VectorXd> &z,
+                                    const FieldPart part) const
   {
-    const Eigen::Index n = space_.n_basis_functions();
-    const BasisValues b = space_.basis().evaluate(r, z);
-    const StressStructureValues s = space_.structures().stress(r, z);
-    const DisplacementStructureValues d = space_.structures().displacement(r, z);
-    const DisplacementBasisValues v = displacement_basis(b, d);
-
+    const Eigen::Index n = space_.n_basis_functions(), n_p = r.size();
     FieldValues f;
-    f.sigma = s.s0;
-    for (int k = 0; k < n_stress_components; ++k)
-      f.sigma.col(k) += s.omega.col(k).cwiseProduct(b.value * q_s_.segment(k * n, n));
-
-    f.u = d.u0;
-    Eigen::MatrixXd du_dr = d.u0_r, du_dz = d.u0_z;
-    for (int m = 0; m < 2; ++m)
+    f.sigma.setZero(n_p, n_stress_components);
+    f.u.setZero(n_p, 2);
+    f.strain.setZero(n_p, n_stress_components);
+    if (part != FieldPart::enrichment)
       {
-        const auto q = q_u_.segment(m * n, n);
-        f.u.col(m) += v.value[m] * q;
-        du_dr.col(m) += v.d_r[m] * q;
-        du_dz.col(m) += v.d_z[m] * q;
+        const BasisValues b = space_.basis().evaluate(r, z);
+        const StressStructureValues s = space_.structures().stress(r, z);
+        const DisplacementStructureValues d = space_.structures().displacement(r, z);
+        const DisplacementBasisValues v = displacement_basis(b, d);
+        f.sigma = s.s0;
+        for (int k = 0; k < n_stress_components; ++k)
+          f.sigma.col(k) += s.omega.col(k).cwiseProduct(b.value * q_s_.segment(k * n, n));
+
+        f.u = d.u0;
+        Eigen::MatrixXd du_dr = d.u0_r, du_dz = d.u0_z;
+        for (int m = 0; m < 2; ++m)
+          {
+            const auto q = q_u_.segment(m * n, n);
+            f.u.col(m) += v.value[m] * q;
+            du_dr.col(m) += v.d_r[m] * q;
+            du_dz.col(m) += v.d_z[m] * q;
+          }
+        f.strain.col(rr) = du_dr.col(0);
+        f.strain.col(zz) = du_dz.col(1);
+        f.strain.col(tt) = f.u.col(0).cwiseQuotient(r);
+        f.strain.col(rz) = du_dz.col(0) + du_dr.col(1);
       }
-    f.strain.resize(r.size(), n_stress_components);
-    f.strain.col(rr) = du_dr.col(0);
-    f.strain.col(zz) = du_dz.col(1);
-    f.strain.col(tt) = f.u.col(0).cwiseQuotient(r);
-    f.strain.col(rz) = du_dz.col(0) + du_dr.col(1);
+    const Eigen::Index n_e = space_.n_edge_columns();
+    if (part != FieldPart::polynomial && n_e > 0)
+      {
+        const EdgeColumns e = space_.enrichment()->evaluate(r, z);
+        const auto qs = q_s_.tail(n_e), qu = q_u_.tail(n_e);
+        for (int k = 0; k < n_stress_components; ++k)
+          {
+            f.sigma.col(k) += e.stress[k] * qs;
+            f.strain.col(k) += e.strain[k] * qu;
+          }
+        for (int m = 0; m < 2; ++m)
+          f.u.col(m) += e.u[m] * qu;
+      }
     return f;
   }
 
@@ -51,15 +69,19 @@ namespace rfm
   {
     const Eigen::Matrix4d c = material_.compliance(), dm = material_.stiffness();
 
-    // 1. Domain integrals at the assembly quadrature.
-    const Quadrature2D &q = space_.quadrature();
-    const Eigen::VectorXd &mu = space_.measure();
-    const FieldValues f = evaluate(q.r, q.z);
-    const Eigen::MatrixXd cs = f.sigma * c.transpose();
-    const Eigen::MatrixXd de = f.strain * dm.transpose();
-    const double complementary = 0.5 * mu.dot(f.sigma.cwiseProduct(cs).rowwise().sum());
-    const double strain_energy = 0.5 * mu.dot(f.strain.cwiseProduct(de).rowwise().sum());
-    const double mixed = mu.dot(f.sigma.cwiseProduct(f.strain).rowwise().sum());
+    // 1. Domain integrals on the assembly's rules.
+    const double complementary = 0.5 * integrate([&](const FieldValues &f, const auto &,
+                                                     const auto &) -> Eigen::VectorXd {
+      return f.sigma.cwiseProduct(f.sigma * c.transpose()).rowwise().sum();
+    });
+    const double strain_energy = 0.5 * integrate([&](const FieldValues &f, const auto &,
+                                                     const auto &) -> Eigen::VectorXd {
+      return f.strain.cwiseProduct(f.strain * dm.transpose()).rowwise().sum();
+    });
+    const double mixed = integrate([&](const FieldValues &f, const auto &,
+                                       const auto &) -> Eigen::VectorXd {
+      return f.sigma.cwiseProduct(f.strain).rowwise().sum();
+    });
 
     // 2. Boundary integrals: work of prescribed tractions; (s n).u* and (s n).(u - u*)
     //    on the parts with prescribed normal displacement (displacement, contact,

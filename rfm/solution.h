@@ -31,6 +31,11 @@ namespace rfm
     double indicator() const;
   };
 
+  /// Which part of a field to evaluate: everything, or only the structure with its
+  /// polynomial columns (s0 + polynomial columns, u0 + polynomial columns), or only the
+  /// enrichment columns (the difference).
+  enum class FieldPart { all, polynomial, enrichment };
+
   class RfmSolution
   {
   public:
@@ -39,9 +44,22 @@ namespace rfm
 
     /// Fields at points of the section (r, z inside the bounding box).
     FieldValues evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
-                         const Eigen::Ref<const Eigen::VectorXd> &z) const;
+                         const Eigen::Ref<const Eigen::VectorXd> &z,
+                         FieldPart part = FieldPart::all) const;
 
     Functionals functionals() const;
+
+    /// int g(f) over the section for a pointwise integrand g of the fields (per radian,
+    /// with the space's weight factor), on the same rules as the assembly: g of the
+    /// polynomial part on the tensor rule plus g(all) - g(polynomial) on the near-edge
+    /// rule. Exact in the sense of the assembly for g linear or bilinear in the fields.
+    /// `g(f, r, z)` returns the integrand at every row of f (a vector of n_points).
+    template <typename Integrand>
+    double integrate(Integrand g) const;
+
+    /// Coefficients: q_s (n_s) and q_u (n_u), in the layout of DiscreteSpace.
+    const Eigen::VectorXd &stress_coefficients() const { return q_s_; }
+    const Eigen::VectorXd &displacement_coefficients() const { return q_u_; }
 
     const DiscreteSpace &space() const { return space_; }
     const Material &material() const { return material_; }
@@ -51,4 +69,18 @@ namespace rfm
     Material material_;
     Eigen::VectorXd q_s_, q_u_;
   };
+  template <typename Integrand>
+  double RfmSolution::integrate(Integrand g) const
+  {
+    const Quadrature2D &q = space_.quadrature();
+    double sum = space_.measure().dot(g(evaluate(q.r, q.z, FieldPart::polynomial), q.r, q.z));
+    if (space_.n_edge_columns() > 0)
+      {
+        const Quadrature2D &e = space_.edge_quadrature();
+        const Eigen::VectorXd all = g(evaluate(e.r, e.z, FieldPart::all), e.r, e.z);
+        const Eigen::VectorXd poly = g(evaluate(e.r, e.z, FieldPart::polynomial), e.r, e.z);
+        sum += space_.edge_measure().dot(all - poly);
+      }
+    return sum;
+  }
 } // namespace rfm

@@ -21,7 +21,7 @@ namespace rfm
     {
       DiscretizationOptions o;
       o.degree = degree;
-      DiscreteSpace space(Structures(section), o);
+      DiscreteSpace space(Structures(section), o, Material{});
       SaddlePointSolution s = solve_saddle_point(assemble_reissner_system(space, Material{}));
       return {std::move(space), std::move(s)};
     }

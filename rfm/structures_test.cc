@@ -17,11 +17,13 @@ namespace rfm
     const Structures structures(die_section());
     DiscretizationOptions options;
     options.degree = 4;
-    const DiscreteSpace space(structures, options);
-    const Eigen::Index n = space.n_basis_functions();
+    const DiscreteSpace space(structures, options, Material{});
+    // The die section has a contact edge at z = c: the n = 1, 3 edge modes are columns of
+    // both spaces and get random coefficients too.
+    ASSERT_EQ(space.n_edge_columns(), 2);
     std::srand(7);
-    const RfmSolution sol(space, Material{}, 1e7 * Eigen::VectorXd::Random(4 * n),
-                          1e-5 * Eigen::VectorXd::Random(2 * n));
+    const RfmSolution sol(space, Material{}, 1e7 * Eigen::VectorXd::Random(space.n_stress_unknowns()),
+                          1e-5 * Eigen::VectorXd::Random(space.n_displacement_unknowns()));
 
     const int m = 25;
     auto along = [&](double lo, double hi) {
@@ -58,6 +60,10 @@ namespace rfm
     f = sol.evaluate(0.15 * ones, along(0.01, 0.19));
     EXPECT_GT(f.sigma.col(rz).cwiseAbs().maxCoeff(), 10.0);
     EXPECT_GT(f.u.col(1).cwiseAbs().maxCoeff(), 1e-9);
+    // The enrichment acts near the edge (rho = 1 mm): its stresses are not small.
+    const FieldValues fe = sol.evaluate(Eigen::VectorXd::Constant(1, r2 - 1e-3),
+                                        Eigen::VectorXd::Constant(1, c), FieldPart::enrichment);
+    EXPECT_GT(fe.sigma.cwiseAbs().maxCoeff(), 1e6);
   }
 
   TEST(Structures, RejectsFreeRigidTranslation)

@@ -1,0 +1,121 @@
+#include "rfm/edge_modes.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace rfm
+{
+  EdgeModeValue edge_mode(const int n, const double r, const double z, const double r_edge,
+                          const double z_edge, const Material &material)
+  {
+    const double nu = material.poisson_ratio;
+    const double mu = material.youngs_modulus / (2.0 * (1.0 + nu));
+    const double kappa = 3.0 - 4.0 * nu;
+    const double x = z_edge - z, y = r_edge - r;
+    const double rho = std::hypot(x, y);
+    const double theta = std::atan2(y, x);
+    const double h = 0.5 * n, s = (n % 2 == 0) ? 1.0 : -1.0;
+
+    EdgeModeValue v;
+    if (rho == 0.0 && h <= 1.0)
+      {
+        // Displacements vanish (h > 0) or are singular (h < 0); stresses are 0 (h > 1),
+        // finite but direction-dependent (h = 1) or singular (h < 1): no value.
+        return v;
+      }
+    const double rho_h = std::pow(rho, h), rho_h1 = std::pow(rho, h - 1.0);
+    const double u_x = rho_h / (2.0 * mu) *
+                       ((kappa + h + s) * std::cos(h * theta) - h * std::cos((h - 2.0) * theta));
+    const double u_y = rho_h / (2.0 * mu) *
+                       ((kappa - h - s) * std::sin(h * theta) + h * std::sin((h - 2.0) * theta));
+    const double s_xx = h * rho_h1 *
+                        ((2.0 + h + s) * std::cos((h - 1.0) * theta) -
+                         (h - 1.0) * std::cos((h - 3.0) * theta));
+    const double s_yy = h * rho_h1 *
+                        ((2.0 - h - s) * std::cos((h - 1.0) * theta) +
+                         (h - 1.0) * std::cos((h - 3.0) * theta));
+    const double s_xy = h * rho_h1 *
+                        (-(h + s) * std::sin((h - 1.0) * theta) +
+                         (h - 1.0) * std::sin((h - 3.0) * theta));
+    v.u_r = -u_y;
+    v.u_z = -u_x;
+    v.sigma << s_yy, s_xx, nu * (s_xx + s_yy), s_xy;
+    // Plane-strain Hooke's law: eps = (sigma - nu tr sigma) / (2 mu), gamma = sigma_xy / mu.
+    const double tr = nu * (s_xx + s_yy);
+    v.strain << (s_yy - tr) / (2.0 * mu), (s_xx - tr) / (2.0 * mu), v.u_r / r, s_xy / mu;
+    return v;
+  }
+
+  Cutoff edge_cutoff(const double rho, const double cutoff_radius)
+  {
+    const double t = rho / cutoff_radius;
+    if (t >= 1.0)
+      return {0.0, 0.0};
+    const double t2 = t * t;
+    return {1.0 - t2 * t * (10.0 - 15.0 * t + 6.0 * t2),
+            -30.0 * t2 * (1.0 - t) * (1.0 - t) / cutoff_radius};
+  }
+
+  EdgeEnrichment::EdgeEnrichment(const double r_edge, const double z_edge,
+                                 const double cutoff_radius, std::vector<int> modes,
+                                 const Material &material)
+    : r_edge_(r_edge)
+    , z_edge_(z_edge)
+    , cutoff_radius_(cutoff_radius)
+    , modes_(std::move(modes))
+    , material_(material)
+  {
+    if (!(cutoff_radius > 0.0))
+      throw std::invalid_argument("EdgeEnrichment: cutoff radius must be positive");
+    for (const int n : modes_)
+      if (n < 1 || n % 2 == 0)
+        throw std::invalid_argument("EdgeEnrichment: modes must be odd and >= 1 (even modes "
+                                    "are polynomials, already in the basis)");
+  }
+
+  Eigen::Index EdgeEnrichment::singular_column() const
+  {
+    for (std::size_t j = 0; j < modes_.size(); ++j)
+      if (modes_[j] == 1)
+        return static_cast<Eigen::Index>(j);
+    return -1;
+  }
+
+  EdgeColumns EdgeEnrichment::evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                       const Eigen::Ref<const Eigen::VectorXd> &z) const
+  {
+    const Eigen::Index n = r.size(), m = n_columns();
+    EdgeColumns out;
+    for (auto &s : out.stress)
+      s.setZero(n, m);
+    for (auto &s : out.strain)
+      s.setZero(n, m);
+    for (auto &u : out.u)
+      u.setZero(n, m);
+    for (Eigen::Index k = 0; k < n; ++k)
+      {
+        const double dr = r[k] - r_edge_, dz = z[k] - z_edge_;
+        const double rho = std::hypot(dr, dz);
+        const Cutoff chi = edge_cutoff(rho, cutoff_radius_);
+        if (chi.value == 0.0 && chi.derivative == 0.0)
+          continue;
+        // grad chi = chi'(rho) (r - r_edge, z - z_edge) / rho (zero at rho = 0: chi'(0) = 0).
+        const double chi_r = rho > 0.0 ? chi.derivative * dr / rho : 0.0;
+        const double chi_z = rho > 0.0 ? chi.derivative * dz / rho : 0.0;
+        for (Eigen::Index j = 0; j < m; ++j)
+          {
+            const EdgeModeValue v = edge_mode(modes_[j], r[k], z[k], r_edge_, z_edge_, material_);
+            for (int c = 0; c < n_stress_components; ++c)
+              out.stress[c](k, j) = chi.value * v.sigma[c];
+            out.u[0](k, j) = chi.value * v.u_r;
+            out.u[1](k, j) = chi.value * v.u_z;
+            // e(chi u) = chi e(u) + sym(grad chi (x) u) in engineering components.
+            out.strain[rr](k, j) = chi.value * v.strain[rr] + chi_r * v.u_r;
+            out.strain[zz](k, j) = chi.value * v.strain[zz] + chi_z * v.u_z;
+            out.strain[tt](k, j) = chi.value * v.strain[tt];
+            out.strain[rz](k, j) = chi.value * v.strain[rz] + chi_z * v.u_r + chi_r * v.u_z;
+          }
+      }
+    return out;
+  }
+} // namespace rfm

@@ -1,0 +1,97 @@
+// The asymptotic field at a contact edge: where the condition on r = R2 switches from
+// frictionless bilateral contact (|z| < c) to a free surface (|z| > c) (DESIGN.md 4.4).
+//
+// Local frame at the edge (R2, c): x = c - z (positive inside the zone), y = R2 - r
+// (positive into the body), polar (rho, theta) with x = rho cos theta, y = rho sin theta,
+// theta in [0, pi]: theta = 0 is the contact face, theta = pi the free face. Locally plane
+// strain, kappa = 3 - 4 nu, mu = E / (2 (1 + nu)). Mode n (h = n/2, s = (-1)^n) with unit
+// amplitude:
+//
+//   u_x      = rho^h / (2 mu) [ (kappa + h + s) cos(h theta) - h cos((h - 2) theta) ]
+//   u_y      = rho^h / (2 mu) [ (kappa - h - s) sin(h theta) + h sin((h - 2) theta) ]
+//   sigma_xx = h rho^(h-1) [ (2 + h + s) cos((h - 1) theta) - (h - 1) cos((h - 3) theta) ]
+//   sigma_yy = h rho^(h-1) [ (2 - h - s) cos((h - 1) theta) + (h - 1) cos((h - 3) theta) ]
+//   sigma_xy = h rho^(h-1) [ -(h + s) sin((h - 1) theta) + (h - 1) sin((h - 3) theta) ]
+//
+// Every mode is in equilibrium, satisfies Hooke's law in plane strain, u_y = sigma_xy = 0
+// on theta = 0 and sigma_yy = sigma_xy = 0 on theta = pi (tested). In the meridian plane:
+// u_r = -u_y, u_z = -u_x, sigma_rr = sigma_yy, sigma_zz = sigma_xx, sigma_rz = sigma_xy,
+// sigma_tt = nu (sigma_xx + sigma_yy) (the plane-strain out-of-plane stress). Strains map
+// like stresses: e_rr = eps_yy, e_zz = eps_xx, gamma_rz = gamma_xy; e_tt = u_r / r.
+//
+// On the contact face an odd mode's pressure is p(x) = -sigma_yy(x, 0) = -n x^(n/2 - 1)
+// (even modes are polynomial fields without pressure there):
+// n = 1 is the rho^(-1/2) singularity of a wrong zone; the edge intensity of a field with
+// amplitude a_1 is K = sqrt(2 pi) a_1 [Pa m^1/2]: K < 0 (compressive singular pressure)
+// means the zone is too short, K > 0 (tension) too long.
+//
+// Enrichment columns multiply a mode by the cutoff chi(rho) = 1 - 10 t^3 + 15 t^4 - 6 t^5,
+// t = rho / rho_0 (chi = 0 for rho >= rho_0; C2 at rho_0), a polynomial in rho so that the
+// near-edge rule in rho = rho_0 s^2 integrates it exactly. The products of a mode with chi
+// satisfy both face conditions pointwise, so the structures stay boundary-exact when
+// rho_0 < min(c, a - c, R2 - R1) keeps the support away from every other side.
+#pragma once
+
+#include "rfm/material.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace rfm
+{
+  /// One mode (unit amplitude, no cutoff) at one point, in the meridian frame.
+  struct EdgeModeValue
+  {
+    double u_r = 0.0, u_z = 0.0; ///< [m per unit amplitude]
+    /// (sigma_rr, sigma_zz, sigma_tt, sigma_rz) and the strains e(u) of the mode's own
+    /// displacement (e_rr, e_zz, e_tt, gamma_rz).
+    Eigen::Vector4d sigma = Eigen::Vector4d::Zero(), strain = Eigen::Vector4d::Zero();
+  };
+
+  /// Mode n (n >= 1; n = -1 is allowed for extraction) at (r, z) for the edge at
+  /// (r_edge, z_edge). At the edge point itself (rho = 0) the singular terms have no value:
+  /// the terms with a negative power of rho are returned as 0 there.
+  EdgeModeValue edge_mode(int n, double r, double z, double r_edge, double z_edge,
+                          const Material &material);
+
+  /// The cutoff chi(rho) and d chi / d rho.
+  struct Cutoff
+  {
+    double value, derivative;
+  };
+  Cutoff edge_cutoff(double rho, double cutoff_radius);
+
+  /// Enrichment columns at points, one column per mode:
+  /// stress[c](k, j) = chi sigma_c of mode j at point k (c = rr, zz, tt, rz);
+  /// u[m](k, j) = chi u_m (m = r, z); strain[c](k, j) = e_c(chi u) (c = rr, zz, tt, rz).
+  struct EdgeColumns
+  {
+    Eigen::MatrixXd stress[4], u[2], strain[4];
+  };
+
+  /// The modes at one contact edge, cut off at rho_0.
+  class EdgeEnrichment
+  {
+  public:
+    /// Precondition: cutoff_radius > 0, every mode odd and >= 1.
+    EdgeEnrichment(double r_edge, double z_edge, double cutoff_radius, std::vector<int> modes,
+                   const Material &material);
+
+    double r_edge() const { return r_edge_; }
+    double z_edge() const { return z_edge_; }
+    double cutoff_radius() const { return cutoff_radius_; }
+    const std::vector<int> &modes() const { return modes_; }
+    Eigen::Index n_columns() const { return static_cast<Eigen::Index>(modes_.size()); }
+    /// Column of mode 1 (whose coefficient gives K), or -1 if it is not enriched.
+    Eigen::Index singular_column() const;
+
+    EdgeColumns evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
+                         const Eigen::Ref<const Eigen::VectorXd> &z) const;
+
+  private:
+    double r_edge_, z_edge_, cutoff_radius_;
+    std::vector<int> modes_;
+    Material material_;
+  };
+} // namespace rfm
