@@ -10,6 +10,7 @@
 //   build/bin/rfm_solve verification/problems/lame_paper.json --degree 7 --output lame.json
 //
 // Exit status: 0 success, 2 bad input (nothing written), 3 numerical failure.
+#include "rfm/allocator.h"
 #include "rfm/contact.h"
 #include "rfm/model.h"
 #include "rfm/problem.h"
@@ -100,6 +101,7 @@ int main(int argc, char **argv)
 {
   try
     {
+      rfm::keep_freed_matrices_in_heap();
       // 1. Command line.
       CLI::App app{"R-function method with Reissner's mixed principle (axisymmetric elasticity)"};
       std::string problem_path, output_path;

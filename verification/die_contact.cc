@@ -16,6 +16,7 @@
 //
 // Sample run:
 //   build/bin/die_contact --mode quick --output-dir build/verification-output
+#include "rfm/allocator.h"
 #include "rfm/contact.h"
 #include "rfm/problem.h"
 #include "rfm/result_io.h"
@@ -57,6 +58,7 @@ int main(int argc, char **argv)
 {
   try
     {
+      rfm::keep_freed_matrices_in_heap();
       // 1. Options and the problem file.
       CLI::App app{"Die contact: RFM on the paper's problem"};
       std::string mode = "quick", output_dir = "verification-output", tolerances;

@@ -16,6 +16,7 @@
 //
 // Sample run:
 //   build/bin/lame_cylinder --mode quick --output-dir build/verification
+#include "rfm/allocator.h"
 #include "rfm/model.h"
 #include "rfm/problem.h"
 #include "rfm/result_io.h"
@@ -76,6 +77,7 @@ int main(int argc, char **argv)
 {
   try
     {
+      rfm::keep_freed_matrices_in_heap();
       // 1. Options.
       CLI::App app{"Lame cylinder: RFM against the exact solution"};
       std::string mode = "quick", output_dir = "verification-output";

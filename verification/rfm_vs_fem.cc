@@ -13,6 +13,7 @@
 // Sample run:
 //   build/bin/rfm_vs_fem --mode quick --output-dir build/verification-output
 #include "fem_reference/axisymmetric_fem.h"
+#include "rfm/allocator.h"
 #include "rfm/contact.h"
 #include "rfm/result_io.h"
 #include "verification/lame_errors.h"
@@ -54,6 +55,7 @@ int main(int argc, char **argv)
 {
   try
     {
+      rfm::keep_freed_matrices_in_heap();
       CLI::App app{"RFM against the deal.II FEM reference"};
       std::string mode = "quick", output_dir = "verification-output", tolerances;
       std::string source_dir = RFM_SOURCE_DIR;
