@@ -224,7 +224,9 @@ def die_section(die, out_dir):
     # Runs.
     md.append("### 2.2 The unknown zone: c and P per method, N and quadrature")
     md.append("")
-    md.append("`iterate`: the paper's successive iterations from c = a, bracketed, then bisection for both "
+    md.append("`edge-intensity` (the default): the root of the edge intensity K(c) of the n = 1 edge mode, by a "
+              "secant bracket and the Illinois method (DESIGN.md 4.4). "
+              "`iterate`: the paper's successive iterations from c = a, bracketed, then bisection for both "
               "ends of the interval of c on which conditions 1.2 (no tension) and 1.3 (no penetration) hold at "
               "this N; c is its midpoint. `max-force`: golden-section maximum of P(c) (Barber).")
     md.append("")
@@ -294,7 +296,7 @@ def die_section(die, out_dir):
 
     # c and P against N.
     fig, axs = plt.subplots(1, 2, figsize=(9.6, 4.0))
-    for method, mk in (("iterate", "o-"), ("max-force", "s--")):
+    for method, mk in (("edge-intensity", "D-"), ("iterate", "o-"), ("max-force", "s--")):
         rows = sorted((r for r in die["runs"].values() if r["method"] == method and r["quadrature"] == "default"),
                       key=lambda r: r["N"])
         axs[0].plot([r["N"] for r in rows], [r["final"]["half_width_ratio"] for r in rows], mk, ms=4, label=method)
@@ -406,15 +408,37 @@ def comparison_section(cmp, die, out_dir):
               f"{ag['fem_finest_change_last_refinement_c']:.1e}). RFM at the largest N: P differs by "
               f"{100*ag['iterate_force_difference_relative']:.2f} % (iterate) and {100*ag['max_force_force_difference_relative']:.2f} % "
               f"(max-force); c differs by {100*ag['iterate_half_width_difference_relative']:.1f} % and "
-              f"{100*ag['max_force_half_width_difference_relative']:.1f} %. The FEM c lies inside the RFM interval where "
-              "conditions 1.2 and 1.3 hold; the RFM structures force p(c) = 0 and cannot represent the edge singularity "
-              "of a wrong zone, so P(c) below the true c is underestimated and both RFM estimates of c are biased upward. "
+              f"{100*ag['max_force_half_width_difference_relative']:.1f} %. The default method `edge-intensity` "
+              f"(root of the edge intensity K(c), DESIGN.md 4.4) at the default degree p = {ag.get('default_degree', 8)}: "
+              f"c differs by {100*ag.get('edge_intensity_default_half_width_difference_relative', float('nan')):.2f} % and "
+              f"P by {100*ag.get('edge_intensity_default_force_difference_relative', float('nan')):.3f} %; at the largest p "
+              f"by {100*ag.get('edge_intensity_half_width_difference_relative', float('nan')):.2f} % and "
+              f"{100*ag.get('edge_intensity_force_difference_relative', float('nan')):.3f} %. With the n = 1, 3 edge modes in "
+              "both spaces the RFM carries the edge field of a wrong zone, so the sign of K locates c and the interval "
+              "of the paper's iteration closes. "
               "The paper's c = 0.543 a is 4.6 % above the FEM value and its 195.2 kN 1.3 % above; our trace-integral P "
               "(eq. 4.6) shows the same upward bias as the paper's.")
     md.append("")
+    if "bilateral_curve" in d:
+        md.append("P(c) of the bilateral problem at the default degree against the FEM's, with the RFM's edge intensity K:")
+        md.append("")
+        md.append("| c / a | P FEM [kN] | P RFM [kN] | difference | K [Pa m^1/2] |")
+        md.append("|---|---|---|---|---|")
+        for r in d["bilateral_curve"]:
+            md.append(f"| {r['half_width_ratio']:.2f} | {r['fem_force']/1e3:.3f} | {r['rfm_force']/1e3:.3f} | "
+                      f"{r['force_difference_relative']:.1e} | {r['rfm_edge_intensity']:.4g} |")
+        md.append("")
+    if "time_to_half_width_accuracy" in d:
+        md.append("Time to reach c within a tolerance of the finest FEM value (RFM: edge-intensity over p):")
+        md.append("")
+        md.append("| target | FEM [s] | RFM [s] | FEM / RFM |")
+        md.append("|---|---|---|---|")
+        for k, v in d["time_to_half_width_accuracy"].items():
+            md.append(f"| {k} | {fmt(v['fem_s'], '{:.3f}')} | {fmt(v['rfm_s'], '{:.3f}')} | {fmt(v['fem_over_rfm'], '{:.3f}')} |")
+        md.append("")
     md.append("Time to reach P within a tolerance of the finest FEM value:")
     md.append("")
-    md.append("| target | FEM [s] | RFM iterate [s] | FEM / RFM |")
+    md.append("| target | FEM [s] | RFM edge-intensity [s] | FEM / RFM |")
     md.append("|---|---|---|---|")
     for k, v in d["time_to_accuracy"].items():
         md.append(f"| {k} | {fmt(v['fem_s'], '{:.3f}')} | {fmt(v['rfm_s'], '{:.3f}')} | {fmt(v['fem_over_rfm'], '{:.3f}')} |")
@@ -463,7 +487,7 @@ def die_profiles_figures(prof, fem_degree, out_dir):
             label=f"FEM Q{fem_degree} L = {fem['refinements']}: penalty pressure, c = {fem['half_width_ratio']:.4f} a")
     ax.plot(fp["z_ratio"], np.array(fp["p_trace_pa"]) / 1e6, "k:", lw=1,
             label="FEM: -sigma_rr trace")
-    for method, color in (("iterate", "tab:blue"), ("max-force", "tab:red")):
+    for method, color in (("edge-intensity", "tab:green"), ("iterate", "tab:blue"), ("max-force", "tab:red")):
         if method in prof:
             r = prof[method]
             ax.plot(r["pressure"]["z_ratio"], np.array(r["pressure"]["p_pa"]) / 1e6, "-", color=color,
@@ -477,7 +501,7 @@ def die_profiles_figures(prof, fem_degree, out_dir):
     fs = fem["sigma_rr_z0"]
     ax.plot(np.array(fs["r_m"]) * 1e3, np.array(fs["sigma_rr_pa"]) / 1e6, "k-", lw=1.6,
             label=f"FEM Q{fem_degree} L = {fem['refinements']}")
-    for method, ls, color in (("iterate", "--", "tab:blue"), ("max-force", ":", "tab:red")):
+    for method, ls, color in (("edge-intensity", "-.", "tab:green"), ("iterate", "--", "tab:blue"), ("max-force", ":", "tab:red")):
         if method in prof:
             r = prof[method]
             ax.plot(np.array(r["sigma_rr_z0"]["r_m"]) * 1e3, np.array(r["sigma_rr_z0"]["sigma_rr_pa"]) / 1e6, ls,
@@ -497,8 +521,10 @@ def die_time_to_accuracy_figure(d, fem_degree, out_dir):
                   label=f"FEM Q{fem_degree}, L = 0.." + str(len(fem) - 1))
     axs[1].loglog([r["seconds"] for r in fem], [max(abs(r["half_width_ratio"] - c_ref) / c_ref, 1e-8) for r in fem],
                   "ks-", ms=4, label=f"FEM Q{fem_degree}")
-    for method, mk in (("iterate", "o-"), ("max-force", "^--")):
+    for method, mk in (("edge-intensity", "D-"), ("iterate", "o-"), ("max-force", "^--")):
         rows = [r for r in d["rfm"] if r["method"] == method]
+        if not rows:
+            continue
         axs[0].loglog([r["seconds"] for r in rows], [r["force_error_vs_fem"] for r in rows], mk, ms=4,
                       label=f"RFM {method}, p = {rows[0]['degree']}..{rows[-1]['degree']}")
         axs[1].loglog([r["seconds"] for r in rows], [abs(r["half_width_ratio"] - c_ref) / c_ref for r in rows], mk,

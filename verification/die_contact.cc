@@ -119,21 +119,24 @@ int main(int argc, char **argv)
           results["iteration0"]["p" + std::to_string(p)] = j;
         }
 
-      // 3. The unknown zone, both methods, several N and doubled quadrature.
+      // 3. The unknown zone, three methods, several N and doubled quadrature.
       struct Run
       {
         std::string method;
         int degree;
         bool doubled;
       };
+      // The default method (edge-intensity) at every degree; the paper's iteration and
+      // Barber's maximum at every degree in full mode, at p = 10 in quick mode.
       std::vector<Run> runs;
       for (const int p : degrees)
-        for (const std::string m : {"iterate", "max-force"})
-          runs.push_back({m, p, false});
+        for (const std::string m : {"edge-intensity", "iterate", "max-force"})
+          if (m == "edge-intensity" || full || p == 10)
+            runs.push_back({m, p, false});
       for (const int p : full ? std::vector<int>{10, 14} : std::vector<int>{10})
-        runs.push_back({"iterate", p, true});
+        runs.push_back({"edge-intensity", p, true});
       fmt::print("\n== Unknown zone: c and P per method, N and quadrature ==\n");
-      fmt::print("{:>9} {:>3} {:>5} {:>6} {:>8} {:>17} {:>11} {:>11} {:>9} {:>9} {:>9} {:>6} {:>8}\n",
+      fmt::print("{:>14} {:>3} {:>5} {:>6} {:>8} {:>17} {:>11} {:>11} {:>9} {:>9} {:>9} {:>6} {:>8}\n",
                  "method", "p", "N", "quad", "c/a", "range c/a", "P [N]", "P trace [N]", "Phi_C",
                  "Phi_R", "Phi_L", "solves", "time [s]");
       for (const Run &run : runs)
@@ -157,7 +160,7 @@ int main(int argc, char **argv)
             r.half_width_range ? fmt::format("[{:.4f}, {:.4f}]", r.half_width_range->first / a,
                                              r.half_width_range->second / a)
                                : "-";
-          fmt::print("{:>9} {:>3} {:>5} {:>6} {:>8.5f} {:>17} {:>11.1f} {:>11.1f} {:>9.6f} "
+          fmt::print("{:>14} {:>3} {:>5} {:>6} {:>8.5f} {:>17} {:>11.1f} {:>11.1f} {:>9.6f} "
                      "{:>9.6f} {:>9.6f} {:>6} {:>8.2f}\n",
                      run.method, run.degree, (run.degree + 1) * (run.degree + 1),
                      run.doubled ? "x2" : "x1", f.half_width / a, range, f.force, f.force_trace,
@@ -211,14 +214,22 @@ int main(int argc, char **argv)
         return q == "half_width_ratio" ? std::abs(vx - vy) : std::abs(vx - vy) / std::abs(vy);
       };
       results["stability"] = {
-        {"iterate_c_change_N_doubled", rel("iterate_p10", "iterate_p14", "half_width_ratio")},
-        {"iterate_P_change_N_doubled", rel("iterate_p10", "iterate_p14", "force")},
-        {"iterate_c_change_quadrature_doubled", rel("iterate_p10", "iterate_p10_quad2", "half_width_ratio")},
-        {"iterate_P_change_quadrature_doubled", rel("iterate_p10", "iterate_p10_quad2", "force")},
-        {"max_force_c_change_N_doubled", rel("max-force_p10", "max-force_p14", "half_width_ratio")},
-        {"max_force_P_change_N_doubled", rel("max-force_p10", "max-force_p14", "force")},
-        {"iterate_vs_max_force_c_p14", rel("iterate_p14", "max-force_p14", "half_width_ratio")},
-        {"iterate_vs_max_force_P_p14", rel("iterate_p14", "max-force_p14", "force")}};
+        {"edge_intensity_c_change_N_doubled",
+         rel("edge-intensity_p10", "edge-intensity_p14", "half_width_ratio")},
+        {"edge_intensity_P_change_N_doubled", rel("edge-intensity_p10", "edge-intensity_p14", "force")},
+        {"edge_intensity_c_change_quadrature_doubled",
+         rel("edge-intensity_p10", "edge-intensity_p10_quad2", "half_width_ratio")},
+        {"edge_intensity_P_change_quadrature_doubled",
+         rel("edge-intensity_p10", "edge-intensity_p10_quad2", "force")},
+        {"iterate_vs_edge_intensity_c_p10", rel("iterate_p10", "edge-intensity_p10", "half_width_ratio")},
+        {"max_force_vs_edge_intensity_c_p10", rel("max-force_p10", "edge-intensity_p10", "half_width_ratio")},
+        {"iterate_vs_edge_intensity_P_p10", rel("iterate_p10", "edge-intensity_p10", "force")},
+        {"max_force_vs_edge_intensity_P_p10", rel("max-force_p10", "edge-intensity_p10", "force")}};
+      if (full)
+        {
+          results["stability"]["iterate_c_change_N_doubled"] = rel("iterate_p10", "iterate_p14", "half_width_ratio");
+          results["stability"]["max_force_c_change_N_doubled"] = rel("max-force_p10", "max-force_p14", "half_width_ratio");
+        }
       fmt::print("\nstability: {}\n", results["stability"].dump());
 
       // 4. P(c): bilateral solves over c, at p = 12.
