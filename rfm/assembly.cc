@@ -57,7 +57,7 @@ namespace rfm
     void add_edge_terms(const DiscreteSpace &space, const Material &material, ReissnerSystem &sys)
     {
       const Eigen::Index n = space.n_basis_functions(), n_e = space.n_edge_columns();
-      const Eigen::Index n_s = sys.r11.rows(), n_u = sys.r12.cols();
+      const Eigen::Index n_s = sys.r11.rows();
       const Eigen::Matrix4d c = material.compliance();
       const Quadrature2D &q = space.edge_quadrature();
       const Eigen::VectorXd &mu = space.edge_measure();
@@ -120,7 +120,6 @@ namespace rfm
           sys.p_u.tail(n_e) -=
             bq.weights[k] * (t_r * be.u[0].row(k) + t_z * be.u[1].row(k)).transpose();
         }
-      (void)n_u;
     }
   } // namespace
 
@@ -146,7 +145,6 @@ namespace rfm
     const BasisValues &b = space.basis_values();
     const StressStructureValues &s = space.stress_structure();
     const DisplacementStructureValues &d = space.displacement_structure();
-    const Eigen::Index n_q = mu.size();
 
     const Eigen::Index n_s = space.n_stress_unknowns(), n_u = space.n_displacement_unknowns();
     ReissnerSystem sys;
@@ -185,7 +183,6 @@ namespace rfm
     sys.p_s.setZero(n_s);
     for (int k = 0; k < n_stress_components; ++k)
       sys.p_s.segment(k * n, n).noalias() = wx[k].transpose() * residual.col(k);
-    (void)n_q;
 
     // 4. p_u = int s0 . e(Phi) - int_{S_t} t . Phi.
     const Eigen::VectorXd m_rr = mu.cwiseProduct(s.s0.col(rr));
