@@ -144,4 +144,30 @@ namespace rfm
     EXPECT_FALSE(r.success);
     EXPECT_NE(r.message.find("edge_modes"), std::string::npos) << r.message;
   }
+
+  // Consistent pressure: its zeroth moment is the domain-integral force (P = 2 pi m_0), it
+  // vanishes at the zone's edge, and it is compressive inside.
+  TEST(Contact, ConsistentPressureCarriesTheForce)
+  {
+    Problem p = die_problem(1e-6, "fixed");
+    p.contact.half_width = 0.52 * 0.2;
+    const ContactResult r = solve_contact(p, p.rfm, ContactOptions{});
+    ASSERT_TRUE(r.success) << r.message;
+    const double c = *p.contact.half_width, r2 = 0.2;
+    const int n = 4001;
+    const auto pc = consistent_contact_pressure(*r.model, p, c, n, default_pressure_moments);
+    ASSERT_EQ(pc.size(), static_cast<std::size_t>(n));
+    // int_0^c p dz by the substitution z = c sin(t): p = sqrt(1 - x^2) g(x) is smooth in t,
+    // but pc is given on a uniform z grid: Simpson on it converges like h^1.5 at the edge.
+    double integral = 0.0;
+    const double h = c / (n - 1);
+    for (int i = 0; i + 2 < n; i += 2)
+      integral += h / 3.0 * (pc[i].second + 4.0 * pc[i + 1].second + pc[i + 2].second);
+    const double force = 2.0 * M_PI * r2 * 2.0 * integral;
+    EXPECT_NEAR(force / r.final.force, 1.0, 1e-5);
+    EXPECT_NEAR(pc.back().second, 0.0, 1e-9 * pc.front().second);
+    for (const auto &[z, pz] : pc)
+      if (z < 0.95 * c)
+        EXPECT_GT(pz, 0.0) << "z = " << z;
+  }
 } // namespace rfm

@@ -66,9 +66,21 @@ namespace
     if (c.half_width_range)
       out["half_width_range"] = {c.half_width_range->first, c.half_width_range->second};
     out["conditions"] = rfm::to_json(c.final, problem);
+    // p: the trace -sigma_rr(R2, z); p_consistent: the consistent reactions (contact.h).
     nlohmann::json pressure = nlohmann::json::array();
-    for (const auto &[z, p] : rfm::contact_pressure(*c.model, c.final.half_width, 101))
-      pressure.push_back({{"z", z}, {"p", p}});
+    const double c_final = c.final.half_width;
+    const auto trace = rfm::contact_pressure(*c.model, c_final, 101);
+    const auto consistent =
+      c_final < a ? rfm::consistent_contact_pressure(*c.model, problem, c_final, 101,
+                                                     rfm::default_pressure_moments)
+                  : decltype(trace){};
+    for (std::size_t i = 0; i < trace.size(); ++i)
+      {
+        nlohmann::json e = {{"z", trace[i].first}, {"p", trace[i].second}};
+        if (!consistent.empty())
+          e["p_consistent"] = consistent[i].second;
+        pressure.push_back(e);
+      }
     out["pressure"] = pressure;
     return out;
   }
