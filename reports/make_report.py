@@ -317,6 +317,41 @@ def die_section(die, out_dir):
     md += [f"![Fig. 3 analog]({f1})", "", f"![P(c)]({f2})", "", f"![c and P against N]({f3})", ""]
     if f4:
         md += [f"![sigma_rr]({f4})", ""]
+    if "convergence_in_p" in die:
+        md += convergence_in_p_section(die["convergence_in_p"], out_dir)
+    return md
+
+
+def convergence_in_p_section(rows, out_dir):
+    """c, P and p(0) against p with the edge modes on (edge-intensity) and off (iterate)."""
+    md = ["### 2.3 Convergence in p with the edge modes on and off", "",
+          "Edge modes on: `edge-intensity` (the default). Off: `iterate` (edge-intensity needs the n = 1 mode). "
+          "p(0) as the trace -sigma_rr(R2, 0) and as consistent reactions (3 moments).", "",
+          "| modes | method | p | N | c/a | P [kN] | p(0) trace [MPa] | p(0) consistent [MPa] | solves | time [s] |",
+          "|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        md.append(f"| {'on' if r['edge_modes'] else 'off'} | {r['method']} | {r['degree']} | {r['N']} | "
+                  f"{r['half_width_ratio']:.5f} | {r['force']/1e3:.4f} | {r['pressure_at_0_trace']/1e6:.4f} | "
+                  f"{r['pressure_at_0_consistent']/1e6:.4f} | {r['n_solves']} | {r['seconds']:.2f} |")
+    md.append("")
+    fig, axs = plt.subplots(1, 3, figsize=(12, 3.8))
+    for on, mk, color in ((True, "D-", "tab:green"), (False, "o--", "tab:blue")):
+        sel = [r for r in rows if r["edge_modes"] == on]
+        if not sel:
+            continue
+        label = "modes on (edge-intensity)" if on else "modes off (iterate)"
+        p = [r["degree"] for r in sel]
+        axs[0].plot(p, [r["half_width_ratio"] for r in sel], mk, color=color, ms=4, label=label)
+        axs[1].plot(p, [r["force"] / 1e3 for r in sel], mk, color=color, ms=4, label=label)
+        axs[2].plot(p, [r["pressure_at_0_consistent"] / 1e6 for r in sel], mk, color=color, ms=4,
+                    label=label + ", consistent")
+        axs[2].plot(p, [r["pressure_at_0_trace"] / 1e6 for r in sel], ":", color=color, marker="x", ms=4,
+                    label=label + ", trace")
+    decorate(axs[0], "degree p", "c / a [-]")
+    decorate(axs[1], "degree p", "P [kN]")
+    decorate(axs[2], "degree p", "p(0) [MPa]", legend_size=6)
+    fig.suptitle("Die contact: convergence in p with and without the edge modes (RFM)")
+    md += [f"![convergence in p, modes on and off]({save(fig, out_dir, 'die_convergence_edge_modes.png')})", ""]
     return md
 
 

@@ -232,6 +232,44 @@ int main(int argc, char **argv)
         }
       fmt::print("\nstability: {}\n", results["stability"].dump());
 
+      // 3b. Convergence in p with the edge modes on (edge-intensity, the default) and off
+      //     (the paper's iteration: edge-intensity needs the n = 1 mode): c, P and p(0) as
+      //     trace and as consistent reactions.
+      {
+        const std::vector<int> ps = full ? std::vector<int>{4, 6, 8, 10, 12, 14, 16}
+                                         : std::vector<int>{8};
+        fmt::print("\n== Convergence in p, edge modes on (edge-intensity) and off (iterate) ==\n");
+        for (const bool on : {true, false})
+          for (const int p : ps)
+            {
+              rfm::Problem pr = base;
+              pr.rfm.degree = p;
+              pr.rfm.edge_modes = on ? rfm::DiscretizationOptions{}.edge_modes : 0;
+              pr.contact.method = on ? "edge-intensity" : "iterate";
+              const auto t0 = std::chrono::steady_clock::now();
+              const rfm::ContactResult r = rfm::solve_contact(pr, pr.rfm, options);
+              const double seconds =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+              if (!r.success)
+                throw std::runtime_error(pr.contact.method + " failed: " + r.message);
+              const double c = r.final.half_width;
+              const double p0_trace = rfm::contact_pressure(*r.model, c, 2).front().second;
+              const double p0_consistent =
+                rfm::consistent_contact_pressure(*r.model, pr, c, 2, rfm::default_pressure_moments)
+                  .front()
+                  .second;
+              fmt::print("modes {:>3} {:>14} p={:>2} c/a={:.5f} P={:.1f} N p(0) trace {:.4g} Pa, "
+                         "consistent {:.4g} Pa, {} solves, {:.2f} s\n",
+                         on ? "on" : "off", pr.contact.method, p, c / a, r.final.force, p0_trace,
+                         p0_consistent, r.history.size(), seconds);
+              results["convergence_in_p"].push_back(
+                {{"edge_modes", on}, {"method", pr.contact.method}, {"degree", p},
+                 {"N", (p + 1) * (p + 1)}, {"half_width_ratio", c / a}, {"force", r.final.force},
+                 {"pressure_at_0_trace", p0_trace}, {"pressure_at_0_consistent", p0_consistent},
+                 {"n_solves", r.history.size()}, {"seconds", seconds}});
+            }
+      }
+
       // 4. P(c): bilateral solves over c, at p = 12.
       {
         rfm::Problem pr = base;
