@@ -61,24 +61,19 @@ namespace rfm
     std::vector<double> u, du;
 
     // 1. Domain part: int s_h . e(V_k) for all k at once, on the assembly's rules.
-    Eigen::VectorXd moments = Eigen::VectorXd::Zero(n_moments);
-    for (int k = 0; k < n_moments; ++k)
-      {
-        const double dom = model.solution().integrate(
-          [&](const FieldValues &f, const Eigen::VectorXd &r, const Eigen::VectorXd &z) -> Eigen::VectorXd {
-            Eigen::VectorXd g(r.size());
-            for (Eigen::Index q = 0; q < r.size(); ++q)
-              {
-                chebyshev_u(z[q] / c, u, du);
-                const double phi = u[2 * k], dphi = du[2 * k] / c;
-                const double psi = (r[q] - r1) / (r2 - r1), dpsi = 1.0 / (r2 - r1);
-                g[q] = f.sigma(q, rr) * phi * dpsi + f.sigma(q, tt) * phi * psi / r[q] +
-                       f.sigma(q, rz) * dphi * psi;
-              }
-            return g;
-          });
-        moments[k] = -dom;
-      }
+    Eigen::VectorXd moments = -model.solution().integrate(
+      [&](const FieldValues &f, const Eigen::VectorXd &r, const Eigen::VectorXd &z) -> Eigen::MatrixXd {
+        Eigen::MatrixXd g(r.size(), n_moments);
+        for (Eigen::Index q = 0; q < r.size(); ++q)
+          {
+            chebyshev_u(z[q] / c, u, du);
+            const double psi = (r[q] - r1) / (r2 - r1), dpsi = 1.0 / (r2 - r1);
+            for (int k = 0; k < n_moments; ++k)
+              g(q, k) = f.sigma(q, rr) * u[2 * k] * dpsi + f.sigma(q, tt) * u[2 * k] * psi / r[q] +
+                        f.sigma(q, rz) * du[2 * k] / c * psi;
+          }
+        return g;
+      });
     // 2. Work of the prescribed tractions on V_k (only sigma_nn n_r on radial sides works).
     const BoundaryQuadrature &bq = space.boundary_quadrature();
     const auto &parts = space.structures().section().parts();

@@ -167,7 +167,9 @@ namespace rfm
     EXPECT_NEAR(force / r.final.force, 1.0, 1e-5);
     EXPECT_NEAR(pc.back().second, 0.0, 1e-9 * pc.front().second);
     for (const auto &[z, pz] : pc)
-      if (z < 0.95 * c)
-        EXPECT_GT(pz, 0.0) << "z = " << z;
+      {
+        if (z < 0.95 * c)
+          EXPECT_GT(pz, 0.0) << "z = " << z;
+      }
   }
 } // namespace rfm

@@ -112,11 +112,11 @@ namespace rfm
     // Domain integral with the test field v = (psi, 0), psi = (r - R1)/(R2 - R1):
     // e(v) = (1/(R2 - R1), 0, psi/r, 0), on the assembly's rules.
     const double integral = solution_->integrate(
-      [&](const FieldValues &f, const Eigen::VectorXd &r, const auto &) -> Eigen::VectorXd {
+      [&](const FieldValues &f, const Eigen::VectorXd &r, const auto &) -> Eigen::MatrixXd {
         return f.sigma.col(rr) / (r2 - r1) +
                f.sigma.col(tt).cwiseProduct((r.array() - r1).matrix().cwiseQuotient(r)) /
                  (r2 - r1);
-      });
+      })[0];
     p.domain = -2.0 * M_PI * integral;
 
     // Trace on r = R2 with the outer side's boundary points (weights carry r ds and

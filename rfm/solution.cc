@@ -69,19 +69,16 @@ namespace rfm
   {
     const Eigen::Matrix4d c = material_.compliance(), dm = material_.stiffness();
 
-    // 1. Domain integrals on the assembly's rules.
-    const double complementary = 0.5 * integrate([&](const FieldValues &f, const auto &,
-                                                     const auto &) -> Eigen::VectorXd {
-      return f.sigma.cwiseProduct(f.sigma * c.transpose()).rowwise().sum();
-    });
-    const double strain_energy = 0.5 * integrate([&](const FieldValues &f, const auto &,
-                                                     const auto &) -> Eigen::VectorXd {
-      return f.strain.cwiseProduct(f.strain * dm.transpose()).rowwise().sum();
-    });
-    const double mixed = integrate([&](const FieldValues &f, const auto &,
-                                       const auto &) -> Eigen::VectorXd {
-      return f.sigma.cwiseProduct(f.strain).rowwise().sum();
-    });
+    // 1. Domain integrals on the assembly's rules: 1/2 s.C s, 1/2 e.D e and s.e.
+    const Eigen::Vector3d energies = integrate(
+      [&](const FieldValues &f, const auto &, const auto &) -> Eigen::MatrixXd {
+        Eigen::MatrixXd g(f.sigma.rows(), 3);
+        g.col(0) = 0.5 * f.sigma.cwiseProduct(f.sigma * c.transpose()).rowwise().sum();
+        g.col(1) = 0.5 * f.strain.cwiseProduct(f.strain * dm.transpose()).rowwise().sum();
+        g.col(2) = f.sigma.cwiseProduct(f.strain).rowwise().sum();
+        return g;
+      });
+    const double complementary = energies[0], strain_energy = energies[1], mixed = energies[2];
 
     // 2. Boundary integrals: work of prescribed tractions; (s n).u* and (s n).(u - u*)
     //    on the parts with prescribed normal displacement (displacement, contact,

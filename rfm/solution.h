@@ -49,13 +49,14 @@ namespace rfm
 
     Functionals functionals() const;
 
-    /// int g(f) over the section for a pointwise integrand g of the fields (per radian,
-    /// with the space's weight factor), on the same rules as the assembly: g of the
-    /// polynomial part on the tensor rule plus g(all) - g(polynomial) on the near-edge
-    /// rule. Exact in the sense of the assembly for g linear or bilinear in the fields.
-    /// `g(f, r, z)` returns the integrand at every row of f (a vector of n_points).
+    /// int g(f) over the section for pointwise integrands g of the fields (per radian, with
+    /// the space's weight factor), on the same rules as the assembly: g of the polynomial
+    /// part on the tensor rule plus g(all) - g(polynomial) on the near-edge rule. Exact in
+    /// the sense of the assembly for g linear or bilinear in the fields. `g(f, r, z)`
+    /// returns an n_points x m matrix (m integrands at once: the fields are evaluated once);
+    /// the result has m entries.
     template <typename Integrand>
-    double integrate(Integrand g) const;
+    Eigen::VectorXd integrate(Integrand g) const;
 
     /// Coefficients: q_s (n_s) and q_u (n_u), in the layout of DiscreteSpace.
     const Eigen::VectorXd &stress_coefficients() const { return q_s_; }
@@ -69,17 +70,19 @@ namespace rfm
     Material material_;
     Eigen::VectorXd q_s_, q_u_;
   };
+
   template <typename Integrand>
-  double RfmSolution::integrate(Integrand g) const
+  Eigen::VectorXd RfmSolution::integrate(Integrand g) const
   {
     const Quadrature2D &q = space_.quadrature();
-    double sum = space_.measure().dot(g(evaluate(q.r, q.z, FieldPart::polynomial), q.r, q.z));
+    const Eigen::MatrixXd tensor = g(evaluate(q.r, q.z, FieldPart::polynomial), q.r, q.z);
+    Eigen::VectorXd sum = tensor.transpose() * space_.measure();
     if (space_.n_edge_columns() > 0)
       {
         const Quadrature2D &e = space_.edge_quadrature();
-        const Eigen::VectorXd all = g(evaluate(e.r, e.z, FieldPart::all), e.r, e.z);
-        const Eigen::VectorXd poly = g(evaluate(e.r, e.z, FieldPart::polynomial), e.r, e.z);
-        sum += space_.edge_measure().dot(all - poly);
+        const Eigen::MatrixXd all = g(evaluate(e.r, e.z, FieldPart::all), e.r, e.z);
+        const Eigen::MatrixXd poly = g(evaluate(e.r, e.z, FieldPart::polynomial), e.r, e.z);
+        sum += (all - poly).transpose() * space_.edge_measure();
       }
     return sum;
   }
