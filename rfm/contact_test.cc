@@ -169,7 +169,9 @@ namespace rfm
     for (const auto &[z, pz] : pc)
       {
         if (z < 0.95 * c)
-          EXPECT_GT(pz, 0.0) << "z = " << z;
+          {
+            EXPECT_GT(pz, 0.0) << "z = " << z;
+          }
       }
   }
 } // namespace rfm
