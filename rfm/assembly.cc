@@ -1,5 +1,7 @@
 #include "rfm/assembly.h"
 
+#include <array>
+
 namespace rfm
 {
   DisplacementBasisValues displacement_basis(const BasisValues &b,
@@ -51,6 +53,25 @@ namespace rfm
 
   namespace
   {
+    // weight * t_m at the boundary points of the traction parts (t = sigma_nn n: the shear
+    // traction is zero there), 0 elsewhere: W_t(Phi) = sum_m (weighted t_m) . Phi_m.
+    std::array<Eigen::VectorXd, 2> weighted_tractions(const DiscreteSpace &space)
+    {
+      const BoundaryQuadrature &bq = space.boundary_quadrature();
+      const auto &parts = space.structures().section().parts();
+      std::array<Eigen::VectorXd, 2> w{Eigen::VectorXd::Zero(bq.weights.size()),
+                                       Eigen::VectorXd::Zero(bq.weights.size())};
+      for (Eigen::Index k = 0; k < bq.weights.size(); ++k)
+        {
+          const BoundaryPart &part = parts[bq.part[k]];
+          if (part.condition != Condition::traction)
+            continue;
+          w[0][k] = bq.weights[k] * part.normal_stress * bq.n_r[k];
+          w[1][k] = bq.weights[k] * part.normal_stress * bq.n_z[k];
+        }
+      return w;
+    }
+
     // The products with the enrichment columns, on the near-edge rule: the borders of
     // R11 and R12 and the enrichment rows of p_s and p_u. The polynomial-polynomial blocks
     // (tensor rule) are not touched.
@@ -108,18 +129,9 @@ namespace rfm
         sys.p_u.tail(n_e).noalias() +=
           a.strain[k].rightCols(n_e).transpose() * mu.cwiseProduct(s.s0.col(k));
       const BoundaryQuadrature &bq = space.boundary_quadrature();
-      const auto &parts = space.structures().section().parts();
       const EdgeColumns be = space.enrichment()->evaluate(bq.r, bq.z);
-      for (Eigen::Index k = 0; k < bq.weights.size(); ++k)
-        {
-          const BoundaryPart &part = parts[bq.part[k]];
-          if (part.condition != Condition::traction)
-            continue;
-          const double t_r = part.normal_stress * bq.n_r[k];
-          const double t_z = part.normal_stress * bq.n_z[k];
-          sys.p_u.tail(n_e) -=
-            bq.weights[k] * (t_r * be.u[0].row(k) + t_z * be.u[1].row(k)).transpose();
-        }
+      const std::array<Eigen::VectorXd, 2> wt = weighted_tractions(space);
+      sys.p_u.tail(n_e) -= be.u[0].transpose() * wt[0] + be.u[1].transpose() * wt[1];
     }
   } // namespace
 
@@ -195,20 +207,11 @@ namespace rfm
     sys.p_u.segment(n, n).noalias() = v.d_z[1].transpose() * m_zz + v.d_r[1].transpose() * m_rz;
 
     const BoundaryQuadrature &bq = space.boundary_quadrature();
-    const auto &parts = space.structures().section().parts();
     const BasisValues bb = space.basis().evaluate(bq.r, bq.z);
     const DisplacementStructureValues bd = space.structures().displacement(bq.r, bq.z);
-    for (Eigen::Index k = 0; k < bq.weights.size(); ++k)
-      {
-        const BoundaryPart &part = parts[bq.part[k]];
-        if (part.condition != Condition::traction)
-          continue;
-        // t = sigma_nn n (zero shear): only the normal displacement component works.
-        const double t_r = part.normal_stress * bq.n_r[k];
-        const double t_z = part.normal_stress * bq.n_z[k];
-        sys.p_u.segment(0, n) -= (bq.weights[k] * t_r * bd.omega(k, 0)) * bb.value.row(k).transpose();
-        sys.p_u.segment(n, n) -= (bq.weights[k] * t_z * bd.omega(k, 1)) * bb.value.row(k).transpose();
-      }
+    const std::array<Eigen::VectorXd, 2> wt = weighted_tractions(space);
+    for (int m = 0; m < 2; ++m)
+      sys.p_u.segment(m * n, n).noalias() -= bb.value.transpose() * bd.omega.col(m).cwiseProduct(wt[m]);
     if (space.n_edge_columns() > 0)
       add_edge_terms(space, material, sys);
     return sys;
