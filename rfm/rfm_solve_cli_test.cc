@@ -1,6 +1,7 @@
 // Bad input through the command line of rfm_solve: every case must exit with status 2,
 // say on stderr what is wrong (a fragment naming the field or the rule), and write
-// nothing. RFM_SOLVE is the path of the executable under test.
+// nothing; a numerical failure exits 3 with the history written. RFM_SOLVE is the path of
+// the executable under test.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -169,5 +170,31 @@ namespace
     const nlohmann::json r = nlohmann::json::parse(f);
     EXPECT_EQ(r.at("solver"), "rfm");
     EXPECT_LT(r.at("functionals").at("reissner").get<double>(), 0.0);
+  }
+
+  // A die pushed off by an outer pressure larger than its indentation can hold: K > 0 for
+  // every zone down to 0.01 a, so the root of K(c) is not bracketed in (0, a]. A numerical
+  // failure: exit 3, a message, and the result with the search history still written.
+  TEST(RfmSolveCli, UnbracketedEdgeIntensityExitsWithStatus3AndWritesTheHistory)
+  {
+    const fs::path dir = fs::temp_directory_path() / "rfm_cli_unbracketed";
+    fs::create_directories(dir);
+    const fs::path in = dir / "problem.json", out = dir / "result.json";
+    fs::remove(out);
+    nlohmann::json j = valid();
+    j["loading"] = {{"inner_pressure", 0.0}, {"outer_pressure", 2.0e6}};
+    j["die"] = {{"indentation", 1.0e-6}};
+    j["rfm"] = {{"degree", 4}};
+    std::ofstream(in) << j.dump();
+    const Outcome o = run(in.string() + " --output " + out.string());
+    EXPECT_EQ(o.status, 3) << o.err;
+    EXPECT_NE(o.err.find("not bracketed"), std::string::npos) << o.err;
+    ASSERT_TRUE(fs::exists(out));
+    std::ifstream f(out);
+    const nlohmann::json r = nlohmann::json::parse(f);
+    EXPECT_EQ(r.at("diagnostics").at("status"), "failed");
+    ASSERT_GE(r.at("contact").at("iterations").size(), 3u);
+    for (const auto &it : r.at("contact").at("iterations"))
+      EXPECT_GT(it.at("edge_intensity").get<double>(), 0.0);
   }
 } // namespace
