@@ -28,6 +28,60 @@ namespace rfm
     return out;
   }
 
+  double edge_intensity_reciprocal_work(const RfmModel &model, const Problem &problem,
+                                        const double c, const double rho_1)
+  {
+    const double r2 = problem.geometry.outer_radius;
+    const Material &m = problem.material;
+    const double u_edge = die_u_r(*problem.die, problem.geometry, c);
+    // J(rho) for a field given at points of the half circle (meridian components).
+    const GaussRule1D gt = gauss_on_cells({0.0, 0.5 * M_PI, M_PI}, 32);
+    const Eigen::Index n_t = gt.nodes.size();
+    Eigen::VectorXd r(n_t), z(n_t);
+    for (Eigen::Index k = 0; k < n_t; ++k)
+      r[k] = r2 - rho_1 * std::sin(gt.nodes[k]), z[k] = c - rho_1 * std::cos(gt.nodes[k]);
+    auto interaction = [&](auto field_at) {
+      double j = 0.0;
+      for (Eigen::Index k = 0; k < n_t; ++k)
+        {
+          // e_rho = (cos t) e_x + (sin t) e_y, e_x = -e_z, e_y = -e_r.
+          const double n_r = -std::sin(gt.nodes[k]), n_z = -std::cos(gt.nodes[k]);
+          const auto [s, u] = field_at(k);   // s = (rr, zz, tt, rz), u = (u_r, u_z)
+          const EdgeModeValue a = edge_mode(-1, r[k], z[k], r2, c, m);
+          const double t_r = s[rr] * n_r + s[rz] * n_z, t_z = s[rz] * n_r + s[zz] * n_z;
+          const double ta_r = a.sigma[rr] * n_r + a.sigma[rz] * n_z;
+          const double ta_z = a.sigma[rz] * n_r + a.sigma[zz] * n_z;
+          j += gt.weights[k] * rho_1 * (t_r * a.u_r + t_z * a.u_z - ta_r * u[0] - ta_z * u[1]);
+        }
+      return j;
+    };
+    // 1. The n = 1 mode with itself: C.
+    const double c1 = interaction([&](Eigen::Index k) {
+      const EdgeModeValue v = edge_mode(1, r[k], z[k], r2, c, m);
+      return std::pair{v.sigma, Eigen::Vector2d(v.u_r, v.u_z)};
+    });
+    // 2. The RFM field, translated so that u_r = 0 at the edge.
+    const FieldValues f = model.evaluate(r, z);
+    const double j_h = interaction([&](Eigen::Index k) {
+      return std::pair{Eigen::Vector4d(f.sigma.row(k).transpose()),
+                       Eigen::Vector2d(f.u(k, 0) - u_edge, f.u(k, 1))};
+    });
+    // 3. The contact face x in (0, rho_1): outward normal -e_y = +e_r; the aux traction there
+    //    is s*_rr e_r (s*_rz = 0) and u~_r = u_r* - u_r*(c) is prescribed.
+    const GaussRule1D gx = gauss_on_cells({0.0, rho_1}, 24, {0.0});
+    double face = 0.0;
+    for (Eigen::Index k = 0; k < gx.nodes.size(); ++k)
+      {
+        const double zk = c - gx.nodes[k];
+        const EdgeModeValue a = edge_mode(-1, r2, zk, r2, c, m);
+        face += gx.weights[k] * a.sigma[rr] * (die_u_r(*problem.die, problem.geometry, zk) - u_edge);
+      }
+    // Betti on the region between the half circle and the edge: J(rho_1) = J(0+) + face,
+    // with the face term's sign from t* . u~ = s*_rr u~_r on the contact face.
+    const double a_1 = (j_h - face) / c1;
+    return std::sqrt(2.0 * M_PI) * a_1;
+  }
+
   std::vector<std::pair<double, double>> consistent_contact_pressure(const RfmModel &model,
                                                                      const Problem &problem,
                                                                      const double c, const int n,
@@ -112,6 +166,10 @@ namespace rfm
             {"force_trace", it.force_trace},
             {"edge_intensity", std::isfinite(it.edge_intensity) ? nlohmann::json(it.edge_intensity)
                                                                  : nlohmann::json(nullptr)},
+            {"edge_intensity_reciprocal_work",
+             std::isfinite(it.edge_intensity_reciprocal_work)
+               ? nlohmann::json(it.edge_intensity_reciprocal_work)
+               : nlohmann::json(nullptr)},
             {"lagrange", it.lagrange},
             {"castigliano", it.castigliano},
             {"reissner", it.reissner},
@@ -138,7 +196,15 @@ namespace rfm
     const Functionals phi = model.solution().functionals();
     it.lagrange = phi.lagrange, it.castigliano = phi.castigliano, it.reissner = phi.reissner;
     it.assembly_s = model.assembly_seconds(), it.solve_s = model.solve_seconds();
-    it.edge_intensity = c < a ? model.edge_intensity() : std::numeric_limits<double>::quiet_NaN();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    it.edge_intensity = c < a ? model.edge_intensity() : nan;
+    const EdgeEnrichment *e = model.space().enrichment();
+    const bool unloaded_free_part =
+      !problem.loading || problem.loading->outer_pressure == 0.0;
+    it.edge_intensity_reciprocal_work =
+      (c < a && e && unloaded_free_part)
+        ? edge_intensity_reciprocal_work(model, problem, c, 0.05 * e->cutoff_radius())
+        : nan;
 
     // Grid on the outer side with c itself as a node.
     const int n = options.n_check_points;

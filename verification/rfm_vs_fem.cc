@@ -404,6 +404,7 @@ int main(int argc, char **argv)
             (ca <= 0.6 ? worst_short : worst_long) = std::max(ca <= 0.6 ? worst_short : worst_long, diff);
             curve.push_back({{"half_width_ratio", ca}, {"fem_force", fr.contact->force},
                              {"rfm_force", rr.final.force}, {"rfm_edge_intensity", rr.final.edge_intensity},
+                             {"rfm_edge_intensity_reciprocal_work", rr.final.edge_intensity_reciprocal_work},
                              {"force_difference_relative", diff}});
             fmt::print("P({:.2f} a): FEM L={} {:.1f} N, RFM p={} {:.1f} N ({:.2e}); K = {:.4g} Pa m^1/2\n",
                        ca, o.refinements, fr.contact->force, d.rfm.degree, rr.final.force, diff,
