@@ -36,13 +36,7 @@ namespace rfm
         if (n_e > 0)
           a.strain[c].rightCols(n_e) = edge->strain[c];
       }
-    for (int m = 0; m < 2; ++m)
-      a.u[m].setZero(n_p, 2 * n + n_e);
     const DisplacementBasisValues v = displacement_basis(b, d);
-    a.u[0].middleCols(0, n) = v.value[0];
-    a.u[1].middleCols(n, n) = v.value[1];
-    if (n_e > 0)
-      a.u[0].rightCols(n_e) = edge->u[0], a.u[1].rightCols(n_e) = edge->u[1];
     a.strain[rr].middleCols(0, n) = v.d_r[0];
     a.strain[tt].middleCols(0, n) = r.cwiseInverse().asDiagonal() * v.value[0];
     a.strain[rz].middleCols(0, n) = v.d_z[0];

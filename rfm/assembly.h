@@ -46,12 +46,12 @@ namespace rfm
                                              const DisplacementStructureValues &d);
 
   /// Every column of both spaces at points, as dense component matrices: stress[c] is
-  /// n_points x n_s (component c of every stress column), u[m] and strain[c] are
-  /// n_points x n_u. The polynomial columns are block-sparse here (zeros elsewhere): used
+  /// n_points x n_s (component c of every stress column), strain[c] is n_points x n_u
+  /// (component c of e(Phi) for every displacement column). The polynomial columns are block-sparse here (zeros elsewhere): used
   /// on the near-edge rule only, where all products with the enrichment are taken.
   struct AllColumns
   {
-    Eigen::MatrixXd stress[4], u[2], strain[4];
+    Eigen::MatrixXd stress[4], strain[4];
   };
   AllColumns all_columns(const DiscreteSpace &space, const BasisValues &b,
                          const StressStructureValues &s, const DisplacementStructureValues &d,
