@@ -2,11 +2,11 @@
 // the paper's die problem at a fixed contact zone c = 0.53 a (bilateral, one linear solve).
 #pragma once
 
-#include "rfm/problem.h"
+#include "problem/problem.h"
 
 namespace benchmarks
 {
-  inline rfm::Problem make_problem(bool die)
+  inline axisym::Problem make_problem(bool die)
   {
     nlohmann::json j = {
       {"geometry", {{"inner_radius", 0.1}, {"outer_radius", 0.2}, {"length", 0.4}}},
@@ -15,6 +15,6 @@ namespace benchmarks
       j["die"] = {{"indentation", 1e-6}}, j["contact"] = {{"method", "fixed"}, {"half_width", 0.106}};
     else
       j["loading"] = {{"inner_pressure", 1e7}};
-    return rfm::parse_problem(j);
+    return axisym::parse_problem(j);
   }
 } // namespace benchmarks

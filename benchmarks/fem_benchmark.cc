@@ -14,7 +14,7 @@ namespace
 
   void fem_solve(benchmark::State &state, bool die)
   {
-    const rfm::Problem problem = make_problem(die);
+    const axisym::Problem problem = make_problem(die);
     fem::FemOptions o = fem::options_from_problem(problem);
     o.refinements = static_cast<int>(state.range(0));
     o.progress = false;

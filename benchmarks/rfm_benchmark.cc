@@ -23,14 +23,14 @@ namespace
 {
   using benchmarks::make_problem;
 
-  std::optional<double> zone(const rfm::Problem &p)
+  std::optional<double> zone(const axisym::Problem &p)
   {
     return p.die ? p.contact.half_width : std::nullopt;
   }
 
   void assembly(benchmark::State &state, bool die)
   {
-    const rfm::Problem problem = make_problem(die);
+    const axisym::Problem problem = make_problem(die);
     rfm::DiscretizationOptions o;
     o.degree = static_cast<int>(state.range(0));
     const rfm::DiscreteSpace space(rfm::Structures(rfm::build_section(problem, zone(problem))), o, problem.material);
@@ -47,7 +47,7 @@ namespace
 
   void solve(benchmark::State &state, bool die)
   {
-    const rfm::Problem problem = make_problem(die);
+    const axisym::Problem problem = make_problem(die);
     rfm::DiscretizationOptions o;
     o.degree = static_cast<int>(state.range(0));
     const rfm::DiscreteSpace space(rfm::Structures(rfm::build_section(problem, zone(problem))), o, problem.material);

@@ -54,13 +54,11 @@ namespace fem
   void FemOptions::validate() const
   {
     auto fail = [](const std::string &field, const std::string &value, const std::string &rule) {
-      throw rfm::InputError("FEM option " + field + " = " + value + ": " + rule);
+      throw axisym::InputError("FEM option " + field + " = " + value + ": " + rule);
     };
-    if (degree < 1 || degree > 4)
-      fail("degree (fem.degree)", std::to_string(degree), "must be in [1, 4]");
-    if (refinements < 0 || refinements > 6)
-      fail("refinements (fem.refinements, --refinements)", std::to_string(refinements),
-           "must be in [0, 6] (level 6 already has 131072 cells)");
+    axisym::ranges::fem_degree.check(degree, "FEM option degree (fem.degree, --degree)");
+    axisym::ranges::fem_refinements.check(
+      refinements, "FEM option refinements (fem.refinements, --refinements)");
     if (!(penalty_factor > 0) || !std::isfinite(penalty_factor))
       fail("penalty_factor (--penalty-factor)", std::to_string(penalty_factor),
            "must be a finite number > 0");
@@ -81,7 +79,7 @@ namespace fem
       fail("radial_grading/axial_grading", std::to_string(radial_grading), "must be >= 1");
   }
 
-  FemOptions options_from_problem(const rfm::Problem &problem)
+  FemOptions options_from_problem(const axisym::Problem &problem)
   {
     FemOptions o;
     o.degree = problem.fem.degree;
@@ -118,7 +116,7 @@ namespace fem
     struct Stiffness
     {
       std::array<std::array<double, 4>, 4> d{};
-      explicit Stiffness(const rfm::Material &m)
+      explicit Stiffness(const axisym::Material &m)
       {
         const Eigen::Matrix4d dm = m.stiffness();
         for (int i = 0; i < 4; ++i)
@@ -144,17 +142,17 @@ namespace fem
     class DieDisplacement : public Function<2>
     {
     public:
-      DieDisplacement(const rfm::Die &die, const rfm::Geometry &g)
+      DieDisplacement(const axisym::Die &die, const axisym::Geometry &g)
         : Function<2>(2), die_(die), geometry_(g)
       {}
       double value(const Point<2> &p, unsigned int component) const override
       {
-        return component == 0 ? rfm::die_u_r(die_, geometry_, p[1]) : 0.0;
+        return component == 0 ? axisym::die_u_r(die_, geometry_, p[1]) : 0.0;
       }
 
     private:
-      rfm::Die die_;
-      rfm::Geometry geometry_;
+      axisym::Die die_;
+      axisym::Geometry geometry_;
     };
 
     /// u and the four stresses for DataOut (x = r is taken from the evaluation points).
@@ -209,7 +207,7 @@ namespace fem
     class AxisymmetricSolver
     {
     public:
-      AxisymmetricSolver(const rfm::Problem &problem, const FemOptions &options,
+      AxisymmetricSolver(const axisym::Problem &problem, const FemOptions &options,
                          const StressFunction &exact)
         : problem_(problem)
         , options_(options)
@@ -262,7 +260,7 @@ namespace fem
         return id == outer_contact_boundary || id == outer_free_boundary;
       }
 
-      const rfm::Problem &problem_;
+      const axisym::Problem &problem_;
       FemOptions options_;
       StressFunction exact_;
       Mode mode_ = Mode::none;
@@ -290,7 +288,7 @@ namespace fem
     // 1. Mesh.
     void AxisymmetricSolver::make_mesh()
     {
-      const rfm::Geometry &g = problem_.geometry;
+      const axisym::Geometry &g = problem_.geometry;
       HalfSectionMeshSpec spec;
       spec.inner_radius = g.inner_radius;
       spec.outer_radius = g.outer_radius;
@@ -510,7 +508,7 @@ namespace fem
                 continue;
               const Point<2> x = fv.quadrature_point(q);
               const double w = kappa_ * x[0] * fv.JxW(q);
-              const double target = rfm::die_u_r(*problem_.die, problem_.geometry, x[1]);
+              const double target = axisym::die_u_r(*problem_.die, problem_.geometry, x[1]);
               for (unsigned int i = 0; i < n; ++i)
                 {
                   if (fe_.system_to_component_index(i).first != 0)
@@ -567,7 +565,7 @@ namespace fem
           fv.get_function_values(solution_, u);
           for (unsigned int q = 0; q < n_q; ++q)
             active[k * n_q + q] =
-              u[q][0] - rfm::die_u_r(*problem_.die, problem_.geometry, fv.quadrature_point(q)[1]) >
+              u[q][0] - axisym::die_u_r(*problem_.die, problem_.geometry, fv.quadrature_point(q)[1]) >
               0.0;
         }
       return active;
@@ -577,7 +575,7 @@ namespace fem
     Evaluation AxisymmetricSolver::evaluate(const std::vector<char> *active) const
     {
       Evaluation ev;
-      const rfm::Geometry &g = problem_.geometry;
+      const axisym::Geometry &g = problem_.geometry;
       const double r1 = g.inner_radius, r2 = g.outer_radius;
 
       // Volume: U_h, the consistent reaction int s.e(v) r with v = (psi, 0), the stress error.
@@ -690,7 +688,7 @@ namespace fem
                 {
                   const Point<2> x = fv.quadrature_point(q);
                   const double w = x[0] * fv.JxW(q); // r ds with r = R2
-                  const double target = rfm::die_u_r(*problem_.die, g, x[1]);
+                  const double target = axisym::die_u_r(*problem_.die, g, x[1]);
                   const double gap = uf[q][0] - target;
                   const Stress s = d_ * strain(x[0], uf[q][0], gradf[q][0], gradf[q][1]);
                   trace += s[0] * fv.JxW(q);
@@ -980,7 +978,7 @@ namespace fem
     }
   } // namespace
 
-  FemResult solve(const rfm::Problem &problem, const FemOptions &options,
+  FemResult solve(const axisym::Problem &problem, const FemOptions &options,
                   const StressFunction &exact_stress)
   {
     options.validate();

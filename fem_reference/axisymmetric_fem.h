@@ -7,7 +7,7 @@
 // Q_p x Q_p Lagrange elements, strain e(u) = (du_r/dr, du_z/dz, u_r/r, du_r/dz + du_z/dr),
 // s = D e, bilinear form int e(v).D e(u) r dr dz, pressures as int t.v r ds.
 //
-// Die (paper eq. 4.1, rfm::die_u_r): u_r*(z) = -delta (1 - 2 z^2/a^2) on r = R2.
+// Die (paper eq. 4.1, axisym::die_u_r): u_r*(z) = -delta (1 - 2 z^2/a^2) on r = R2.
 //  * contact.method "fixed": bilateral zone, u_r = u_r* strongly on z in [0, c], free beyond.
 //  * "iterate" / "max-force": unilateral contact u_r <= u_r* by penalty at the face
 //    quadrature points of r = R2, kappa int_A (u_r - u_r*) v_r r ds over the active set
@@ -44,7 +44,7 @@
 // linear interpolation of g (half_width_gap).
 #pragma once
 
-#include "rfm/problem.h"
+#include "problem/problem.h"
 
 #include <array>
 #include <functional>
@@ -83,11 +83,11 @@ namespace fem
     std::string vtu_directory;  ///< write DIR/fem_solution.vtu when not empty
     bool progress = true;       ///< one line on stderr per active-set step
 
-    /// Throws rfm::InputError naming the option, the value and the rule.
+    /// Throws axisym::InputError naming the option, the value and the rule.
     void validate() const;
   };
 
-  FemOptions options_from_problem(const rfm::Problem &problem);
+  FemOptions options_from_problem(const axisym::Problem &problem);
 
   struct Functionals
   {
@@ -161,8 +161,8 @@ namespace fem
 
   /// Solves the problem. Numerical failures (singular matrix, CG not converging, active-set
   /// cycle or no convergence) return success = false with a message and whatever history
-  /// exists; bad options throw rfm::InputError.
-  FemResult solve(const rfm::Problem &problem, const FemOptions &options,
+  /// exists; bad options throw axisym::InputError.
+  FemResult solve(const axisym::Problem &problem, const FemOptions &options,
                   const StressFunction &exact_stress = {});
 
   /// A column of a convergence table.

@@ -15,9 +15,9 @@ namespace fem
     constexpr double paper_tolerance = 3e-3;    // 0.3 % to the paper's 128.7 kN and 0.0176 J
     constexpr double converged_tolerance = 1e-3; // relative change between two levels
 
-    rfm::Problem lame_problem()
+    axisym::Problem lame_problem()
     {
-      return rfm::parse_problem(nlohmann::json::parse(R"({
+      return axisym::parse_problem(nlohmann::json::parse(R"({
         "geometry": {"inner_radius": 0.1, "outer_radius": 0.2, "length": 0.4},
         "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3},
         "loading": {"inner_pressure": 1.0e7, "outer_pressure": 2.0e6},
@@ -25,7 +25,7 @@ namespace fem
       })"));
     }
 
-    verification::LameCylinder lame_exact(const rfm::Problem &p)
+    verification::LameCylinder lame_exact(const axisym::Problem &p)
     {
       return {p.geometry.inner_radius,    p.geometry.outer_radius,
               p.geometry.length,          p.material.youngs_modulus,
@@ -33,7 +33,7 @@ namespace fem
               p.loading->outer_pressure};
     }
 
-    rfm::Problem die_problem(const std::string &method)
+    axisym::Problem die_problem(const std::string &method)
     {
       auto j = nlohmann::json::parse(R"({
         "geometry": {"inner_radius": 0.1, "outer_radius": 0.2, "length": 0.4},
@@ -42,7 +42,7 @@ namespace fem
         "contact": {"method": "fixed"}
       })");
       j["contact"]["method"] = method;
-      return rfm::parse_problem(j);
+      return axisym::parse_problem(j);
     }
 
     FemOptions quiet(int degree, int refinements)
@@ -58,7 +58,7 @@ namespace fem
     // Gauss-Lobatto points) on levels 0..n_levels-1 (h halves).
     std::vector<double> stress_rates(int degree, int n_levels, bool max_norm = false)
     {
-      const rfm::Problem p = lame_problem();
+      const axisym::Problem p = lame_problem();
       const verification::LameCylinder exact = lame_exact(p);
       const StressFunction s = [&](double r, double z) { return exact.stress(r, z); };
       std::vector<double> errors, rates;
@@ -99,7 +99,7 @@ namespace fem
   // Traction problem: Phi_L = Phi_C = Phi_R = -U_h, and U_h <= U (Phi_L >= exact, -U).
   TEST(AxisymmetricFem, LameFunctionalsApproachMinusTheExactEnergyFromAbove)
   {
-    const rfm::Problem p = lame_problem();
+    const axisym::Problem p = lame_problem();
     const double exact = -lame_exact(p).strain_energy();
     double previous_error = 1;
     for (int level = 1; level <= 3; ++level)
@@ -120,7 +120,7 @@ namespace fem
   // Samples against the exact field; z < 0 mirrored (u_z, sigma_rz odd in z).
   TEST(AxisymmetricFem, LameSamplesMatchTheExactFieldAndMirror)
   {
-    const rfm::Problem p = lame_problem();
+    const axisym::Problem p = lame_problem();
     const verification::LameCylinder exact = lame_exact(p);
     const FemResult r = solve(p, quiet(2, 3));
     ASSERT_TRUE(r.success) << r.message;
@@ -141,7 +141,7 @@ namespace fem
   // The gmsh and the structured generators build the same vertices: same answer.
   TEST(AxisymmetricFem, GmshAndStructuredMeshesAgree)
   {
-    const rfm::Problem p = die_problem("fixed");
+    const axisym::Problem p = die_problem("fixed");
     FemOptions o = quiet(2, 1);
     const FemResult a = solve(p, o);
     o.mesh = FemOptions::MeshGenerator::structured;
@@ -157,7 +157,7 @@ namespace fem
   // 128.7 kN and 0.0176 J/rad within 0.3 % (sanity range; the converged value is the test).
   TEST(AxisymmetricFem, BilateralFullZoneForceConvergesToThePaperValue)
   {
-    const rfm::Problem p = die_problem("fixed");
+    const axisym::Problem p = die_problem("fixed");
     const FemResult coarse = solve(p, quiet(2, 2));
     const FemResult fine = solve(p, quiet(2, 3));
     ASSERT_TRUE(coarse.success && fine.success);
@@ -180,7 +180,7 @@ namespace fem
   TEST(AxisymmetricFem, UnilateralContactSettlesWithAPartialZoneAndALargerForce)
   {
     const FemResult bilateral = solve(die_problem("fixed"), quiet(2, 2));
-    const rfm::Problem p = die_problem("iterate");
+    const axisym::Problem p = die_problem("iterate");
     const FemResult r = solve(p, quiet(2, 2));
     ASSERT_TRUE(r.success) << r.message;
     const ContactResult &c = *r.contact;
@@ -224,13 +224,13 @@ namespace fem
         o.validate();
         ADD_FAILURE() << "accepted refinements = 9";
       }
-    catch (const rfm::InputError &e)
+    catch (const axisym::InputError &e)
       {
         EXPECT_NE(std::string(e.what()).find("refinements"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("9"), std::string::npos) << e.what();
       }
     o = quiet(2, 1);
     o.penalty_factor = -1;
-    EXPECT_THROW(solve(die_problem("iterate"), o), rfm::InputError);
+    EXPECT_THROW(solve(die_problem("iterate"), o), axisym::InputError);
   }
 } // namespace fem

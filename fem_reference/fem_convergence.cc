@@ -12,8 +12,8 @@
 //
 // Exit status: 0 success, 2 bad input, 3 numerical failure (the study so far is written).
 #include "fem_reference/axisymmetric_fem.h"
-#include "rfm/problem.h"
-#include "rfm/result_io.h"
+#include "problem/problem.h"
+#include "problem/json_io.h"
 #include "verification/lame_exact.h"
 
 #include <CLI/CLI.hpp>
@@ -73,9 +73,10 @@ int main(int argc, char **argv)
       int max_level = 4, degree = -1;
       std::vector<double> penalty_factors{1e1, 1e2, 1e3, 1e4};
       app.add_option("problem", problem_path, "problem file (JSON, SI units)")->required();
-      app.add_option("--max-refinements", max_level, "finest level L")->check(CLI::Range(1, 6));
+      app.add_option("--max-refinements", max_level, "finest level L")
+        ->check(CLI::Range(1, axisym::ranges::fem_refinements.hi));
       app.add_option("--degree", degree, "element degree p (default fem.degree)")
-        ->check(CLI::Range(1, 4));
+        ->check(CLI::Range(axisym::ranges::fem_degree.lo, axisym::ranges::fem_degree.hi));
       app.add_option("--penalty-factors", penalty_factors,
                      "kappa factors of the penalty study at the finest level (comma list)")
         ->delimiter(',');
@@ -89,16 +90,16 @@ int main(int argc, char **argv)
           const int status = app.exit(e);
           return status == 0 ? 0 : 2;
         }
-      const rfm::Problem problem = rfm::read_problem_file(problem_path);
+      const axisym::Problem problem = axisym::read_problem_file(problem_path);
       fem::FemOptions base = fem::options_from_problem(problem);
       if (degree > 0)
         base.degree = degree;
       base.progress = false;
       for (const double f : penalty_factors)
         if (!(f > 0) || !std::isfinite(f))
-          throw rfm::InputError("--penalty-factors: " + std::to_string(f) + " must be > 0");
+          throw axisym::InputError("--penalty-factors: " + std::to_string(f) + " must be > 0");
       if (!output_path.empty())
-        rfm::check_output_path("--output", output_path);
+        axisym::check_output_path("--output", output_path);
       const double a = problem.geometry.half_length();
       const bool unilateral = problem.die && problem.contact.method != "fixed";
 
@@ -289,10 +290,10 @@ int main(int argc, char **argv)
         }
       study["success"] = !failed;
       if (!output_path.empty())
-        rfm::write_json_atomically(output_path, study);
+        axisym::write_json_atomically(output_path, study);
       return failed ? 3 : 0;
     }
-  catch (const rfm::InputError &e)
+  catch (const axisym::InputError &e)
     {
       std::cerr << "fem_convergence: error: " << e.what() << '\n';
       return 2;

@@ -16,7 +16,7 @@ namespace fem
     }
   } // namespace
 
-  nlohmann::json result_to_json(const rfm::Problem &problem, const FemOptions &options,
+  nlohmann::json result_to_json(const axisym::Problem &problem, const FemOptions &options,
                                 const FemResult &r)
   {
     nlohmann::json j;

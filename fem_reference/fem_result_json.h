@@ -9,6 +9,6 @@ namespace fem
 {
   /// {"solver": "fem", "problem", "discretization", "functionals", "contact", "samples",
   ///  "diagnostics", "timing"}; "functionals" and "contact" only when the solve produced them.
-  nlohmann::json result_to_json(const rfm::Problem &problem, const FemOptions &options,
+  nlohmann::json result_to_json(const axisym::Problem &problem, const FemOptions &options,
                                 const FemResult &result);
 } // namespace fem

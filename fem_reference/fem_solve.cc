@@ -15,8 +15,8 @@
 // with the history so far is still written).
 #include "fem_reference/axisymmetric_fem.h"
 #include "fem_reference/fem_result_json.h"
-#include "rfm/problem.h"
-#include "rfm/result_io.h"
+#include "problem/problem.h"
+#include "problem/json_io.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -60,12 +60,13 @@ int main(int argc, char **argv)
         }
 
       // 2. Input: everything is checked before any work or output.
-      const rfm::Problem problem = rfm::read_problem_file(problem_path);
+      const axisym::Problem problem = axisym::read_problem_file(problem_path);
       fem::FemOptions options = fem::options_from_problem(problem);
-      if (refinements >= 0)
-        options.refinements = refinements;
-      else if (refinements != -1)
-        throw rfm::InputError("--refinements = " + std::to_string(refinements) + ": must be >= 0");
+      if (refinements != -1)
+        {
+          axisym::ranges::fem_refinements.check(refinements, "--refinements");
+          options.refinements = refinements;
+        }
       if (edge_fitting_passes != -1)
         options.edge_fitting_passes = edge_fitting_passes;
       if (max_iterations != -1)
@@ -79,9 +80,9 @@ int main(int argc, char **argv)
       options.vtu_directory = vtu_directory;
       options.validate();
       if (!output_path.empty())
-        rfm::check_output_path("--output", output_path);
+        axisym::check_output_path("--output", output_path);
       if (!vtu_directory.empty() && !std::filesystem::is_directory(vtu_directory))
-        throw rfm::InputError("--vtu = " + vtu_directory + ": must be an existing directory");
+        throw axisym::InputError("--vtu = " + vtu_directory + ": must be an existing directory");
       fmt::print(stderr, "fem_solve: Q{} elements, level L = {}, {} mesh, {} solver{}\n",
                  options.degree, options.refinements, mesh, solver,
                  problem.die ? ", contact.method = " + problem.contact.method : "");
@@ -90,7 +91,7 @@ int main(int argc, char **argv)
       const fem::FemResult r = fem::solve(problem, options);
       const nlohmann::json result = fem::result_to_json(problem, options, r);
       if (!output_path.empty())
-        rfm::write_json_atomically(output_path, result);
+        axisym::write_json_atomically(output_path, result);
       else
         std::cout << result.dump(2) << '\n';
       if (!r.success)
@@ -108,7 +109,7 @@ int main(int argc, char **argv)
                    r.contact->force, r.contact->force_trace);
       return 0;
     }
-  catch (const rfm::InputError &e)
+  catch (const axisym::InputError &e)
     {
       std::cerr << "fem_solve: error: " << e.what() << '\n';
       return 2;

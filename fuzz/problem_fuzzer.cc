@@ -1,7 +1,7 @@
-// libFuzzer target for the problem-file parser (rfm/problem.h). Any input must either
-// parse into a valid Problem or be rejected with rfm::InputError; every other exception,
+// libFuzzer target for the problem-file parser (problem/problem.h). Any input must either
+// parse into a valid Problem or be rejected with axisym::InputError; every other exception,
 // crash or sanitizer report is a bug. Build and run: scripts/fuzz.sh [SECONDS].
-#include "rfm/problem.h"
+#include "problem/problem.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -22,13 +22,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     }
   try
     {
-      const rfm::Problem p = rfm::parse_problem(j);
+      const axisym::Problem p = axisym::parse_problem(j);
       // A parsed problem is physically valid.
       if (!(p.geometry.outer_radius > p.geometry.inner_radius && p.geometry.inner_radius > 0 &&
             p.material.poisson_ratio < 0.5 && p.material.poisson_ratio > -1))
         std::abort();
     }
-  catch (const rfm::InputError &)
+  catch (const axisym::InputError &)
     {
     }
   catch (const std::exception &e)

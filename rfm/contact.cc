@@ -7,6 +7,12 @@
 
 namespace rfm
 {
+  using axisym::Die;
+  using axisym::Geometry;
+  using axisym::InputError;
+  using axisym::Loading;
+  using axisym::Problem;
+
   namespace
   {
     // Linear interpolation of the zero of f between (z0, f0) and (z1, f1), f0 f1 <= 0.

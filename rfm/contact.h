@@ -101,17 +101,17 @@ namespace rfm
 
   /// Solves at c and checks the conditions (precondition: problem.die set, 0 < c <= a).
   /// Sets `model` to the solved model; on a numerical failure returns success = false.
-  ContactResult solve_contact(const Problem &problem, const DiscretizationOptions &discretization,
+  ContactResult solve_contact(const axisym::Problem &problem, const DiscretizationOptions &discretization,
                               const ContactOptions &options);
 
   /// The check of one fixed c (used by solve_contact and the verification drivers).
-  ContactIterate check_contact(const Problem &problem, const RfmModel &model,
+  ContactIterate check_contact(const axisym::Problem &problem, const RfmModel &model,
                                const ContactOptions &options);
 
   /// One iterate as JSON (result files and drivers): c [m], c/a, P and P trace [N], the
   /// functionals [J/rad], the violations (absolute and relative to the peak pressure and
   /// to delta), the two conditions, the phase and the time [s].
-  nlohmann::json to_json(const ContactIterate &it, const Problem &problem);
+  nlohmann::json to_json(const ContactIterate &it, const axisym::Problem &problem);
 
   /// Contact pressure p(z) = -sigma_rr(R2, z) for z in [0, c] at n points (the trace of
   /// the stress field, with the edge modes).
@@ -128,7 +128,7 @@ namespace rfm
   /// axisymmetric body the hoop terms make it approximate, to O(rho_1 / R2).
   /// Returns K = sqrt(2 pi) a_1 [Pa m^1/2]. Precondition: model.ok(), 0 < c < a, the free
   /// part unloaded, 0 < rho_1 < min(c, a - c, R2 - R1).
-  double edge_intensity_reciprocal_work(const RfmModel &model, const Problem &problem, double c,
+  double edge_intensity_reciprocal_work(const RfmModel &model, const axisym::Problem &problem, double c,
                                         double rho_1);
 
   /// Contact pressure as consistent reactions (Babuska and Miller; DESIGN.md 4.4). With the
@@ -143,7 +143,7 @@ namespace rfm
   /// domain-integral force: P = 2 pi m_0. Returns (z, p) at n points of [0, c].
   /// Precondition: model.ok(), 0 < c < a, n_moments >= 1.
   std::vector<std::pair<double, double>> consistent_contact_pressure(const RfmModel &model,
-                                                                     const Problem &problem,
+                                                                     const axisym::Problem &problem,
                                                                      double c, int n, int n_moments);
   /// Moments used by default: 3 (the pressure is sqrt(1 - z^2/c^2) times a polynomial of
   /// degree 4). Higher moments of the mixed stress carry more of its error than the shape

@@ -6,6 +6,9 @@
 
 namespace rfm
 {
+  using axisym::parse_problem;
+  using axisym::Problem;
+
   namespace
   {
     Problem die_problem(double delta, const std::string &method, int degree = 6)

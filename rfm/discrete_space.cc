@@ -7,32 +7,6 @@
 
 namespace rfm
 {
-  void DiscretizationOptions::validate() const
-  {
-    auto fail = [](const std::string &field, const double value, const std::string &rule) {
-      throw std::invalid_argument("rfm." + field + " = " + std::to_string(value) +
-                                  ": must be " + rule);
-    };
-    if (degree < 0 || degree > 40)
-      fail("degree", degree, "an integer in [0, 40]");
-    if (extra_gauss_points < 1 || extra_gauss_points > 40)
-      fail("extra_gauss_points", extra_gauss_points, "an integer in [1, 40]");
-    if (n_cells_r < 1 || n_cells_r > 64)
-      fail("n_cells_r", n_cells_r, "an integer in [1, 64]");
-    if (n_cells_z < 1 || n_cells_z > 64)
-      fail("n_cells_z", n_cells_z, "an integer in [1, 64]");
-    if (n_graded_layers < 0 || n_graded_layers > 40)
-      fail("n_graded_layers", n_graded_layers, "an integer in [0, 40]");
-    if (!(grading_ratio > 0.0 && grading_ratio < 1.0))
-      fail("grading_ratio", grading_ratio, "in (0, 1)");
-    if (edge_modes < 0 || edge_modes > 4)
-      fail("edge_modes", edge_modes, "an integer in [0, 4]");
-    if (!(edge_cutoff > 0.0 && edge_cutoff < 1.0))
-      fail("edge_cutoff", edge_cutoff, "in (0, 1) (a fraction of min(c, a - c, R2 - R1))");
-    if (edge_extra_points < 0 || edge_extra_points > 40)
-      fail("edge_extra_points", edge_extra_points, "an integer in [0, 40]");
-  }
-
   std::vector<double> section_cells(const double a, const double b, const int n_uniform,
                                     const std::vector<double> &break_points,
                                     const int n_graded_layers, const double grading_ratio)

@@ -13,6 +13,8 @@
 #include "rfm/quadrature.h"
 #include "rfm/structures.h"
 
+#include "problem/settings.h"
+
 #include <Eigen/Core>
 
 #include <array>
@@ -21,27 +23,8 @@
 
 namespace rfm
 {
-  struct DiscretizationOptions
-  {
-    int degree = 8;             ///< p: N = (p + 1)^2 functions per unknown component
-    int extra_gauss_points = 4; ///< Gauss points per direction and cell = p + this
-    int n_cells_r = 1;          ///< uniform cells in r before splitting at break points
-    int n_cells_z = 1;          ///< uniform cells in z before splitting at break points
-    int n_graded_layers = 8;    ///< geometric layers toward each break point
-    double grading_ratio = 0.35; ///< width ratio between successive graded layers
-    /// Contact-edge enrichment (edge_modes.h): the odd modes n = 1, 3, ..., 2 k - 1 for
-    /// k = edge_modes, added to both the stress and the displacement space at every
-    /// contact edge; 0 switches it off.
-    int edge_modes = 2;
-    /// Cutoff radius rho_0 as a fraction of the largest admissible one,
-    /// min(c - z_min, z_max - c, r_max - r_min) (the support must not reach another side).
-    double edge_cutoff = 0.9;
-    /// Gauss points per direction of the near-edge rule = p + extra_gauss_points + this.
-    int edge_extra_points = 6;
-
-    /// Throws std::invalid_argument naming the field, the value and the rule.
-    void validate() const;
-  };
+  /// The "rfm" settings of a problem file (problem/settings.h, with their ranges).
+  using DiscretizationOptions = axisym::RfmSettings;
 
   /// Points on the boundary parts where boundary integrals are taken.
   struct BoundaryQuadrature

@@ -6,6 +6,12 @@
 
 namespace rfm
 {
+  using axisym::Die;
+  using axisym::Geometry;
+  using axisym::InputError;
+  using axisym::Loading;
+  using axisym::Problem;
+
   Section build_section(const Problem &problem, const std::optional<double> half_width)
   {
     const Geometry &g = problem.geometry;

@@ -9,7 +9,7 @@
 #pragma once
 
 #include "rfm/assembly.h"
-#include "rfm/problem.h"
+#include "problem/problem.h"
 #include "rfm/saddle_point_solver.h"
 #include "rfm/solution.h"
 
@@ -21,12 +21,12 @@ namespace rfm
   /// Half section with its parts: inner and top traction (pressure, free end), bottom
   /// symmetry, outer traction or, with a die, contact on z in [0, c] and traction beyond.
   /// Precondition: problem validated; 0 < half_width <= a when the problem has a die.
-  Section build_section(const Problem &problem, std::optional<double> half_width);
+  Section build_section(const axisym::Problem &problem, std::optional<double> half_width);
 
   /// Peak memory of one solve [bytes], estimated before any allocation: quadrature
   /// points times basis size for the ~14 dense point-by-function matrices of assembly,
   /// plus the saddle-point matrices (R11, R12, their factors and the Schur complement).
-  double estimate_memory_bytes(const Problem &problem, const DiscretizationOptions &options,
+  double estimate_memory_bytes(const axisym::Problem &problem, const DiscretizationOptions &options,
                                std::optional<double> half_width);
 
   struct ContactForce
@@ -39,7 +39,7 @@ namespace rfm
   class RfmModel
   {
   public:
-    RfmModel(const Problem &problem, const DiscretizationOptions &options,
+    RfmModel(const axisym::Problem &problem, const DiscretizationOptions &options,
              std::optional<double> half_width, const SolverOptions &solver_options = {});
 
     const SolveSummary &summary() const { return summary_; }

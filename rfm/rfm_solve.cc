@@ -13,8 +13,8 @@
 #include "rfm/allocator.h"
 #include "rfm/contact.h"
 #include "rfm/model.h"
-#include "rfm/problem.h"
-#include "rfm/result_io.h"
+#include "problem/problem.h"
+#include "problem/json_io.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -24,7 +24,7 @@
 
 namespace
 {
-  nlohmann::json fields_to_json(const rfm::Problem &problem, const rfm::RfmModel &model)
+  nlohmann::json fields_to_json(const axisym::Problem &problem, const rfm::RfmModel &model)
   {
     nlohmann::json out = nlohmann::json::array();
     if (problem.samples.empty())
@@ -46,7 +46,7 @@ namespace
     return out;
   }
 
-  nlohmann::json contact_to_json(const rfm::Problem &problem, const rfm::ContactResult &c)
+  nlohmann::json contact_to_json(const axisym::Problem &problem, const rfm::ContactResult &c)
   {
     const double a = problem.geometry.half_length();
     nlohmann::json out = {{"method", c.method}, {"message", c.message}};
@@ -86,7 +86,7 @@ namespace
   }
 
   // P(c) at curve_points zone widths in (0, a] (bilateral solves).
-  nlohmann::json force_curve(const rfm::Problem &problem)
+  nlohmann::json force_curve(const axisym::Problem &problem)
   {
     const double a = problem.geometry.half_length();
     const int n = problem.contact.curve_points;
@@ -120,7 +120,7 @@ int main(int argc, char **argv)
       int degree = -1;
       app.add_option("problem", problem_path, "problem file (JSON, SI units)")->required();
       app.add_option("--degree", degree, "polynomial degree p per variable: N = (p+1)^2")
-        ->check(CLI::Range(0, 40));
+        ->check(CLI::Range(axisym::ranges::rfm_degree.lo, axisym::ranges::rfm_degree.hi));
       app.add_option("--output", output_path, "result file (JSON); default: stdout summary only");
       try
         {
@@ -133,11 +133,11 @@ int main(int argc, char **argv)
         }
 
       // 2. Input: everything is checked before any work or output.
-      rfm::Problem problem = rfm::read_problem_file(problem_path);
+      axisym::Problem problem = axisym::read_problem_file(problem_path);
       if (degree >= 0)
         problem.rfm.degree = degree;
       if (!output_path.empty())
-        rfm::check_output_path("--output", output_path);
+        axisym::check_output_path("--output", output_path);
       {
         // Memory: estimated before any allocation, against the machine's physical memory.
         const double bytes = rfm::estimate_memory_bytes(
@@ -148,7 +148,7 @@ int main(int argc, char **argv)
         const double available = static_cast<double>(sysconf(_SC_PHYS_PAGES)) *
                                  static_cast<double>(sysconf(_SC_PAGE_SIZE));
         if (bytes > 0.75 * available)
-          throw rfm::InputError(fmt::format(
+          throw axisym::InputError(fmt::format(
             "rfm.degree = {} (with extra_gauss_points = {}, n_graded_layers = {}, n_cells = {} x {}): "
             "a solve needs about {:.1f} GiB, more than 75 % of this machine's {:.1f} GiB: lower the "
             "degree or the quadrature",
@@ -215,7 +215,7 @@ int main(int argc, char **argv)
           result["diagnostics"]["status"] = "failed";
           result["diagnostics"]["message"] = msg;
           if (!output_path.empty())
-            rfm::write_json_atomically(output_path, result);
+            axisym::write_json_atomically(output_path, result);
           fmt::print(stderr, "rfm_solve: numerical failure: {}\n", msg);
           return 3;
         }
@@ -240,7 +240,7 @@ int main(int argc, char **argv)
           result["diagnostics"]["message"] = "non-finite functional";
         }
       if (!output_path.empty())
-        rfm::write_json_atomically(output_path, result);
+        axisym::write_json_atomically(output_path, result);
       fmt::print(stderr, "rfm_solve: Phi_L = {:.6e}, Phi_C = {:.6e}, Phi_R = {:.6e} J/rad; "
                          "assembly {:.3f} s, solve {:.3f} s\n",
                  phi.lagrange, phi.castigliano, phi.reissner, assembly_s, solve_s);
@@ -259,7 +259,7 @@ int main(int argc, char **argv)
         std::cout << result.dump(2) << '\n';
       return 0;
     }
-  catch (const rfm::InputError &e)
+  catch (const axisym::InputError &e)
     {
       std::cerr << "rfm_solve: error: " << e.what() << '\n';
       return 2;

@@ -18,8 +18,8 @@
 //   build/bin/die_contact --mode quick --output-dir build/verification-output
 #include "rfm/allocator.h"
 #include "rfm/contact.h"
-#include "rfm/problem.h"
-#include "rfm/result_io.h"
+#include "problem/problem.h"
+#include "problem/json_io.h"
 #include "verification/tolerances.h"
 
 #include <CLI/CLI.hpp>
@@ -72,7 +72,7 @@ int main(int argc, char **argv)
       std::filesystem::create_directories(output_dir);
 
       const std::string file = "verification/problems/die_paper.json";
-      rfm::Problem base = rfm::read_problem_file(source_dir + "/" + file);
+      axisym::Problem base = axisym::read_problem_file(source_dir + "/" + file);
       const double a = base.geometry.half_length();
       const bool full = mode == "full";
       const std::vector<int> degrees = full ? std::vector<int>{6, 8, 10, 12, 14, 16}
@@ -91,7 +91,7 @@ int main(int argc, char **argv)
                  "Phi_C [J]", "Phi_R [J]", "Phi_L [J]");
       for (const int p : degrees)
         {
-          rfm::Problem pr = base;
+          axisym::Problem pr = base;
           pr.contact.method = "fixed";
           pr.contact.half_width = a;
           pr.rfm.degree = p;
@@ -141,7 +141,7 @@ int main(int argc, char **argv)
                  "Phi_R", "Phi_L", "solves", "time [s]");
       for (const Run &run : runs)
         {
-          rfm::Problem pr = base;
+          axisym::Problem pr = base;
           pr.contact.method = run.method;
           pr.rfm.degree = run.degree;
           if (run.doubled)
@@ -188,7 +188,7 @@ int main(int argc, char **argv)
               for (const auto &it : r.history)
                 if (it.phase == "iteration" || it.phase == "final")
                   {
-                    rfm::Problem fixed = pr;
+                    axisym::Problem fixed = pr;
                     const rfm::RfmModel m(fixed, pr.rfm, it.half_width);
                     nlohmann::json pj = pressure_json(m, it.half_width);
                     pj["phase"] = it.phase;
@@ -244,7 +244,7 @@ int main(int argc, char **argv)
             {
               if (!on && p > 14)
                 continue; // 23-30 solves each without the modes: kept out of the 5-minute report
-              rfm::Problem pr = base;
+              axisym::Problem pr = base;
               pr.rfm.degree = p;
               pr.rfm.edge_modes = on ? rfm::DiscretizationOptions{}.edge_modes : 0;
               pr.contact.method = on ? "edge-intensity" : "iterate";
@@ -274,7 +274,7 @@ int main(int argc, char **argv)
 
       // 4. P(c): bilateral solves over c, at p = 12.
       {
-        rfm::Problem pr = base;
+        axisym::Problem pr = base;
         pr.rfm.degree = 12;
         const int n = full ? 36 : 12;
         for (int k = 0; k <= n; ++k)
@@ -289,7 +289,7 @@ int main(int argc, char **argv)
 
       // 5. Linearity in delta.
       {
-        rfm::Problem p1 = base, p2 = base;
+        axisym::Problem p1 = base, p2 = base;
         p1.rfm.degree = p2.rfm.degree = 10;
         p2.die->indentation = 2 * base.die->indentation;
         const rfm::ContactResult r1 = rfm::solve_contact(p1, p1.rfm, options);
@@ -304,7 +304,7 @@ int main(int argc, char **argv)
 
       // 6. Write and gate.
       const std::string out_file = output_dir + "/die_contact.json";
-      rfm::write_json_atomically(out_file, results);
+      axisym::write_json_atomically(out_file, results);
       fmt::print("\nwrote {}\n", out_file);
       if (!tolerances.empty())
         {

@@ -18,8 +18,8 @@
 //   build/bin/lame_cylinder --mode quick --output-dir build/verification
 #include "rfm/allocator.h"
 #include "rfm/model.h"
-#include "rfm/problem.h"
-#include "rfm/result_io.h"
+#include "problem/problem.h"
+#include "problem/json_io.h"
 #include "verification/lame_errors.h"
 #include "verification/tolerances.h"
 
@@ -104,7 +104,7 @@ int main(int argc, char **argv)
         {
           // 2. One case: the problem file, its exact solution, a sweep over p.
           const std::string path = source_dir + "/verification/problems/" + cf.file;
-          const rfm::Problem problem = rfm::read_problem_file(path);
+          const axisym::Problem problem = axisym::read_problem_file(path);
           const verification::LameCylinder exact = verification::exact_of(problem);
           const double phi_exact = -exact.strain_energy();
           nlohmann::json c = {{"problem_file", "verification/problems/" + cf.file},
@@ -176,7 +176,7 @@ int main(int argc, char **argv)
 
       // 3. Write the results, then gate them.
       const std::string out_file = output_dir + "/lame_cylinder.json";
-      rfm::write_json_atomically(out_file, results);
+      axisym::write_json_atomically(out_file, results);
       fmt::print("\nwrote {}\n", out_file);
       if (!tolerances.empty())
         {

@@ -6,7 +6,7 @@
 
 namespace verification
 {
-  LameCylinder exact_of(const rfm::Problem &p)
+  LameCylinder exact_of(const axisym::Problem &p)
   {
     return {p.geometry.inner_radius,   p.geometry.outer_radius,   p.geometry.length,
             p.material.youngs_modulus, p.material.poisson_ratio,  p.loading->inner_pressure,

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "rfm/model.h"
-#include "rfm/problem.h"
+#include "problem/problem.h"
 #include "verification/lame_exact.h"
 
 #include <utility>
@@ -11,7 +11,7 @@
 namespace verification
 {
   /// The exact solution for a problem file with `loading` (precondition: loading set).
-  LameCylinder exact_of(const rfm::Problem &p);
+  LameCylinder exact_of(const axisym::Problem &p);
 
   /// Relative L2 error of the stress tensor (Frobenius: sigma_rz counted twice, weight r)
   /// on a 4 x 4-cell, 24-point Gauss rule independent of the assembly rule, and the max

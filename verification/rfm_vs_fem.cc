@@ -15,7 +15,7 @@
 #include "fem_reference/axisymmetric_fem.h"
 #include "rfm/allocator.h"
 #include "rfm/contact.h"
-#include "rfm/result_io.h"
+#include "problem/json_io.h"
 #include "verification/lame_errors.h"
 #include "verification/tolerances.h"
 
@@ -71,8 +71,8 @@ int main(int argc, char **argv)
       nlohmann::json results = {{"driver", "rfm_vs_fem"}, {"mode", mode}};
 
       // 1. Lame cylinder.
-      const rfm::Problem lame =
-        rfm::read_problem_file(source_dir + "/verification/problems/lame_paper.json");
+      const axisym::Problem lame =
+        axisym::read_problem_file(source_dir + "/verification/problems/lame_paper.json");
       const verification::LameCylinder exact = verification::exact_of(lame);
       fmt::print("== Lame cylinder: stress error against work ==\n");
       nlohmann::json fem_runs = nlohmann::json::array(), rfm_runs = nlohmann::json::array();
@@ -110,7 +110,7 @@ int main(int argc, char **argv)
                 // Stresses through the thickness at z = 0 and along the end z = a of this
                 // coarse Q2 mesh, for the report's figure beside the RFM and the exact
                 // solution: a second, untimed solve with sample points.
-                rfm::Problem lp = lame;
+                axisym::Problem lp = lame;
                 lp.samples.clear();
                 for (const double z : {0.0, 0.5 * lame.geometry.length})
                   for (int i = 0; i <= 40; ++i)
@@ -167,8 +167,8 @@ int main(int argc, char **argv)
         }
 
       // 2. Die contact.
-      rfm::Problem die =
-        rfm::read_problem_file(source_dir + "/verification/problems/die_paper.json");
+      axisym::Problem die =
+        axisym::read_problem_file(source_dir + "/verification/problems/die_paper.json");
       const double a = die.geometry.half_length();
       fmt::print("\n== Die contact ==\n");
       // The resolved configuration: the problem files as read and the FEM options they give.
@@ -198,7 +198,7 @@ int main(int argc, char **argv)
       }
       // 2a. Iteration 0, both methods.
       {
-        rfm::Problem d0 = die;
+        axisym::Problem d0 = die;
         d0.contact.method = "fixed";
         d0.contact.half_width = a;
         fem::FemOptions o = fem::options_from_problem(d0);
@@ -226,7 +226,7 @@ int main(int argc, char **argv)
       const Eigen::VectorXd profile_r = Eigen::VectorXd::LinSpaced(81, r1, r2);
       for (int level = 0; level <= fem_levels; ++level)
         {
-          rfm::Problem d = die;
+          axisym::Problem d = die;
           d.contact.method = "iterate";
           const bool finest = level == fem_levels;
           if (finest) // sigma_rr(r, 0) samples; this run is the reference, not a time-to-accuracy point
@@ -279,7 +279,7 @@ int main(int argc, char **argv)
             const int last_other = full ? 14 : 10;
             if (method != "edge-intensity" && (full ? (p != 8 && p != 12 && p != 14) : p != 10))
               continue;
-            rfm::Problem d = die;
+            axisym::Problem d = die;
             d.contact.method = method;
             d.rfm.degree = p;
             const auto t0 = std::chrono::steady_clock::now();
@@ -389,7 +389,7 @@ int main(int argc, char **argv)
         double worst_short = 0.0, worst_long = 0.0; // c/a <= 0.6 and >= 0.8
         for (const double ca : {0.45, 0.5, 0.6, 0.8, 0.9})
           {
-            rfm::Problem d = die;
+            axisym::Problem d = die;
             d.contact.method = "fixed";
             d.contact.half_width = ca * a;
             d.rfm.degree = default_degree;
@@ -417,7 +417,7 @@ int main(int argc, char **argv)
         double k_sign[2];
         for (int side = 0; side < 2; ++side)
           {
-            rfm::Problem d = die;
+            axisym::Problem d = die;
             d.contact.method = "fixed";
             d.contact.half_width = c_ref * a * (side == 0 ? 0.997 : 1.003);
             d.rfm.degree = default_degree;
@@ -432,7 +432,7 @@ int main(int argc, char **argv)
       // 2d. p(z) at the default degree, trace and consistent reactions, against the finest
       //     FEM's penalty pressure: max over the FEM's points of |p - p_FEM| / p_FEM(0).
       {
-        rfm::Problem d = die;
+        axisym::Problem d = die;
         d.contact.method = "edge-intensity";
         d.rfm.degree = default_degree;
         const rfm::ContactResult r = rfm::solve_contact(d, d.rfm, rfm::ContactOptions{});
@@ -485,7 +485,7 @@ int main(int argc, char **argv)
       if (full)
         for (const double ca : {0.45, 0.5, 0.52, 0.54, 0.6, 0.7})
           {
-            rfm::Problem d = die;
+            axisym::Problem d = die;
             d.contact.method = "fixed";
             d.contact.half_width = ca * a;
             fem::FemOptions o = fem::options_from_problem(d);
@@ -499,7 +499,7 @@ int main(int argc, char **argv)
 
       // 3. Write and gate.
       const std::string out_file = output_dir + "/rfm_vs_fem.json";
-      rfm::write_json_atomically(out_file, results);
+      axisym::write_json_atomically(out_file, results);
       fmt::print("\nwrote {}\n", out_file);
       if (!tolerances.empty())
         {

@@ -1,11 +1,11 @@
-#include "rfm/problem.h"
+#include "problem/problem.h"
 
 #include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
 
-namespace rfm
+namespace axisym
 {
   namespace
   {
@@ -63,16 +63,15 @@ namespace rfm
         return x;
       }
 
-      int integer(const std::string &key, const int lo, const int hi) const
+      /// An integer in the range of the table in problem/settings.h.
+      int integer(const std::string &key, const IntRange &range) const
       {
-        const std::string rule =
-          "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
         const json &v = j_.at(key);
         if (!v.is_number_integer())
-          fail(field(key), v, "must be " + rule);
+          fail(field(key), v, "must be " + range.rule());
         const long long x = v.get<long long>();
-        if (x < lo || x > hi)
-          fail(field(key), v, "must be " + rule);
+        if (!range.contains(x))
+          fail(field(key), v, "must be " + range.rule());
         return static_cast<int>(x);
       }
 
@@ -156,7 +155,7 @@ namespace rfm
       {
         const ObjectReader c(top.at("contact"), "contact", {"method", "half_width", "curve_points"});
         if (c.has("curve_points"))
-          p.contact.curve_points = c.integer("curve_points", 0, 200);
+          p.contact.curve_points = c.integer("curve_points", ranges::contact_curve_points);
         if (c.has("method"))
           p.contact.method =
             c.string("method", {"edge-intensity", "fixed", "iterate", "max-force"});
@@ -200,34 +199,34 @@ namespace rfm
                               "n_graded_layers", "grading_ratio", "edge_modes", "edge_cutoff",
                               "edge_extra_points"});
         if (r.has("degree"))
-          p.rfm.degree = r.integer("degree", 0, 40);
+          p.rfm.degree = r.integer("degree", ranges::rfm_degree);
         if (r.has("extra_gauss_points"))
-          p.rfm.extra_gauss_points = r.integer("extra_gauss_points", 1, 40);
+          p.rfm.extra_gauss_points = r.integer("extra_gauss_points", ranges::rfm_extra_gauss_points);
         if (r.has("n_cells_r"))
-          p.rfm.n_cells_r = r.integer("n_cells_r", 1, 64);
+          p.rfm.n_cells_r = r.integer("n_cells_r", ranges::rfm_n_cells_r);
         if (r.has("n_cells_z"))
-          p.rfm.n_cells_z = r.integer("n_cells_z", 1, 64);
+          p.rfm.n_cells_z = r.integer("n_cells_z", ranges::rfm_n_cells_z);
         if (r.has("n_graded_layers"))
-          p.rfm.n_graded_layers = r.integer("n_graded_layers", 0, 40);
+          p.rfm.n_graded_layers = r.integer("n_graded_layers", ranges::rfm_n_graded_layers);
         if (r.has("grading_ratio"))
           p.rfm.grading_ratio =
             r.number("grading_ratio", "must be in (0, 1)", [](double x) { return x > 0 && x < 1; });
         if (r.has("edge_modes"))
-          p.rfm.edge_modes = r.integer("edge_modes", 0, 4);
+          p.rfm.edge_modes = r.integer("edge_modes", ranges::rfm_edge_modes);
         if (r.has("edge_cutoff"))
           p.rfm.edge_cutoff = r.number(
             "edge_cutoff", "must be in (0, 1): the cutoff radius as a fraction of min(c, a - c, R2 - R1)",
             [](double x) { return x > 0 && x < 1; });
         if (r.has("edge_extra_points"))
-          p.rfm.edge_extra_points = r.integer("edge_extra_points", 0, 40);
+          p.rfm.edge_extra_points = r.integer("edge_extra_points", ranges::rfm_edge_extra_points);
       }
     if (top.has("fem"))
       {
         const ObjectReader f(top.at("fem"), "fem", {"degree", "refinements"});
         if (f.has("degree"))
-          p.fem.degree = f.integer("degree", 1, 4);
+          p.fem.degree = f.integer("degree", ranges::fem_degree);
         if (f.has("refinements"))
-          p.fem.refinements = f.integer("refinements", 0, 8);
+          p.fem.refinements = f.integer("refinements", ranges::fem_refinements);
       }
     return p;
   }
@@ -260,4 +259,4 @@ namespace rfm
     const double a = g.half_length();
     return 4.0 * die.indentation * z / (a * a);
   }
-} // namespace rfm
+} // namespace axisym

@@ -1,6 +1,6 @@
-#include "rfm/result_io.h"
+#include "problem/json_io.h"
 
-#include "rfm/problem.h"
+#include "problem/input_error.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <unistd.h>
 
-namespace rfm
+namespace axisym
 {
   void write_json_atomically(const std::string &path, const nlohmann::json &j)
   {
@@ -47,4 +47,4 @@ namespace rfm
       throw InputError(option + " = " + path + ": directory " + dir.string() +
                        " is not writable");
   }
-} // namespace rfm
+} // namespace axisym

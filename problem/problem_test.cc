@@ -1,8 +1,8 @@
-#include "rfm/problem.h"
+#include "problem/problem.h"
 
 #include <gtest/gtest.h>
 
-namespace rfm
+namespace axisym
 {
   namespace
   {
@@ -97,4 +97,4 @@ namespace rfm
   {
     EXPECT_THROW(read_problem_file("/nonexistent/problem.json"), InputError);
   }
-} // namespace rfm
+} // namespace axisym

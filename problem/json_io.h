@@ -1,11 +1,11 @@
-// Result files (DESIGN.md section 7) and their atomic writing.
+// Result files (DESIGN.md section 7) and their atomic writing, for both solvers.
 #pragma once
 
 #include <nlohmann/json.hpp>
 
 #include <string>
 
-namespace rfm
+namespace axisym
 {
   /// Writes `j` (2-space indented) to `path` through a temporary file in the same
   /// directory and a rename, so that readers never see a half-written file. Throws
@@ -15,4 +15,4 @@ namespace rfm
   /// Checks before any work that `path` can be written (directory exists and is
   /// writable); throws InputError naming the option and the path.
   void check_output_path(const std::string &option, const std::string &path);
-} // namespace rfm
+} // namespace axisym

@@ -1,4 +1,5 @@
 // Problem files (JSON, SI units) shared by rfm_solve and fem_solve: DESIGN.md section 7.
+// This is the problem layer below both solvers: no RFM and no deal.II in here.
 //
 //   { "geometry": {"inner_radius": m, "outer_radius": m, "length": m},
 //     "material": {"youngs_modulus": Pa, "poisson_ratio": -},
@@ -15,8 +16,9 @@
 // the value and the rule. The body spans r in [R1, R2], z in [-length/2, length/2].
 #pragma once
 
-#include "rfm/discrete_space.h"
-#include "rfm/material.h"
+#include "problem/input_error.h"
+#include "problem/material.h"
+#include "problem/settings.h"
 
 #include <nlohmann/json.hpp>
 
@@ -26,15 +28,8 @@
 #include <string>
 #include <vector>
 
-namespace rfm
+namespace axisym
 {
-  /// Bad input: the message names the field, the value and the rule. Exit status 2.
-  class InputError : public std::runtime_error
-  {
-  public:
-    using std::runtime_error::runtime_error;
-  };
-
   struct Geometry
   {
     double inner_radius = 0.1, outer_radius = 0.2, length = 0.4; ///< [m]
@@ -54,20 +49,6 @@ namespace rfm
     std::string profile = "parabolic";
   };
 
-  struct ContactSettings
-  {
-    /// "edge-intensity" (default: the root of K(c)), "fixed", "iterate" or "max-force"
-    std::string method = "edge-intensity";
-    std::optional<double> half_width; ///< c [m] for "fixed"; default a
-    int curve_points = 0;             ///< extension: sample P(c) at this many c in (0, a]
-  };
-
-  struct FemSettings
-  {
-    int degree = 2;
-    int refinements = 4;
-  };
-
   struct Problem
   {
     Geometry geometry;
@@ -76,7 +57,7 @@ namespace rfm
     std::optional<Die> die;
     ContactSettings contact;
     std::vector<std::array<double, 2>> samples; ///< (r, z) [m]
-    DiscretizationOptions rfm;
+    RfmSettings rfm;
     FemSettings fem;
     nlohmann::json source; ///< the file as read, echoed into results
   };
@@ -89,4 +70,4 @@ namespace rfm
   /// Die indentation u_r*(z) and its derivative for the problem's profile.
   double die_u_r(const Die &die, const Geometry &g, double z);
   double die_u_r_derivative(const Die &die, const Geometry &g, double z);
-} // namespace rfm
+} // namespace axisym

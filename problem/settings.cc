@@ -1,0 +1,37 @@
+#include "problem/settings.h"
+
+#include "problem/input_error.h"
+
+namespace axisym
+{
+  std::string IntRange::rule() const
+  {
+    std::string s = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    if (*reason != '\0')
+      s += std::string(" (") + reason + ")";
+    return s;
+  }
+
+  void IntRange::check(const long long x, const std::string &shown_as) const
+  {
+    if (!contains(x))
+      throw InputError(shown_as + " = " + std::to_string(x) + ": must be " + rule());
+  }
+
+  void RfmSettings::validate() const
+  {
+    ranges::rfm_degree.check(degree);
+    ranges::rfm_extra_gauss_points.check(extra_gauss_points);
+    ranges::rfm_n_cells_r.check(n_cells_r);
+    ranges::rfm_n_cells_z.check(n_cells_z);
+    ranges::rfm_n_graded_layers.check(n_graded_layers);
+    ranges::rfm_edge_modes.check(edge_modes);
+    ranges::rfm_edge_extra_points.check(edge_extra_points);
+    if (!(grading_ratio > 0.0 && grading_ratio < 1.0))
+      throw InputError("rfm.grading_ratio = " + std::to_string(grading_ratio) +
+                       ": must be in (0, 1)");
+    if (!(edge_cutoff > 0.0 && edge_cutoff < 1.0))
+      throw InputError("rfm.edge_cutoff = " + std::to_string(edge_cutoff) +
+                       ": must be in (0, 1) (a fraction of min(c, a - c, R2 - R1))");
+  }
+} // namespace axisym

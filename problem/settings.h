@@ -1,0 +1,81 @@
+// Solver settings a problem file carries ("contact", "rfm", "fem" objects, DESIGN.md
+// section 7), and the one table of their admissible ranges. The parser, the settings'
+// validate() and the drivers' command-line checks all read the ranges from here, so a
+// value is accepted or refused the same way wherever it comes from.
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace axisym
+{
+  /// An integer setting: its JSON path, its closed range and why the range is what it is.
+  struct IntRange
+  {
+    const char *field;
+    int lo, hi;
+    const char *reason = "";
+
+    bool contains(long long x) const { return x >= lo && x <= hi; }
+    /// "an integer in [lo, hi] (reason)"
+    std::string rule() const;
+    /// Throws InputError "<shown_as> = <x>: must be <rule>" unless contains(x).
+    void check(long long x, const std::string &shown_as) const;
+    void check(long long x) const { check(x, field); }
+  };
+
+  namespace ranges
+  {
+    inline constexpr IntRange rfm_degree{"rfm.degree", 0, 40, "N = (p + 1)^2 per component"};
+    inline constexpr IntRange rfm_extra_gauss_points{"rfm.extra_gauss_points", 1, 40};
+    inline constexpr IntRange rfm_n_cells_r{"rfm.n_cells_r", 1, 64};
+    inline constexpr IntRange rfm_n_cells_z{"rfm.n_cells_z", 1, 64};
+    inline constexpr IntRange rfm_n_graded_layers{"rfm.n_graded_layers", 0, 40};
+    inline constexpr IntRange rfm_edge_modes{"rfm.edge_modes", 0, 4,
+                                             "the odd modes 1, 3, ..., 2k - 1; 0 is off"};
+    inline constexpr IntRange rfm_edge_extra_points{"rfm.edge_extra_points", 0, 40};
+    inline constexpr IntRange fem_degree{"fem.degree", 1, 4, "FE_Q(p)"};
+    inline constexpr IntRange fem_refinements{"fem.refinements", 0, 6,
+                                              "level 6 already has 131072 cells"};
+    inline constexpr IntRange contact_curve_points{"contact.curve_points", 0, 200};
+  } // namespace ranges
+
+  /// Discretization of the R-function solver (the "rfm" object).
+  struct RfmSettings
+  {
+    int degree = 8;             ///< p: N = (p + 1)^2 functions per unknown component
+    int extra_gauss_points = 4; ///< Gauss points per direction and cell = p + this
+    int n_cells_r = 1;          ///< uniform cells in r before splitting at break points
+    int n_cells_z = 1;          ///< uniform cells in z before splitting at break points
+    int n_graded_layers = 8;    ///< geometric layers toward each break point
+    double grading_ratio = 0.35; ///< width ratio between successive graded layers
+    /// Contact-edge enrichment (rfm/edge_modes.h): the odd modes n = 1, 3, ..., 2 k - 1 for
+    /// k = edge_modes, added to both the stress and the displacement space at every
+    /// contact edge; 0 switches it off.
+    int edge_modes = 2;
+    /// Cutoff radius rho_0 as a fraction of the largest admissible one,
+    /// min(c - z_min, z_max - c, r_max - r_min) (the support must not reach another side).
+    double edge_cutoff = 0.9;
+    /// Gauss points per direction of the near-edge rule = p + extra_gauss_points + this.
+    int edge_extra_points = 6;
+
+    /// Throws InputError naming the field, the value and the rule.
+    void validate() const;
+  };
+
+  /// The FEM reference's settings that a problem file carries (the "fem" object).
+  struct FemSettings
+  {
+    int degree = 2;
+    int refinements = 4;
+  };
+
+  /// The "contact" object of a die problem.
+  struct ContactSettings
+  {
+    /// "edge-intensity" (default: the root of K(c)), "fixed", "iterate" or "max-force"
+    std::string method = "edge-intensity";
+    std::optional<double> half_width; ///< c [m] for "fixed"; default a
+    int curve_points = 0;             ///< extension: sample P(c) at this many c in (0, a]
+  };
+} // namespace axisym
