@@ -16,13 +16,11 @@
 //
 // Sample run:
 //   build/bin/die_contact --mode quick --output-dir build/verification-output
-#include "rfm/allocator.h"
 #include "rfm/contact.h"
 #include "problem/problem.h"
 #include "problem/json_io.h"
-#include "verification/tolerances.h"
+#include "verification/driver.h"
 
-#include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -54,270 +52,244 @@ namespace
   }
 } // namespace
 
-int main(int argc, char **argv)
+nlohmann::json run(const verification::DriverContext &context)
 {
-  try
+  const std::string &mode = context.mode, &source_dir = context.source_dir;
+  const bool full = context.full();
+  const std::string file = "verification/problems/die_paper.json";
+  axisym::Problem base = axisym::read_problem_file(source_dir + "/" + file);
+  const double a = base.geometry.half_length();
+  const std::vector<int> degrees = full ? std::vector<int>{6, 8, 10, 12, 14, 16}
+                                        : std::vector<int>{8, 10, 14};
+  const rfm::ContactOptions options;
+  nlohmann::json results = {{"driver", "die_contact"}, {"mode", mode},
+                            {"problem_file", file}, {"problem", base.source},
+                            {"paper", paper},
+                            {"contact_options", {{"tolerance", options.tolerance},
+                                                 {"n_check_points", options.n_check_points},
+                                                 {"violation_tolerance", options.violation_tolerance}}}};
+
+  // 2. Iteration 0: bilateral contact over the whole outer side.
+  fmt::print("== Iteration 0 (c = a): P against the paper's 128.7 kN, Phi against 0.0176 J ==\n");
+  fmt::print("{:>3} {:>5} {:>12} {:>12} {:>11} {:>11} {:>11}\n", "p", "N", "P [N]", "P trace [N]",
+             "Phi_C [J]", "Phi_R [J]", "Phi_L [J]");
+  for (const int p : degrees)
     {
-      rfm::keep_freed_matrices_in_heap();
-      // 1. Options and the problem file.
-      CLI::App app{"Die contact: RFM on the paper's problem"};
-      std::string mode = "quick", output_dir = "verification-output", tolerances;
-      std::string source_dir = RFM_SOURCE_DIR;
-      app.add_option("--mode", mode, "quick (CI) or full (report)")
-        ->check(CLI::IsMember({"quick", "full"}));
-      app.add_option("--output-dir", output_dir, "where die_contact.json is written");
-      app.add_option("--source-dir", source_dir, "project source (problem files)");
-      app.add_option("--tolerances", tolerances, "tolerance file to check (default: none)");
-      CLI11_PARSE(app, argc, argv);
-      std::filesystem::create_directories(output_dir);
+      axisym::Problem pr = base;
+      pr.contact.method = "fixed";
+      pr.contact.half_width = a;
+      pr.rfm.degree = p;
+      const rfm::ContactResult r = rfm::solve_contact(pr, pr.rfm, options);
+      if (!r.success)
+        throw std::runtime_error("iteration 0 failed: " + r.message);
+      const auto &it = r.final;
+      fmt::print("{:>3} {:>5} {:>12.1f} {:>12.1f} {:>11.6f} {:>11.6f} {:>11.6f}\n", p,
+                 (p + 1) * (p + 1), it.force, it.force_trace, it.castigliano, it.reissner,
+                 it.lagrange);
+      nlohmann::json j = rfm::to_json(it, base);
+      // Gated (tolerances.json): two independent evaluations of P (domain integral and
+      // eq. 4.6 trace) and the spread of the three functionals, which all tend to the
+      // same energy at c = a. The paper's numbers are reported beside, never gated on;
+      // the independent reference for iteration 0 is the FEM (rfm_vs_fem).
+      j["force_trace_vs_domain_relative"] = std::abs(it.force_trace - it.force) / it.force;
+      j["functional_spread_relative"] =
+        (std::max({it.lagrange, it.castigliano, it.reissner}) -
+         std::min({it.lagrange, it.castigliano, it.reissner})) /
+        std::abs(it.reissner);
+      j["force_vs_paper_relative"] = std::abs(it.force - 128.7e3) / 128.7e3;
+      j["reissner_vs_paper_relative"] = std::abs(it.reissner - 0.0176) / 0.0176;
+      j["castigliano_vs_paper_relative"] = std::abs(it.castigliano - 0.0176) / 0.0176;
+      j["lagrange_vs_paper_relative"] = std::abs(it.lagrange - 0.0176) / 0.0176;
+      results["iteration0"]["p" + std::to_string(p)] = j;
+    }
 
-      const std::string file = "verification/problems/die_paper.json";
-      axisym::Problem base = axisym::read_problem_file(source_dir + "/" + file);
-      const double a = base.geometry.half_length();
-      const bool full = mode == "full";
-      const std::vector<int> degrees = full ? std::vector<int>{6, 8, 10, 12, 14, 16}
-                                            : std::vector<int>{8, 10, 14};
-      const rfm::ContactOptions options;
-      nlohmann::json results = {{"driver", "die_contact"}, {"mode", mode},
-                                {"problem_file", file}, {"problem", base.source},
-                                {"paper", paper},
-                                {"contact_options", {{"tolerance", options.tolerance},
-                                                     {"n_check_points", options.n_check_points},
-                                                     {"violation_tolerance", options.violation_tolerance}}}};
-
-      // 2. Iteration 0: bilateral contact over the whole outer side.
-      fmt::print("== Iteration 0 (c = a): P against the paper's 128.7 kN, Phi against 0.0176 J ==\n");
-      fmt::print("{:>3} {:>5} {:>12} {:>12} {:>11} {:>11} {:>11}\n", "p", "N", "P [N]", "P trace [N]",
-                 "Phi_C [J]", "Phi_R [J]", "Phi_L [J]");
-      for (const int p : degrees)
+  // 3. The unknown zone, three methods, several N and doubled quadrature.
+  struct Run
+  {
+    std::string method;
+    int degree;
+    bool doubled;
+  };
+  // The default method (edge-intensity) at every degree; the paper's iteration and
+  // Barber's maximum at p = 8..14 in full mode, at p = 10 in quick mode.
+  std::vector<Run> runs;
+  for (const int p : degrees)
+    for (const std::string m : {"edge-intensity", "iterate", "max-force"})
+      if (m == "edge-intensity" || (full ? (p >= 8 && p <= 14) : p == 10))
+        runs.push_back({m, p, false});
+  for (const int p : full ? std::vector<int>{10, 14} : std::vector<int>{10})
+    runs.push_back({"edge-intensity", p, true});
+  fmt::print("\n== Unknown zone: c and P per method, N and quadrature ==\n");
+  fmt::print("{:>14} {:>3} {:>5} {:>6} {:>8} {:>17} {:>11} {:>11} {:>9} {:>9} {:>9} {:>6} {:>8}\n",
+             "method", "p", "N", "quad", "c/a", "range c/a", "P [N]", "P trace [N]", "Phi_C",
+             "Phi_R", "Phi_L", "solves", "time [s]");
+  for (const Run &run : runs)
+    {
+      axisym::Problem pr = base;
+      pr.contact.method = run.method;
+      pr.rfm.degree = run.degree;
+      if (run.doubled)
         {
-          axisym::Problem pr = base;
-          pr.contact.method = "fixed";
-          pr.contact.half_width = a;
-          pr.rfm.degree = p;
-          const rfm::ContactResult r = rfm::solve_contact(pr, pr.rfm, options);
-          if (!r.success)
-            throw std::runtime_error("iteration 0 failed: " + r.message);
-          const auto &it = r.final;
-          fmt::print("{:>3} {:>5} {:>12.1f} {:>12.1f} {:>11.6f} {:>11.6f} {:>11.6f}\n", p,
-                     (p + 1) * (p + 1), it.force, it.force_trace, it.castigliano, it.reissner,
-                     it.lagrange);
-          nlohmann::json j = rfm::to_json(it, base);
-          // Gated (tolerances.json): two independent evaluations of P (domain integral and
-          // eq. 4.6 trace) and the spread of the three functionals, which all tend to the
-          // same energy at c = a. The paper's numbers are reported beside, never gated on;
-          // the independent reference for iteration 0 is the FEM (rfm_vs_fem).
-          j["force_trace_vs_domain_relative"] = std::abs(it.force_trace - it.force) / it.force;
-          j["functional_spread_relative"] =
-            (std::max({it.lagrange, it.castigliano, it.reissner}) -
-             std::min({it.lagrange, it.castigliano, it.reissner})) /
-            std::abs(it.reissner);
-          j["force_vs_paper_relative"] = std::abs(it.force - 128.7e3) / 128.7e3;
-          j["reissner_vs_paper_relative"] = std::abs(it.reissner - 0.0176) / 0.0176;
-          j["castigliano_vs_paper_relative"] = std::abs(it.castigliano - 0.0176) / 0.0176;
-          j["lagrange_vs_paper_relative"] = std::abs(it.lagrange - 0.0176) / 0.0176;
-          results["iteration0"]["p" + std::to_string(p)] = j;
+          pr.rfm.extra_gauss_points = run.degree + 2 * base.rfm.extra_gauss_points;
+          pr.rfm.n_graded_layers = 2 * base.rfm.n_graded_layers;
         }
+      const auto t0 = std::chrono::steady_clock::now();
+      const rfm::ContactResult r = rfm::solve_contact(pr, pr.rfm, options);
+      const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (!r.success)
+        throw std::runtime_error(run.method + " failed: " + r.message);
+      const auto &f = r.final;
+      const std::string range =
+        r.half_width_range ? fmt::format("[{:.4f}, {:.4f}]", r.half_width_range->first / a,
+                                         r.half_width_range->second / a)
+                           : "-";
+      fmt::print("{:>14} {:>3} {:>5} {:>6} {:>8.5f} {:>17} {:>11.1f} {:>11.1f} {:>9.6f} "
+                 "{:>9.6f} {:>9.6f} {:>6} {:>8.2f}\n",
+                 run.method, run.degree, (run.degree + 1) * (run.degree + 1),
+                 run.doubled ? "x2" : "x1", f.half_width / a, range, f.force, f.force_trace,
+                 f.castigliano, f.reissner, f.lagrange, r.history.size(), seconds);
+      nlohmann::json j = {{"method", run.method},
+                          {"degree", run.degree},
+                          {"N", (run.degree + 1) * (run.degree + 1)},
+                          {"quadrature", run.doubled ? "doubled" : "default"},
+                          {"final", rfm::to_json(f, base)},
+                          {"message", r.message},
+                          {"n_solves", r.history.size()},
+                          {"seconds", seconds}};
+      if (r.half_width_range)
+        j["half_width_range_ratio"] = {r.half_width_range->first / a,
+                                       r.half_width_range->second / a};
+      for (const auto &it : r.history)
+        j["history"].push_back(rfm::to_json(it, base));
+      const std::string key = run.method + "_p" + std::to_string(run.degree) +
+                              (run.doubled ? "_quad2" : "");
+      results["runs"][key] = j;
 
-      // 3. The unknown zone, three methods, several N and doubled quadrature.
-      struct Run
-      {
-        std::string method;
-        int degree;
-        bool doubled;
-      };
-      // The default method (edge-intensity) at every degree; the paper's iteration and
-      // Barber's maximum at p = 8..14 in full mode, at p = 10 in quick mode.
-      std::vector<Run> runs;
-      for (const int p : degrees)
-        for (const std::string m : {"edge-intensity", "iterate", "max-force"})
-          if (m == "edge-intensity" || (full ? (p >= 8 && p <= 14) : p == 10))
-            runs.push_back({m, p, false});
-      for (const int p : full ? std::vector<int>{10, 14} : std::vector<int>{10})
-        runs.push_back({"edge-intensity", p, true});
-      fmt::print("\n== Unknown zone: c and P per method, N and quadrature ==\n");
-      fmt::print("{:>14} {:>3} {:>5} {:>6} {:>8} {:>17} {:>11} {:>11} {:>9} {:>9} {:>9} {:>6} {:>8}\n",
-                 "method", "p", "N", "quad", "c/a", "range c/a", "P [N]", "P trace [N]", "Phi_C",
-                 "Phi_R", "Phi_L", "solves", "time [s]");
-      for (const Run &run : runs)
+      // Fig. 3 analog and sigma_rr through the thickness, at the report's N.
+      if (run.method == "iterate" && run.degree == 12 - (full ? 0 : 2) && !run.doubled)
         {
+          for (const auto &it : r.history)
+            if (it.phase == "iteration" || it.phase == "final")
+              {
+                axisym::Problem fixed = pr;
+                const rfm::RfmModel m(fixed, pr.rfm, it.half_width);
+                nlohmann::json pj = pressure_json(m, it.half_width);
+                pj["phase"] = it.phase;
+                results["pressure_per_iteration"].push_back(pj);
+              }
+          const int n = 61;
+          const Eigen::VectorXd rr = Eigen::VectorXd::LinSpaced(n, base.geometry.inner_radius,
+                                                                base.geometry.outer_radius);
+          const rfm::FieldValues fv = r.model->evaluate(rr, Eigen::VectorXd::Zero(n));
+          std::vector<double> s(n);
+          for (int k = 0; k < n; ++k)
+            s[k] = fv.sigma(k, rfm::rr);
+          results["sigma_rr_mid"] = {{"degree", run.degree},
+                                     {"r", std::vector<double>(rr.data(), rr.data() + n)},
+                                     {"sigma_rr", s}};
+        }
+    }
+
+  // Stability under doubling N (p = 10 -> 14: N = 121 -> 225) and quadrature.
+  const auto &runs_j = results["runs"];
+  auto rel = [&](const std::string &x, const std::string &y, const std::string &q) {
+    const double vx = runs_j[x]["final"][q], vy = runs_j[y]["final"][q];
+    return q == "half_width_ratio" ? std::abs(vx - vy) : std::abs(vx - vy) / std::abs(vy);
+  };
+  results["stability"] = {
+    {"edge_intensity_c_change_N_doubled",
+     rel("edge-intensity_p10", "edge-intensity_p14", "half_width_ratio")},
+    {"edge_intensity_P_change_N_doubled", rel("edge-intensity_p10", "edge-intensity_p14", "force")},
+    {"edge_intensity_c_change_quadrature_doubled",
+     rel("edge-intensity_p10", "edge-intensity_p10_quad2", "half_width_ratio")},
+    {"edge_intensity_P_change_quadrature_doubled",
+     rel("edge-intensity_p10", "edge-intensity_p10_quad2", "force")},
+    {"iterate_vs_edge_intensity_c_p10", rel("iterate_p10", "edge-intensity_p10", "half_width_ratio")},
+    {"max_force_vs_edge_intensity_c_p10", rel("max-force_p10", "edge-intensity_p10", "half_width_ratio")},
+    {"iterate_vs_edge_intensity_P_p10", rel("iterate_p10", "edge-intensity_p10", "force")},
+    {"max_force_vs_edge_intensity_P_p10", rel("max-force_p10", "edge-intensity_p10", "force")}};
+  if (full)
+    {
+      results["stability"]["iterate_c_change_N_doubled"] = rel("iterate_p10", "iterate_p14", "half_width_ratio");
+      results["stability"]["max_force_c_change_N_doubled"] = rel("max-force_p10", "max-force_p14", "half_width_ratio");
+    }
+  fmt::print("\nstability: {}\n", results["stability"].dump());
+
+  // 3b. Convergence in p with the edge modes on (edge-intensity, the default) and off
+  //     (the paper's iteration: edge-intensity needs the n = 1 mode): c, P and p(0) as
+  //     trace and as consistent reactions.
+  {
+    const std::vector<int> ps = full ? std::vector<int>{4, 6, 8, 10, 12, 14, 16}
+                                     : std::vector<int>{8};
+    fmt::print("\n== Convergence in p, edge modes on (edge-intensity) and off (iterate) ==\n");
+    for (const bool on : {true, false})
+      for (const int p : ps)
+        {
+          if (!on && p > 14)
+            continue; // 23-30 solves each without the modes: kept out of the 5-minute report
           axisym::Problem pr = base;
-          pr.contact.method = run.method;
-          pr.rfm.degree = run.degree;
-          if (run.doubled)
-            {
-              pr.rfm.extra_gauss_points = run.degree + 2 * base.rfm.extra_gauss_points;
-              pr.rfm.n_graded_layers = 2 * base.rfm.n_graded_layers;
-            }
+          pr.rfm.degree = p;
+          pr.rfm.edge_modes = on ? rfm::DiscretizationOptions{}.edge_modes : 0;
+          pr.contact.method = on ? "edge-intensity" : "iterate";
           const auto t0 = std::chrono::steady_clock::now();
           const rfm::ContactResult r = rfm::solve_contact(pr, pr.rfm, options);
           const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
           if (!r.success)
-            throw std::runtime_error(run.method + " failed: " + r.message);
-          const auto &f = r.final;
-          const std::string range =
-            r.half_width_range ? fmt::format("[{:.4f}, {:.4f}]", r.half_width_range->first / a,
-                                             r.half_width_range->second / a)
-                               : "-";
-          fmt::print("{:>14} {:>3} {:>5} {:>6} {:>8.5f} {:>17} {:>11.1f} {:>11.1f} {:>9.6f} "
-                     "{:>9.6f} {:>9.6f} {:>6} {:>8.2f}\n",
-                     run.method, run.degree, (run.degree + 1) * (run.degree + 1),
-                     run.doubled ? "x2" : "x1", f.half_width / a, range, f.force, f.force_trace,
-                     f.castigliano, f.reissner, f.lagrange, r.history.size(), seconds);
-          nlohmann::json j = {{"method", run.method},
-                              {"degree", run.degree},
-                              {"N", (run.degree + 1) * (run.degree + 1)},
-                              {"quadrature", run.doubled ? "doubled" : "default"},
-                              {"final", rfm::to_json(f, base)},
-                              {"message", r.message},
-                              {"n_solves", r.history.size()},
-                              {"seconds", seconds}};
-          if (r.half_width_range)
-            j["half_width_range_ratio"] = {r.half_width_range->first / a,
-                                           r.half_width_range->second / a};
-          for (const auto &it : r.history)
-            j["history"].push_back(rfm::to_json(it, base));
-          const std::string key = run.method + "_p" + std::to_string(run.degree) +
-                                  (run.doubled ? "_quad2" : "");
-          results["runs"][key] = j;
-
-          // Fig. 3 analog and sigma_rr through the thickness, at the report's N.
-          if (run.method == "iterate" && run.degree == 12 - (full ? 0 : 2) && !run.doubled)
-            {
-              for (const auto &it : r.history)
-                if (it.phase == "iteration" || it.phase == "final")
-                  {
-                    axisym::Problem fixed = pr;
-                    const rfm::RfmModel m(fixed, pr.rfm, it.half_width);
-                    nlohmann::json pj = pressure_json(m, it.half_width);
-                    pj["phase"] = it.phase;
-                    results["pressure_per_iteration"].push_back(pj);
-                  }
-              const int n = 61;
-              const Eigen::VectorXd rr = Eigen::VectorXd::LinSpaced(n, base.geometry.inner_radius,
-                                                                    base.geometry.outer_radius);
-              const rfm::FieldValues fv = r.model->evaluate(rr, Eigen::VectorXd::Zero(n));
-              std::vector<double> s(n);
-              for (int k = 0; k < n; ++k)
-                s[k] = fv.sigma(k, rfm::rr);
-              results["sigma_rr_mid"] = {{"degree", run.degree},
-                                         {"r", std::vector<double>(rr.data(), rr.data() + n)},
-                                         {"sigma_rr", s}};
-            }
+            throw std::runtime_error(pr.contact.method + " failed: " + r.message);
+          const double c = r.final.half_width;
+          const double p0_trace = rfm::contact_pressure(*r.model, c, 2).front().second;
+          const double p0_consistent =
+            rfm::consistent_contact_pressure(*r.model, pr, c, 2, rfm::default_pressure_moments)
+              .front()
+              .second;
+          fmt::print("modes {:>3} {:>14} p={:>2} c/a={:.5f} P={:.1f} N p(0) trace {:.4g} Pa, "
+                     "consistent {:.4g} Pa, {} solves, {:.2f} s\n",
+                     on ? "on" : "off", pr.contact.method, p, c / a, r.final.force, p0_trace,
+                     p0_consistent, r.history.size(), seconds);
+          results["convergence_in_p"].push_back(
+            {{"edge_modes", on}, {"method", pr.contact.method}, {"degree", p},
+             {"N", (p + 1) * (p + 1)}, {"half_width_ratio", c / a}, {"force", r.final.force},
+             {"pressure_at_0_trace", p0_trace}, {"pressure_at_0_consistent", p0_consistent},
+             {"n_solves", r.history.size()}, {"seconds", seconds}});
         }
+  }
 
-      // Stability under doubling N (p = 10 -> 14: N = 121 -> 225) and quadrature.
-      const auto &runs_j = results["runs"];
-      auto rel = [&](const std::string &x, const std::string &y, const std::string &q) {
-        const double vx = runs_j[x]["final"][q], vy = runs_j[y]["final"][q];
-        return q == "half_width_ratio" ? std::abs(vx - vy) : std::abs(vx - vy) / std::abs(vy);
-      };
-      results["stability"] = {
-        {"edge_intensity_c_change_N_doubled",
-         rel("edge-intensity_p10", "edge-intensity_p14", "half_width_ratio")},
-        {"edge_intensity_P_change_N_doubled", rel("edge-intensity_p10", "edge-intensity_p14", "force")},
-        {"edge_intensity_c_change_quadrature_doubled",
-         rel("edge-intensity_p10", "edge-intensity_p10_quad2", "half_width_ratio")},
-        {"edge_intensity_P_change_quadrature_doubled",
-         rel("edge-intensity_p10", "edge-intensity_p10_quad2", "force")},
-        {"iterate_vs_edge_intensity_c_p10", rel("iterate_p10", "edge-intensity_p10", "half_width_ratio")},
-        {"max_force_vs_edge_intensity_c_p10", rel("max-force_p10", "edge-intensity_p10", "half_width_ratio")},
-        {"iterate_vs_edge_intensity_P_p10", rel("iterate_p10", "edge-intensity_p10", "force")},
-        {"max_force_vs_edge_intensity_P_p10", rel("max-force_p10", "edge-intensity_p10", "force")}};
-      if (full)
-        {
-          results["stability"]["iterate_c_change_N_doubled"] = rel("iterate_p10", "iterate_p14", "half_width_ratio");
-          results["stability"]["max_force_c_change_N_doubled"] = rel("max-force_p10", "max-force_p14", "half_width_ratio");
-        }
-      fmt::print("\nstability: {}\n", results["stability"].dump());
-
-      // 3b. Convergence in p with the edge modes on (edge-intensity, the default) and off
-      //     (the paper's iteration: edge-intensity needs the n = 1 mode): c, P and p(0) as
-      //     trace and as consistent reactions.
+  // 4. P(c): bilateral solves over c, at p = 12.
+  {
+    axisym::Problem pr = base;
+    pr.rfm.degree = 12;
+    const int n = full ? 36 : 12;
+    for (int k = 0; k <= n; ++k)
       {
-        const std::vector<int> ps = full ? std::vector<int>{4, 6, 8, 10, 12, 14, 16}
-                                         : std::vector<int>{8};
-        fmt::print("\n== Convergence in p, edge modes on (edge-intensity) and off (iterate) ==\n");
-        for (const bool on : {true, false})
-          for (const int p : ps)
-            {
-              if (!on && p > 14)
-                continue; // 23-30 solves each without the modes: kept out of the 5-minute report
-              axisym::Problem pr = base;
-              pr.rfm.degree = p;
-              pr.rfm.edge_modes = on ? rfm::DiscretizationOptions{}.edge_modes : 0;
-              pr.contact.method = on ? "edge-intensity" : "iterate";
-              const auto t0 = std::chrono::steady_clock::now();
-              const rfm::ContactResult r = rfm::solve_contact(pr, pr.rfm, options);
-              const double seconds =
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-              if (!r.success)
-                throw std::runtime_error(pr.contact.method + " failed: " + r.message);
-              const double c = r.final.half_width;
-              const double p0_trace = rfm::contact_pressure(*r.model, c, 2).front().second;
-              const double p0_consistent =
-                rfm::consistent_contact_pressure(*r.model, pr, c, 2, rfm::default_pressure_moments)
-                  .front()
-                  .second;
-              fmt::print("modes {:>3} {:>14} p={:>2} c/a={:.5f} P={:.1f} N p(0) trace {:.4g} Pa, "
-                         "consistent {:.4g} Pa, {} solves, {:.2f} s\n",
-                         on ? "on" : "off", pr.contact.method, p, c / a, r.final.force, p0_trace,
-                         p0_consistent, r.history.size(), seconds);
-              results["convergence_in_p"].push_back(
-                {{"edge_modes", on}, {"method", pr.contact.method}, {"degree", p},
-                 {"N", (p + 1) * (p + 1)}, {"half_width_ratio", c / a}, {"force", r.final.force},
-                 {"pressure_at_0_trace", p0_trace}, {"pressure_at_0_consistent", p0_consistent},
-                 {"n_solves", r.history.size()}, {"seconds", seconds}});
-            }
+        const double c = a * (0.3 + 0.7 * k / n);
+        const rfm::RfmModel m(pr, pr.rfm, c);
+        const rfm::ContactForce f = m.contact_force();
+        results["force_curve"].push_back(
+          {{"half_width_ratio", c / a}, {"force", f.domain}, {"force_trace", f.trace}});
       }
+  }
 
-      // 4. P(c): bilateral solves over c, at p = 12.
-      {
-        axisym::Problem pr = base;
-        pr.rfm.degree = 12;
-        const int n = full ? 36 : 12;
-        for (int k = 0; k <= n; ++k)
-          {
-            const double c = a * (0.3 + 0.7 * k / n);
-            const rfm::RfmModel m(pr, pr.rfm, c);
-            const rfm::ContactForce f = m.contact_force();
-            results["force_curve"].push_back(
-              {{"half_width_ratio", c / a}, {"force", f.domain}, {"force_trace", f.trace}});
-          }
-      }
+  // 5. Linearity in delta.
+  {
+    axisym::Problem p1 = base, p2 = base;
+    p1.rfm.degree = p2.rfm.degree = 10;
+    p2.die->indentation = 2 * base.die->indentation;
+    const rfm::ContactResult r1 = rfm::solve_contact(p1, p1.rfm, options);
+    const rfm::ContactResult r2 = rfm::solve_contact(p2, p2.rfm, options);
+    results["delta_scaling"] = {
+      {"force_ratio_minus_2", std::abs(r2.final.force / r1.final.force - 2.0)},
+      {"half_width_change", std::abs(r2.final.half_width - r1.final.half_width) / a}};
+    fmt::print("delta doubled: P ratio {:.12f}, c change {:.3e} a\n",
+               r2.final.force / r1.final.force,
+               std::abs(r2.final.half_width - r1.final.half_width) / a);
+  }
 
-      // 5. Linearity in delta.
-      {
-        axisym::Problem p1 = base, p2 = base;
-        p1.rfm.degree = p2.rfm.degree = 10;
-        p2.die->indentation = 2 * base.die->indentation;
-        const rfm::ContactResult r1 = rfm::solve_contact(p1, p1.rfm, options);
-        const rfm::ContactResult r2 = rfm::solve_contact(p2, p2.rfm, options);
-        results["delta_scaling"] = {
-          {"force_ratio_minus_2", std::abs(r2.final.force / r1.final.force - 2.0)},
-          {"half_width_change", std::abs(r2.final.half_width - r1.final.half_width) / a}};
-        fmt::print("delta doubled: P ratio {:.12f}, c change {:.3e} a\n",
-                   r2.final.force / r1.final.force,
-                   std::abs(r2.final.half_width - r1.final.half_width) / a);
-      }
+  return results;
+}
 
-      // 6. Write and gate.
-      const std::string out_file = output_dir + "/die_contact.json";
-      axisym::write_json_atomically(out_file, results);
-      fmt::print("\nwrote {}\n", out_file);
-      if (!tolerances.empty())
-        {
-          const auto report =
-            verification::check_tolerances(tolerances, "die_contact", results, std::cout);
-          fmt::print("{} passed, {} failed\n", report.n_passed, report.n_failed);
-          return report.n_failed == 0 ? 0 : 1;
-        }
-      return 0;
-    }
-  catch (const std::exception &e)
-    {
-      std::cerr << "die_contact: error: " << e.what() << '\n';
-      return 2;
-    }
+int main(int argc, char **argv)
+{
+  return verification::run_driver(argc, argv, "die_contact", "Die contact: RFM on the paper's problem", run);
 }

@@ -16,14 +16,12 @@
 //
 // Sample run:
 //   build/bin/lame_cylinder --mode quick --output-dir build/verification
-#include "rfm/allocator.h"
 #include "rfm/model.h"
 #include "problem/problem.h"
 #include "problem/json_io.h"
 #include "verification/lame_errors.h"
-#include "verification/tolerances.h"
+#include "verification/driver.h"
 
-#include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
 #include <cmath>
@@ -73,123 +71,94 @@ namespace
   }
 } // namespace
 
+nlohmann::json run(const verification::DriverContext &context)
+{
+  const std::string &mode = context.mode, &source_dir = context.source_dir;
+  const std::vector<CaseFile> cases = {
+    {"paper", "lame_paper.json"},
+    {"two_pressures", "lame_two_pressures.json"},
+    {"nearly_incompressible", "lame_nearly_incompressible.json"},
+    {"thick_wall", "lame_thick_wall.json"}};
+  const int p_max = context.full() ? 20 : 14;
+  const std::vector<int> fig1_degrees = {0, 1, 2, 3, 5, 7};
+
+  nlohmann::json results = {{"driver", "lame_cylinder"}, {"mode", mode}};
+  for (const CaseFile &cf : cases)
+    {
+      // 2. One case: the problem file, its exact solution, a sweep over p.
+      const std::string path = source_dir + "/verification/problems/" + cf.file;
+      const axisym::Problem problem = axisym::read_problem_file(path);
+      const verification::LameCylinder exact = verification::exact_of(problem);
+      const double phi_exact = -exact.strain_energy();
+      nlohmann::json c = {{"problem_file", "verification/problems/" + cf.file},
+                          {"problem", problem.source},
+                          {"exact_functional", phi_exact}};
+      fmt::print("\n== Lame cylinder, case {} ({}) ==\n", cf.name, cf.file);
+      fmt::print("{:>3} {:>5} {:>13} {:>13} {:>13} {:>10} {:>10} {:>10} {:>9} {:>9} "
+                 "{:>9} {:>9}\n",
+                 "p", "N", "Phi_C [J]", "Phi_R [J]", "Phi_L [J]", "L2 err", "max err",
+                 "indicator", "inf-sup", "cond K", "asm [s]", "solve [s]");
+      std::vector<int> ps;
+      std::vector<double> errs;
+      for (int p = 0; p <= p_max; ++p)
+        {
+          rfm::DiscretizationOptions options = problem.rfm;
+          options.degree = p;
+          const rfm::RfmModel model(problem, options, std::nullopt);
+          if (!model.ok())
+            throw verification::NumericalFailure("case " + cf.name + ", p = " +
+                                                 std::to_string(p) + ": " +
+                                                 model.summary().message);
+          const rfm::Functionals phi = model.solution().functionals();
+          const auto [l2, mx] = verification::stress_errors(model, exact);
+          const rfm::SolveSummary &s = model.summary();
+          const int n = (p + 1) * (p + 1);
+          fmt::print("{:>3} {:>5} {:>13.8f} {:>13.8f} {:>13.8f} {:>10.3e} {:>10.3e} "
+                     "{:>10.3e} {:>9.2e} {:>9.2e} {:>9.4f} {:>9.4f}\n",
+                     p, n, phi.castigliano, phi.reissner, phi.lagrange, l2, mx,
+                     phi.indicator(), s.inf_sup, s.cond_schur, model.assembly_seconds(),
+                     model.solve_seconds());
+          c["degrees"]["p" + std::to_string(p)] = {
+            {"degree", p},
+            {"N", n},
+            {"stress_l2_relative", l2},
+            {"stress_max_relative", mx},
+            {"lagrange", phi.lagrange},
+            {"castigliano", phi.castigliano},
+            {"reissner", phi.reissner},
+            {"castigliano_minus_reissner_relative",
+             std::abs(phi.castigliano - phi.reissner) / std::abs(phi_exact)},
+            {"lagrange_minus_exact_relative", (phi.lagrange - phi_exact) / std::abs(phi_exact)},
+            {"reissner_error_relative", std::abs(phi.reissner - phi_exact) / std::abs(phi_exact)},
+            {"indicator", phi.indicator()},
+            {"inf_sup", s.inf_sup},
+            {"cond_stress_block", s.cond_stress},
+            {"cond_schur", s.cond_schur},
+            {"assembly_s", model.assembly_seconds()},
+            {"solve_s", model.solve_seconds()}};
+          ps.push_back(p);
+          errs.push_back(l2);
+
+          // Fig. 1 analog: sigma_rr(r) at z = 0; stresses along the end at the top p.
+          if (std::find(fig1_degrees.begin(), fig1_degrees.end(), p) != fig1_degrees.end())
+            c["profiles_mid"].push_back(
+              {{"degree", p}, {"N", n},
+               {"profile", profile(model, 0.0, 61, exact.inner_radius, exact.outer_radius, exact)}});
+          if (p == 7)
+            c["profile_end_p7"] = profile(model, 0.5 * exact.length, 61, exact.inner_radius,
+                                          exact.outer_radius, exact);
+        }
+      fmt::print("exact: Phi = -U = {:.8f} J per radian\n", phi_exact);
+      c["decades_per_degree"] = decades_per_degree(ps, errs, 2, 1e-11);
+      fmt::print("observed rate: stress L2 error falls by {:.2f} decades per degree\n",
+                 c["decades_per_degree"].get<double>());
+      results["cases"][cf.name] = c;
+    }
+
+  return results;
+}
+
 int main(int argc, char **argv)
 {
-  try
-    {
-      rfm::keep_freed_matrices_in_heap();
-      // 1. Options.
-      CLI::App app{"Lame cylinder: RFM against the exact solution"};
-      std::string mode = "quick", output_dir = "verification-output";
-      std::string source_dir = RFM_SOURCE_DIR;
-      std::string tolerances;
-      app.add_option("--mode", mode, "quick (CI) or full (report)")
-        ->check(CLI::IsMember({"quick", "full"}));
-      app.add_option("--output-dir", output_dir, "where lame_cylinder.json is written");
-      app.add_option("--source-dir", source_dir, "project source (problem files)");
-      app.add_option("--tolerances", tolerances, "tolerance file to check (default: none)");
-      CLI11_PARSE(app, argc, argv);
-      std::filesystem::create_directories(output_dir);
-
-      const std::vector<CaseFile> cases = {
-        {"paper", "lame_paper.json"},
-        {"two_pressures", "lame_two_pressures.json"},
-        {"nearly_incompressible", "lame_nearly_incompressible.json"},
-        {"thick_wall", "lame_thick_wall.json"}};
-      const int p_max = mode == "full" ? 20 : 14;
-      const std::vector<int> fig1_degrees = {0, 1, 2, 3, 5, 7};
-
-      nlohmann::json results = {{"driver", "lame_cylinder"}, {"mode", mode}};
-      for (const CaseFile &cf : cases)
-        {
-          // 2. One case: the problem file, its exact solution, a sweep over p.
-          const std::string path = source_dir + "/verification/problems/" + cf.file;
-          const axisym::Problem problem = axisym::read_problem_file(path);
-          const verification::LameCylinder exact = verification::exact_of(problem);
-          const double phi_exact = -exact.strain_energy();
-          nlohmann::json c = {{"problem_file", "verification/problems/" + cf.file},
-                              {"problem", problem.source},
-                              {"exact_functional", phi_exact}};
-          fmt::print("\n== Lame cylinder, case {} ({}) ==\n", cf.name, cf.file);
-          fmt::print("{:>3} {:>5} {:>13} {:>13} {:>13} {:>10} {:>10} {:>10} {:>9} {:>9} "
-                     "{:>9} {:>9}\n",
-                     "p", "N", "Phi_C [J]", "Phi_R [J]", "Phi_L [J]", "L2 err", "max err",
-                     "indicator", "inf-sup", "cond K", "asm [s]", "solve [s]");
-          std::vector<int> ps;
-          std::vector<double> errs;
-          for (int p = 0; p <= p_max; ++p)
-            {
-              rfm::DiscretizationOptions options = problem.rfm;
-              options.degree = p;
-              const rfm::RfmModel model(problem, options, std::nullopt);
-              if (!model.ok())
-                {
-                  fmt::print(stderr, "lame_cylinder: {} p = {}: {}\n", cf.name, p,
-                             model.summary().message);
-                  return 3;
-                }
-              const rfm::Functionals phi = model.solution().functionals();
-              const auto [l2, mx] = verification::stress_errors(model, exact);
-              const rfm::SolveSummary &s = model.summary();
-              const int n = (p + 1) * (p + 1);
-              fmt::print("{:>3} {:>5} {:>13.8f} {:>13.8f} {:>13.8f} {:>10.3e} {:>10.3e} "
-                         "{:>10.3e} {:>9.2e} {:>9.2e} {:>9.4f} {:>9.4f}\n",
-                         p, n, phi.castigliano, phi.reissner, phi.lagrange, l2, mx,
-                         phi.indicator(), s.inf_sup, s.cond_schur, model.assembly_seconds(),
-                         model.solve_seconds());
-              c["degrees"]["p" + std::to_string(p)] = {
-                {"degree", p},
-                {"N", n},
-                {"stress_l2_relative", l2},
-                {"stress_max_relative", mx},
-                {"lagrange", phi.lagrange},
-                {"castigliano", phi.castigliano},
-                {"reissner", phi.reissner},
-                {"castigliano_minus_reissner_relative",
-                 std::abs(phi.castigliano - phi.reissner) / std::abs(phi_exact)},
-                {"lagrange_minus_exact_relative", (phi.lagrange - phi_exact) / std::abs(phi_exact)},
-                {"reissner_error_relative", std::abs(phi.reissner - phi_exact) / std::abs(phi_exact)},
-                {"indicator", phi.indicator()},
-                {"inf_sup", s.inf_sup},
-                {"cond_stress_block", s.cond_stress},
-                {"cond_schur", s.cond_schur},
-                {"assembly_s", model.assembly_seconds()},
-                {"solve_s", model.solve_seconds()}};
-              ps.push_back(p);
-              errs.push_back(l2);
-
-              // Fig. 1 analog: sigma_rr(r) at z = 0; stresses along the end at the top p.
-              if (std::find(fig1_degrees.begin(), fig1_degrees.end(), p) != fig1_degrees.end())
-                c["profiles_mid"].push_back(
-                  {{"degree", p}, {"N", n},
-                   {"profile", profile(model, 0.0, 61, exact.inner_radius, exact.outer_radius, exact)}});
-              if (p == 7)
-                c["profile_end_p7"] = profile(model, 0.5 * exact.length, 61, exact.inner_radius,
-                                              exact.outer_radius, exact);
-            }
-          fmt::print("exact: Phi = -U = {:.8f} J per radian\n", phi_exact);
-          c["decades_per_degree"] = decades_per_degree(ps, errs, 2, 1e-11);
-          fmt::print("observed rate: stress L2 error falls by {:.2f} decades per degree\n",
-                     c["decades_per_degree"].get<double>());
-          results["cases"][cf.name] = c;
-        }
-
-      // 3. Write the results, then gate them.
-      const std::string out_file = output_dir + "/lame_cylinder.json";
-      axisym::write_json_atomically(out_file, results);
-      fmt::print("\nwrote {}\n", out_file);
-      if (!tolerances.empty())
-        {
-          const auto report =
-            verification::check_tolerances(tolerances, "lame_cylinder", results, std::cout);
-          fmt::print("{} passed, {} failed\n", report.n_passed, report.n_failed);
-          return report.n_failed == 0 ? 0 : 1;
-        }
-      return 0;
-    }
-  catch (const std::exception &e)
-    {
-      std::cerr << "lame_cylinder: error: " << e.what() << '\n';
-      return 2;
-    }
+  return verification::run_driver(argc, argv, "lame_cylinder", "Lame cylinder: RFM against the exact solution", run);
 }

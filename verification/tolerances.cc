@@ -1,5 +1,7 @@
 #include "verification/tolerances.h"
 
+#include "problem/input_error.h"
+
 #include <fmt/core.h>
 
 #include <cmath>
@@ -13,10 +15,10 @@ namespace verification
   {
     std::ifstream in(tolerance_file);
     if (!in)
-      throw std::runtime_error("cannot read tolerance file " + tolerance_file);
+      throw axisym::InputError("cannot read tolerance file " + tolerance_file);
     const nlohmann::json all = nlohmann::json::parse(in);
     if (!all.contains(driver) || !all.at(driver).is_array())
-      throw std::runtime_error(tolerance_file + ": no list of entries for driver '" + driver + "'");
+      throw axisym::InputError(tolerance_file + ": no list of entries for driver '" + driver + "'");
 
     ToleranceReport report;
     for (const auto &entry : all.at(driver))
@@ -25,12 +27,12 @@ namespace verification
         const std::string why = entry.value("why", "");
         const nlohmann::json::json_pointer ptr(quantity);
         if (!results.contains(ptr) || !results.at(ptr).is_number())
-          throw std::runtime_error("tolerance entry " + quantity + ": no such number in the " +
+          throw axisym::InputError("tolerance entry " + quantity + ": no such number in the " +
                                    driver + " results");
         const double measured = results.at(ptr).get<double>();
         const bool is_max = entry.contains("max");
         if (is_max == entry.contains("min"))
-          throw std::runtime_error("tolerance entry " + quantity + ": needs exactly one of max, min");
+          throw axisym::InputError("tolerance entry " + quantity + ": needs exactly one of max, min");
         const double limit = entry.at(is_max ? "max" : "min").get<double>();
         const bool ok = std::isfinite(measured) && (is_max ? measured <= limit : measured >= limit);
         out << fmt::format("{} {}: measured {:.6e}, {} {:.6e}{}\n", ok ? "PASS" : "FAIL", quantity,
