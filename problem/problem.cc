@@ -1,5 +1,6 @@
 #include "problem/problem.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <set>
@@ -96,17 +97,349 @@ namespace axisym
     auto positive = [](double x) { return x > 0.0; };
   } // namespace
 
+  const char *to_string(const PartCondition::Kind kind)
+  {
+    switch (kind)
+      {
+        case PartCondition::Kind::traction_free: return "traction free";
+        case PartCondition::Kind::pressure: return "pressure";
+        case PartCondition::Kind::traction: return "traction";
+        case PartCondition::Kind::symmetry: return "symmetry";
+        case PartCondition::Kind::displacement: return "displacement";
+        case PartCondition::Kind::die: return "die";
+        case PartCondition::Kind::axis: return "axis";
+      }
+    return "?";
+  }
+
+  bool BodyLoads::any() const
+  {
+    return angular_velocity != 0.0 || gravity != 0.0 || temperature[0] != 0.0 ||
+           temperature[1] != 0.0 || temperature[2] != 0.0;
+  }
+
+  const PartCondition &Body::condition_of_edge(const int i) const
+  {
+    return conditions.at(outline.edges().at(i).part);
+  }
+
+  namespace
+  {
+    auto any_number = [](double) { return true; };
+
+    void parse_material(const ObjectReader &top, Problem &p)
+    {
+      if (!top.has("material"))
+        throw InputError("problem file: missing object material");
+      const ObjectReader m(top.at("material"), "material",
+                           {"youngs_modulus", "poisson_ratio", "density", "thermal_expansion"});
+      p.material.youngs_modulus = m.number("youngs_modulus", "must be > 0 [Pa]", positive);
+      p.material.poisson_ratio = m.number("poisson_ratio", "must be in (-1, 0.5)",
+                                          [](double x) { return x > -1.0 && x < 0.5; });
+      if (m.has("density"))
+        p.material.density = m.number("density", "must be > 0 [kg/m^3]", positive);
+      if (m.has("thermal_expansion"))
+        p.material.thermal_expansion =
+          m.number("thermal_expansion", "a finite coefficient [1/K]", any_number);
+    }
+
+    /// [a, b] with two finite numbers.
+    std::array<double, 2> pair_of_numbers(const json &v, const std::string &path,
+                                          const std::string &what)
+    {
+      if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number() ||
+          !std::isfinite(v[0].get<double>()) || !std::isfinite(v[1].get<double>()))
+        fail(path, v, "must be a pair " + what + " of finite numbers");
+      return {v[0].get<double>(), v[1].get<double>()};
+    }
+
+    // geometry.outline, boundary, loading (body loads) and samples of the outline form.
+    void parse_outline_form(const ObjectReader &top, Problem &p)
+    {
+      p.legacy_cylinder = false;
+      for (const char *legacy_only : {"die", "contact"})
+        if (top.has(legacy_only))
+          throw InputError(std::string("problem file: ") + legacy_only +
+                           ": a die is only supported on the hollow-cylinder form "
+                           "(geometry.inner_radius, outer_radius, length) so far");
+      const ObjectReader g(top.at("geometry"), "geometry", {"outline"});
+      const json &o = g.at("outline");
+      if (!o.is_array() || o.size() < 3)
+        fail("geometry.outline", o, "must be an array: {\"start\": [r, z]} and at least two edges");
+      const ObjectReader first(o[0], "geometry.outline[0]", {"start"});
+      if (!first.has("start"))
+        throw InputError("problem file: geometry.outline[0]: must be {\"start\": [r, z]}");
+      const auto s0 = pair_of_numbers(first.at("start"), "geometry.outline[0].start", "[r, z] [m]");
+      std::vector<OutlineEdge> edges;
+      Point previous{s0[0], s0[1]};
+      for (std::size_t i = 1; i < o.size(); ++i)
+        {
+          const std::string path = "geometry.outline[" + std::to_string(i) + "]";
+          const ObjectReader e(o[i], path, {"line_to", "arc_to", "center", "part"});
+          OutlineEdge edge;
+          if (e.has("line_to") == e.has("arc_to"))
+            fail(path, o[i], "needs exactly one of line_to, arc_to");
+          const bool arc = e.has("arc_to");
+          if (!arc && e.has("center"))
+            fail(path + ".center", e.at("center"), "only an arc_to edge takes a center");
+          if (arc && !e.has("center"))
+            throw InputError("problem file: missing field " + path + ".center (arc_to needs it)");
+          edge.kind = arc ? OutlineEdge::Kind::arc : OutlineEdge::Kind::line;
+          const auto end = pair_of_numbers(e.at(arc ? "arc_to" : "line_to"),
+                                           path + (arc ? ".arc_to" : ".line_to"), "[r, z] [m]");
+          edge.start = previous;
+          edge.end = {end[0], end[1]};
+          if (arc)
+            {
+              const auto c = pair_of_numbers(e.at("center"), path + ".center", "[r, z] [m]");
+              edge.center = {c[0], c[1]};
+            }
+          if (!e.has("part") || !e.at("part").is_string() ||
+              e.at("part").get<std::string>().empty())
+            fail(path + ".part", e.has("part") ? e.at("part") : json(nullptr),
+                 "must name the boundary part (a non-empty string)");
+          edge.part = e.at("part").get<std::string>();
+          previous = edge.end;
+          edges.push_back(edge);
+        }
+      Body body{Outline({s0[0], s0[1]}, std::move(edges), "geometry.outline"), {}, false};
+      const Outline &outline = body.outline;
+
+      // A part lies on the axis entirely or not at all; the axis parts take no condition.
+      std::set<std::string> axis_parts;
+      const std::vector<int> axis_edges = outline.axis_edges();
+      for (const int i : axis_edges)
+        axis_parts.insert(outline.edges()[i].part);
+      for (std::size_t i = 0; i < outline.edges().size(); ++i)
+        {
+          const OutlineEdge &e = outline.edges()[i];
+          const bool on_axis = std::find(axis_edges.begin(), axis_edges.end(),
+                                         static_cast<int>(i)) != axis_edges.end();
+          if (axis_parts.count(e.part) && !on_axis)
+            fail("geometry.outline[" + std::to_string(i + 1) + "].part", e.part,
+                 "names an axis part (an edge on r = 0) for an edge off the axis");
+        }
+      for (const std::string &part : outline.parts())
+        body.conditions[part].kind = axis_parts.count(part) ? PartCondition::Kind::axis
+                                                            : PartCondition::Kind::traction_free;
+
+      if (top.has("boundary"))
+        {
+          const json &b = top.at("boundary");
+          if (!b.is_object())
+            fail("boundary", b, "must be an object of part names");
+          for (auto it = b.begin(); it != b.end(); ++it)
+            {
+              const std::string path = "boundary." + it.key();
+              if (!body.conditions.count(it.key()))
+                {
+                  std::string list;
+                  for (const auto &part : outline.parts())
+                    list += (list.empty() ? "" : ", ") + part;
+                  throw InputError("problem file: " + path + ": no such part in geometry.outline "
+                                   "(parts: " + list + ")");
+                }
+              PartCondition &c = body.conditions[it.key()];
+              if (c.kind == PartCondition::Kind::axis)
+                throw InputError("problem file: " + path + ": part on the axis r = 0, which takes "
+                                 "no condition (u_r = 0 and sigma_rz = 0 are implied)");
+              const ObjectReader cond(it.value(), path,
+                                      {"pressure", "traction", "symmetry", "displacement"});
+              if (it.value().size() != 1)
+                fail(path, it.value(),
+                     "needs exactly one of pressure, traction, symmetry, displacement");
+              if (cond.has("pressure"))
+                {
+                  c.kind = PartCondition::Kind::pressure;
+                  c.pressure = cond.number("pressure", "a finite pressure [Pa]", any_number);
+                }
+              else if (cond.has("traction"))
+                {
+                  c.kind = PartCondition::Kind::traction;
+                  c.traction = pair_of_numbers(cond.at("traction"), path + ".traction",
+                                               "[t_r, t_z] [Pa]");
+                }
+              else if (cond.has("displacement"))
+                {
+                  c.kind = PartCondition::Kind::displacement;
+                  c.displacement = pair_of_numbers(cond.at("displacement"),
+                                                   path + ".displacement", "[u_r, u_z] [m]");
+                }
+              else
+                {
+                  if (cond.at("symmetry") != json(true))
+                    fail(path + ".symmetry", cond.at("symmetry"), "must be true");
+                  for (const OutlineEdge &e : outline.edges())
+                    if (e.part == it.key() && e.kind == OutlineEdge::Kind::arc)
+                      fail(path + ".symmetry", cond.at("symmetry"),
+                           "symmetry needs straight edges, and part " + it.key() +
+                             " has an arc");
+                  c.kind = PartCondition::Kind::symmetry;
+                }
+            }
+        }
+
+      // The rigid translation in z must be fixed (a symmetry plane z = const or a
+      // displacement), or neither solver has a unique solution.
+      bool fixes_u_z = false;
+      for (const OutlineEdge &e : outline.edges())
+        {
+          const PartCondition &c = body.conditions.at(e.part);
+          fixes_u_z |= c.kind == PartCondition::Kind::displacement ||
+                       (c.kind == PartCondition::Kind::symmetry &&
+                        std::abs(e.outward_normal_at(0.5).z) > 1e-12);
+        }
+      if (!fixes_u_z)
+        throw InputError("problem file: boundary: no part fixes the rigid translation in z "
+                         "(needs a displacement part or a symmetry part that is not vertical)");
+
+      if (top.has("loading"))
+        {
+          const ObjectReader l(top.at("loading"), "loading",
+                               {"angular_velocity", "gravity", "temperature"});
+          BodyLoads &loads = p.body_loads;
+          if (l.has("angular_velocity"))
+            loads.angular_velocity =
+              l.number("angular_velocity", "a finite angular velocity [rad/s]", any_number);
+          if (l.has("gravity"))
+            loads.gravity = l.number("gravity", "a finite acceleration [m/s^2]", any_number);
+          if (l.has("temperature"))
+            {
+              const ObjectReader t(l.at("temperature"), "loading.temperature", {"field"});
+              const json &f = t.at("field");
+              if (!f.is_array() || f.size() != 3)
+                fail("loading.temperature.field", f, "must be [T0, T_r, T_z] [K, K/m, K/m]");
+              for (int k = 0; k < 3; ++k)
+                {
+                  if (!f[k].is_number() || !std::isfinite(f[k].get<double>()))
+                    fail("loading.temperature.field[" + std::to_string(k) + "]", f[k],
+                         "must be a finite number");
+                  loads.temperature[k] = f[k].get<double>();
+                }
+            }
+          if ((loads.angular_velocity != 0.0 || loads.gravity != 0.0) && !p.material.density)
+            throw InputError(std::string("problem file: loading.") +
+                             (loads.angular_velocity != 0.0 ? "angular_velocity" : "gravity") +
+                             " needs material.density (missing)");
+          if ((loads.temperature[0] != 0.0 || loads.temperature[1] != 0.0 ||
+               loads.temperature[2] != 0.0) &&
+              !p.material.thermal_expansion)
+            throw InputError("problem file: loading.temperature needs "
+                             "material.thermal_expansion (missing)");
+        }
+
+      if (top.has("samples"))
+        {
+          const json &s = top.at("samples");
+          if (!s.is_array())
+            fail("samples", s, "must be an array of [r, z] pairs");
+          for (std::size_t i = 0; i < s.size(); ++i)
+            {
+              const std::string path = "samples[" + std::to_string(i) + "]";
+              const auto pt = pair_of_numbers(s[i], path, "[r, z] [m]");
+              if (!outline.contains({pt[0], pt[1]}, 1e-12 * outline.size()))
+                fail(path, s[i], "must lie in the section (inside geometry.outline)");
+              p.samples.push_back(pt);
+            }
+        }
+      p.body = std::move(body);
+    }
+
+    // The legacy hollow cylinder as an outline: the half section z >= 0.
+    Body legacy_body(const Problem &p)
+    {
+      const double r1 = p.geometry.inner_radius, r2 = p.geometry.outer_radius;
+      const double a = p.geometry.half_length();
+      auto line = [](Point from, Point to, const char *part) {
+        OutlineEdge e;
+        e.start = from, e.end = to, e.part = part;
+        return e;
+      };
+      Body body{Outline({r1, 0.0},
+                        {line({r1, 0.0}, {r2, 0.0}, "mid_plane"),
+                         line({r2, 0.0}, {r2, a}, "outer"), line({r2, a}, {r1, a}, "end"),
+                         line({r1, a}, {r1, 0.0}, "inner")},
+                        "geometry"),
+                {}, true};
+      body.conditions["mid_plane"].kind = PartCondition::Kind::symmetry;
+      body.conditions["end"].kind = PartCondition::Kind::traction_free;
+      PartCondition inner, outer;
+      if (p.loading)
+        {
+          inner.kind = outer.kind = PartCondition::Kind::pressure;
+          inner.pressure = p.loading->inner_pressure;
+          outer.pressure = p.loading->outer_pressure;
+        }
+      if (p.die)
+        outer.kind = PartCondition::Kind::die;
+      body.conditions["inner"] = inner;
+      body.conditions["outer"] = outer;
+      return body;
+    }
+
+    void parse_settings(const ObjectReader &top, Problem &p)
+  {
+    // Discretization settings (both forms).
+    if (top.has("rfm"))
+      {
+        const ObjectReader r(top.at("rfm"), "rfm",
+                             {"degree", "extra_gauss_points", "n_cells_r", "n_cells_z",
+                              "n_graded_layers", "grading_ratio", "edge_modes", "edge_cutoff",
+                              "edge_extra_points"});
+        if (r.has("degree"))
+          p.rfm.degree = r.integer("degree", ranges::rfm_degree);
+        if (r.has("extra_gauss_points"))
+          p.rfm.extra_gauss_points = r.integer("extra_gauss_points", ranges::rfm_extra_gauss_points);
+        if (r.has("n_cells_r"))
+          p.rfm.n_cells_r = r.integer("n_cells_r", ranges::rfm_n_cells_r);
+        if (r.has("n_cells_z"))
+          p.rfm.n_cells_z = r.integer("n_cells_z", ranges::rfm_n_cells_z);
+        if (r.has("n_graded_layers"))
+          p.rfm.n_graded_layers = r.integer("n_graded_layers", ranges::rfm_n_graded_layers);
+        if (r.has("grading_ratio"))
+          p.rfm.grading_ratio =
+            r.number("grading_ratio", "must be in (0, 1)", [](double x) { return x > 0 && x < 1; });
+        if (r.has("edge_modes"))
+          p.rfm.edge_modes = r.integer("edge_modes", ranges::rfm_edge_modes);
+        if (r.has("edge_cutoff"))
+          p.rfm.edge_cutoff = r.number(
+            "edge_cutoff", "must be in (0, 1): the cutoff radius as a fraction of min(c, a - c, R2 - R1)",
+            [](double x) { return x > 0 && x < 1; });
+        if (r.has("edge_extra_points"))
+          p.rfm.edge_extra_points = r.integer("edge_extra_points", ranges::rfm_edge_extra_points);
+      }
+    if (top.has("fem"))
+      {
+        const ObjectReader f(top.at("fem"), "fem", {"degree", "refinements"});
+        if (f.has("degree"))
+          p.fem.degree = f.integer("degree", ranges::fem_degree);
+        if (f.has("refinements"))
+          p.fem.refinements = f.integer("refinements", ranges::fem_refinements);
+      }
+  }
+  } // namespace
+
   Problem parse_problem(const json &j)
   {
     Problem p;
     p.source = j;
     const ObjectReader top(j, "",
-                           {"geometry", "material", "loading", "die", "contact", "samples",
-                            "rfm", "fem"});
+                           {"geometry", "boundary", "material", "loading", "die", "contact",
+                            "samples", "rfm", "fem"});
 
     // 1. Geometry and material (required).
     if (!top.has("geometry"))
       throw InputError("problem file: missing object geometry");
+    if (top.at("geometry").is_object() && top.at("geometry").contains("outline"))
+      {
+        parse_material(top, p);
+        parse_outline_form(top, p);
+        parse_settings(top, p);
+        return p;
+      }
+    if (top.has("boundary"))
+      throw InputError("problem file: boundary: only with geometry.outline (the hollow-cylinder "
+                       "form takes loading and die)");
     const ObjectReader g(top.at("geometry"), "geometry", {"inner_radius", "outer_radius", "length"});
     p.geometry.inner_radius = g.number("inner_radius", "must be > 0 [m]", positive);
     p.geometry.outer_radius = g.number("outer_radius", "must be > 0 [m]", positive);
@@ -115,12 +448,7 @@ namespace axisym
       fail("geometry.outer_radius", p.geometry.outer_radius,
            "must exceed geometry.inner_radius = " + show(p.geometry.inner_radius));
 
-    if (!top.has("material"))
-      throw InputError("problem file: missing object material");
-    const ObjectReader m(top.at("material"), "material", {"youngs_modulus", "poisson_ratio"});
-    p.material.youngs_modulus = m.number("youngs_modulus", "must be > 0 [Pa]", positive);
-    p.material.poisson_ratio = m.number("poisson_ratio", "must be in (-1, 0.5)",
-                                        [](double x) { return x > -1.0 && x < 0.5; });
+    parse_material(top, p);
 
     // 2. Loads: pressures and/or a die.
     if (top.has("loading"))
@@ -191,43 +519,8 @@ namespace axisym
           }
       }
 
-    // 4. Discretization settings.
-    if (top.has("rfm"))
-      {
-        const ObjectReader r(top.at("rfm"), "rfm",
-                             {"degree", "extra_gauss_points", "n_cells_r", "n_cells_z",
-                              "n_graded_layers", "grading_ratio", "edge_modes", "edge_cutoff",
-                              "edge_extra_points"});
-        if (r.has("degree"))
-          p.rfm.degree = r.integer("degree", ranges::rfm_degree);
-        if (r.has("extra_gauss_points"))
-          p.rfm.extra_gauss_points = r.integer("extra_gauss_points", ranges::rfm_extra_gauss_points);
-        if (r.has("n_cells_r"))
-          p.rfm.n_cells_r = r.integer("n_cells_r", ranges::rfm_n_cells_r);
-        if (r.has("n_cells_z"))
-          p.rfm.n_cells_z = r.integer("n_cells_z", ranges::rfm_n_cells_z);
-        if (r.has("n_graded_layers"))
-          p.rfm.n_graded_layers = r.integer("n_graded_layers", ranges::rfm_n_graded_layers);
-        if (r.has("grading_ratio"))
-          p.rfm.grading_ratio =
-            r.number("grading_ratio", "must be in (0, 1)", [](double x) { return x > 0 && x < 1; });
-        if (r.has("edge_modes"))
-          p.rfm.edge_modes = r.integer("edge_modes", ranges::rfm_edge_modes);
-        if (r.has("edge_cutoff"))
-          p.rfm.edge_cutoff = r.number(
-            "edge_cutoff", "must be in (0, 1): the cutoff radius as a fraction of min(c, a - c, R2 - R1)",
-            [](double x) { return x > 0 && x < 1; });
-        if (r.has("edge_extra_points"))
-          p.rfm.edge_extra_points = r.integer("edge_extra_points", ranges::rfm_edge_extra_points);
-      }
-    if (top.has("fem"))
-      {
-        const ObjectReader f(top.at("fem"), "fem", {"degree", "refinements"});
-        if (f.has("degree"))
-          p.fem.degree = f.integer("degree", ranges::fem_degree);
-        if (f.has("refinements"))
-          p.fem.refinements = f.integer("refinements", ranges::fem_refinements);
-      }
+    p.body = legacy_body(p);
+    parse_settings(top, p);
     return p;
   }
 

@@ -1,4 +1,5 @@
-// Problem files (JSON, SI units) shared by rfm_solve and fem_solve: DESIGN.md section 7.
+// Problem files (JSON, SI units) shared by rfm_solve and fem_solve: DESIGN.md section 7
+// (the legacy hollow cylinder below) and 7.1 (any section: geometry.outline, boundary).
 // This is the problem layer below both solvers: no RFM and no deal.II in here.
 //
 //   { "geometry": {"inner_radius": m, "outer_radius": m, "length": m},
@@ -11,18 +12,32 @@
 //     "rfm": {"degree": p, "edge_modes": k, "edge_cutoff": f, ...},
 //     "fem": {"degree": p, "refinements": L} }
 //
-// At least one of loading and die. Unknown keys, wrong types, non-finite numbers and
-// non-physical values are rejected with InputError naming the field (as a JSON path),
-// the value and the rule. The body spans r in [R1, R2], z in [-length/2, length/2].
+// At least one of loading and die. The body spans r in [R1, R2], z in [-length/2, length/2].
+//
+// The outline form (DESIGN.md 7.1):
+//
+//   { "geometry": {"outline": [{"start": [r, z]}, {"line_to": [r, z], "part": name},
+//                              {"arc_to": [r, z], "center": [r, z], "part": name}, ...]},
+//     "boundary": {name: {"pressure": Pa} | {"traction": [Pa, Pa]} | {"symmetry": true}
+//                        | {"displacement": [m, m]}, ...},
+//     "material": {..., "density": kg/m^3, "thermal_expansion": 1/K},
+//     "loading":  {"angular_velocity": rad/s, "gravity": m/s^2,
+//                  "temperature": {"field": [T0, T_r, T_z]}},                // optional
+//     "samples", "rfm", "fem" as above }
+//
+// Unknown keys, wrong types, non-finite numbers and non-physical values are rejected with
+// InputError naming the field (as a JSON path), the value and the rule.
 #pragma once
 
 #include "problem/input_error.h"
 #include "problem/material.h"
+#include "problem/outline.h"
 #include "problem/settings.h"
 
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -49,13 +64,59 @@ namespace axisym
     std::string profile = "parabolic";
   };
 
+  /// The condition on one boundary part (DESIGN.md 7.1), SI units, normal n outward.
+  struct PartCondition
+  {
+    enum class Kind
+    {
+      traction_free, ///< no condition given: sigma . n = 0
+      pressure,      ///< sigma . n = -pressure n (positive pushes on the body)
+      traction,      ///< sigma . n = (t_r, t_z)
+      symmetry,      ///< straight edges only: u . n = 0, shear traction 0
+      displacement,  ///< u = (u_r, u_z); [0, 0] clamps
+      die,           ///< frictionless rigid die (the legacy outer side; Problem::die)
+      axis           ///< r = 0: u_r = 0, sigma_rz = 0 (implied, never given)
+    };
+    Kind kind = Kind::traction_free;
+    double pressure = 0.0;                      ///< [Pa]
+    std::array<double, 2> traction{{0.0, 0.0}};   ///< (t_r, t_z) [Pa]
+    std::array<double, 2> displacement{{0.0, 0.0}}; ///< (u_r, u_z) [m]
+  };
+  const char *to_string(PartCondition::Kind kind);
+
+  /// Body loads (DESIGN.md 7.1; the solvers apply them from issue 14 on).
+  struct BodyLoads
+  {
+    double angular_velocity = 0.0;           ///< omega [rad/s]: f_r = density omega^2 r
+    double gravity = 0.0;                    ///< g [m/s^2]: f_z = -density g
+    std::array<double, 3> temperature{{0, 0, 0}}; ///< T = T0 + T_r r + T_z z [K]
+    bool any() const;
+  };
+
+  /// The meridian section as an outline with a condition on every part. Both file forms
+  /// give one: the legacy hollow cylinder becomes the rectangle [R1, R2] x [0, a] with the
+  /// parts mid_plane (symmetry), outer, end and inner, and `mirrored` set (the body is the
+  /// section and its mirror image in z = 0, and integrals refer to the whole body).
+  struct Body
+  {
+    Outline outline;
+    std::map<std::string, PartCondition> conditions; ///< one entry per part of the outline
+    bool mirrored = false;
+    /// The condition of the part of edge i.
+    const PartCondition &condition_of_edge(int i) const;
+  };
+
   struct Problem
   {
-    Geometry geometry;
+    /// The legacy form (geometry.inner_radius, ...) or the outline form (geometry.outline).
+    bool legacy_cylinder = true;
+    Geometry geometry; ///< legacy form only (the hollow cylinder, die and pressures)
     Material material;
     std::optional<Loading> loading;
     std::optional<Die> die;
     ContactSettings contact;
+    std::optional<Body> body; ///< always set by parse_problem (both forms)
+    BodyLoads body_loads;     ///< outline form only
     std::vector<std::array<double, 2>> samples; ///< (r, z) [m]
     RfmSettings rfm;
     FemSettings fem;
