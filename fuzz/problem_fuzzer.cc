@@ -27,6 +27,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
       if (!(p.geometry.outer_radius > p.geometry.inner_radius && p.geometry.inner_radius > 0 &&
             p.material.poisson_ratio < 0.5 && p.material.poisson_ratio > -1))
         std::abort();
+      // Both forms give a section outline with a condition on every part.
+      if (!p.body || p.body->outline.signed_area() <= 0 ||
+          p.body->conditions.size() != p.body->outline.parts().size())
+        std::abort();
     }
   catch (const axisym::InputError &)
     {

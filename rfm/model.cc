@@ -14,6 +14,10 @@ namespace rfm
 
   Section build_section(const Problem &problem, const std::optional<double> half_width)
   {
+    if (!problem.legacy_cylinder)
+      throw InputError("geometry.outline: the RFM solves the hollow-cylinder form "
+                       "(geometry.inner_radius, outer_radius, length) only so far; fem_solve "
+                       "solves outline files");
     const Geometry &g = problem.geometry;
     const double a = g.half_length();
     const Loading loading = problem.loading.value_or(Loading{});

@@ -8,13 +8,15 @@
 //
 // Sample run:
 //   build/bin/rfm_solve verification/problems/lame_paper.json --degree 7 --output lame.json
+//   build/bin/rfm_solve verification/problems/die_paper.json --vtu out/   # out/rfm_solution.vtu
 //
 // Exit status: 0 success, 2 bad input (nothing written), 3 numerical failure.
 #include "rfm/allocator.h"
 #include "rfm/contact.h"
 #include "rfm/model.h"
-#include "problem/problem.h"
+#include "rfm/vtu_output.h"
 #include "problem/json_io.h"
+#include "problem/problem.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -116,12 +118,17 @@ int main(int argc, char **argv)
       rfm::keep_freed_matrices_in_heap();
       // 1. Command line.
       CLI::App app{"R-function method with Reissner's mixed principle (axisymmetric elasticity)"};
-      std::string problem_path, output_path;
+      std::string problem_path, output_path, vtu_directory;
       int degree = -1;
       app.add_option("problem", problem_path, "problem file (JSON, SI units)")->required();
       app.add_option("--degree", degree, "polynomial degree p per variable: N = (p+1)^2")
         ->check(CLI::Range(axisym::ranges::rfm_degree.lo, axisym::ranges::rfm_degree.hi));
-      app.add_option("--output", output_path, "result file (JSON); default: stdout summary only");
+      app.add_option("--output", output_path,
+                     "write the result JSON to this file (atomically; after a numerical failure "
+                     "with the history so far); without it the result JSON goes to stdout");
+      app.add_option("--vtu", vtu_directory,
+                     "write DIR/rfm_solution.vtu: the fields on a 101 x 201 grid of the section, "
+                     "named as in fem_solve's VTU (DIR is created when missing)");
       try
         {
           app.parse(argc, argv);
@@ -138,6 +145,8 @@ int main(int argc, char **argv)
         problem.rfm.degree = degree;
       if (!output_path.empty())
         axisym::check_output_path("--output", output_path);
+      if (!vtu_directory.empty())
+        axisym::ensure_output_directory("--vtu", vtu_directory);
       {
         // Memory: estimated before any allocation, against the machine's physical memory.
         const double bytes = rfm::estimate_memory_bytes(
@@ -241,6 +250,16 @@ int main(int argc, char **argv)
         }
       if (!output_path.empty())
         axisym::write_json_atomically(output_path, result);
+      if (!vtu_directory.empty() && finite)
+        {
+          // The solver's section: the half z in [0, a] (as fem_solve writes it).
+          rfm::VtuGrid grid;
+          grid.r_min = problem.geometry.inner_radius, grid.r_max = problem.geometry.outer_radius;
+          grid.z_min = 0.0, grid.z_max = problem.geometry.half_length();
+          const std::string path = vtu_directory + "/rfm_solution.vtu";
+          axisym::write_text_atomically(path, rfm::fields_vtu(model, grid));
+          fmt::print(stderr, "rfm_solve: wrote {}\n", path);
+        }
       fmt::print(stderr, "rfm_solve: Phi_L = {:.6e}, Phi_C = {:.6e}, Phi_R = {:.6e} J/rad; "
                          "assembly {:.3f} s, solve {:.3f} s\n",
                  phi.lagrange, phi.castigliano, phi.reissner, assembly_s, solve_s);

@@ -84,6 +84,27 @@ namespace
 
   const nlohmann::json die = {{"indentation", 1e-6}};
 
+  // The thick sphere of DESIGN.md 7.1 in the outline form, changed at one JSON pointer.
+  std::string sphere_with(const std::string &pointer, const nlohmann::json &value)
+  {
+    nlohmann::json j = nlohmann::json::parse(R"({
+      "geometry": {"outline": [
+        {"start": [0.1, 0.0]},
+        {"line_to": [0.2, 0.0], "part": "equator"},
+        {"arc_to": [0.0, 0.2], "center": [0.0, 0.0], "part": "outer"},
+        {"line_to": [0.0, 0.1], "part": "axis"},
+        {"arc_to": [0.1, 0.0], "center": [0.0, 0.0], "part": "inner"}]},
+      "boundary": {"equator": {"symmetry": true}, "inner": {"pressure": 1.0e7}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})");
+    j[nlohmann::json::json_pointer(pointer)] = value;
+    return j.dump();
+  }
+  const nlohmann::json clockwise = nlohmann::json::parse(R"([
+    {"start": [0.1, 0.0]}, {"arc_to": [0.0, 0.1], "center": [0.0, 0.0], "part": "inner"},
+    {"line_to": [0.0, 0.2], "part": "axis"},
+    {"arc_to": [0.2, 0.0], "center": [0.0, 0.0], "part": "outer"},
+    {"line_to": [0.1, 0.0], "part": "equator"}])");
+
   INSTANTIATE_TEST_SUITE_P(
     Cases, BadInput,
     ::testing::Values(
@@ -131,6 +152,25 @@ namespace
       Case{"degree_fraction", with("/rfm/degree", 2.5), "rfm.degree"},
       Case{"grading_ratio", with("/rfm/grading_ratio", 1.5), "rfm.grading_ratio"},
       Case{"fem_degree", with("/fem/degree", 9), "fem.degree"},
+      Case{"outline_open", sphere_with("/geometry/outline/4/arc_to", {0.1, 0.01}),
+           "geometry.outline"},
+      Case{"outline_self_intersecting",
+           sphere_with("/geometry/outline/1/line_to", {0.25, 0.0}), "geometry.outline"},
+      Case{"outline_clockwise", sphere_with("/geometry/outline", clockwise), "counter-clockwise"},
+      Case{"outline_r_negative", sphere_with("/geometry/outline/3/line_to", {-0.01, 0.1}),
+           "geometry.outline"},
+      Case{"outline_arc_off_circle", sphere_with("/geometry/outline/2/center", {0.0, 0.01}),
+           "geometry.outline[2]"},
+      Case{"outline_unknown_part", sphere_with("/boundary/hole", {{"pressure", 1.0}}),
+           "boundary.hole"},
+      Case{"outline_condition_on_axis", sphere_with("/boundary/axis", {{"pressure", 1.0}}),
+           "boundary.axis"},
+      Case{"outline_symmetry_on_arc", sphere_with("/boundary/outer", {{"symmetry", true}}),
+           "boundary.outer.symmetry"},
+      Case{"outline_sample_outside", sphere_with("/samples", {{0.05, 0.05}}), "samples[0]"},
+      Case{"outline_load_without_density", sphere_with("/loading", {{"gravity", 9.81}}),
+           "material.density"},
+      Case{"outline_not_yet_in_rfm", sphere_with("/samples", {{0.15, 0.0}}), "geometry.outline"},
       Case{"memory_too_large",
            with("/rfm", {{"degree", 40}, {"extra_gauss_points", 40}, {"n_cells_r", 64}, {"n_cells_z", 64}}),
            "GiB"}),
@@ -170,6 +210,30 @@ namespace
     const nlohmann::json r = nlohmann::json::parse(f);
     EXPECT_EQ(r.at("solver"), "rfm");
     EXPECT_LT(r.at("functionals").at("reissner").get<double>(), 0.0);
+  }
+
+  // --vtu DIR creates DIR (and its parents) and writes the fields with the FEM's names and
+  // the displacement as one vector; a DIR that is a file is bad input.
+  TEST(RfmSolveCli, VtuCreatesTheFolderAndWritesTheFields)
+  {
+    const fs::path dir = fs::temp_directory_path() / "rfm_cli_vtu";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path in = dir / "problem.json", vtu = dir / "new" / "nested";
+    std::ofstream(in) << valid().dump();
+    Outcome o = run(in.string() + " --vtu " + vtu.string());
+    EXPECT_EQ(o.status, 0) << o.err;
+    std::ifstream f(vtu / "rfm_solution.vtu");
+    ASSERT_TRUE(f) << o.err;
+    const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    for (const char *name : {"\"u_r\"", "\"sigma_rr\"", "\"sigma_tt\"", "\"sigma_rz\"",
+                             "Name=\"displacement\" NumberOfComponents=\"3\""})
+      EXPECT_NE(text.find(name), std::string::npos) << name;
+    EXPECT_NE(text.find("NumberOfPoints=\"20301\""), std::string::npos);
+
+    o = run(in.string() + " --vtu " + in.string());
+    EXPECT_EQ(o.status, 2) << o.err;
+    EXPECT_NE(o.err.find("--vtu"), std::string::npos) << o.err;
   }
 
   // A die pushed off by an outer pressure larger than its indentation can hold: K > 0 for

@@ -9,6 +9,6 @@ command -v clang++ >/dev/null || { echo "fuzz.sh: needs clang: apt-get install c
 out=build-fuzz
 mkdir -p "$out" "$out/corpus"
 clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
-  -I. -I/usr/include/eigen3 fuzz/problem_fuzzer.cc problem/problem.cc problem/settings.cc -o "$out/problem_fuzzer"
+  -I. -I/usr/include/eigen3 fuzz/problem_fuzzer.cc problem/problem.cc problem/settings.cc problem/outline.cc -o "$out/problem_fuzzer"
 "$out/problem_fuzzer" -max_total_time="$seconds" -print_final_stats=1 -dict=fuzz/problem.dict \
   "$out/corpus" fuzz/corpus
