@@ -383,11 +383,30 @@ namespace axisym
     if (top.has("rfm"))
       {
         const ObjectReader r(top.at("rfm"), "rfm",
-                             {"degree", "extra_gauss_points", "n_cells_r", "n_cells_z",
+                             {"degree", "tolerance", "max_degree", "extra_gauss_points",
+                              "n_cells_r", "n_cells_z",
                               "n_graded_layers", "grading_ratio", "edge_modes", "edge_cutoff",
                               "edge_extra_points"});
+        if (r.has("degree") && r.has("tolerance"))
+          fail("rfm", top.at("rfm"), "give rfm.degree (fixed p) or rfm.tolerance (p rises "
+                                     "until the indicator is below it), not both");
         if (r.has("degree"))
-          p.rfm.degree = r.integer("degree", ranges::rfm_degree);
+          {
+            p.rfm.degree = r.integer("degree", ranges::rfm_degree);
+            p.rfm.degree_given = true;
+          }
+        if (r.has("tolerance"))
+          {
+            p.rfm.tolerance = r.number("tolerance", "must be in [1e-14, 0.1]", [](double x) {
+              return x >= RfmSettings::min_tolerance && x <= 0.1;
+            });
+            if (p.die)
+              fail("rfm.tolerance", r.at("tolerance"),
+                   "not for a die problem (the indicator does not see the contact-edge error; "
+                   "give rfm.degree)");
+          }
+        if (r.has("max_degree"))
+          p.rfm.max_degree = r.integer("max_degree", ranges::rfm_max_degree);
         if (r.has("extra_gauss_points"))
           p.rfm.extra_gauss_points = r.integer("extra_gauss_points", ranges::rfm_extra_gauss_points);
         if (r.has("n_cells_r"))

@@ -27,6 +27,11 @@ namespace axisym
     ranges::rfm_n_graded_layers.check(n_graded_layers);
     ranges::rfm_edge_modes.check(edge_modes);
     ranges::rfm_edge_extra_points.check(edge_extra_points);
+    ranges::rfm_max_degree.check(max_degree);
+    if (tolerance && !(*tolerance >= min_tolerance && *tolerance <= 0.1))
+      throw InputError("rfm.tolerance = " + std::to_string(*tolerance) +
+                       ": must be in [1e-14, 0.1] (the indicator |Phi_L - Phi_C| / |Phi_R| "
+                       "does not fall below rounding, about 1e-15)");
     if (!(grading_ratio > 0.0 && grading_ratio < 1.0))
       throw InputError("rfm.grading_ratio = " + std::to_string(grading_ratio) +
                        ": must be in (0, 1)");

@@ -38,12 +38,24 @@ namespace axisym
     inline constexpr IntRange fem_refinements{"fem.refinements", 0, 6,
                                               "level 6 already has 131072 cells"};
     inline constexpr IntRange contact_curve_points{"contact.curve_points", 0, 200};
+    inline constexpr IntRange rfm_max_degree{"rfm.max_degree", 2, 40,
+                                             "the last p tried to reach rfm.tolerance"};
   } // namespace ranges
 
   /// Discretization of the R-function solver (the "rfm" object).
   struct RfmSettings
   {
     int degree = 8;             ///< p: N = (p + 1)^2 functions per unknown component
+    /// How p is chosen. `degree_given`: the file (or --degree) fixes p = degree. Otherwise p
+    /// rises (2, 4, 6, ...) until the a-posteriori indicator |Phi_L - Phi_C| / |Phi_R| falls
+    /// below `tolerance` (default_tolerance when none is given), up to max_degree. A die
+    /// problem without either uses p = degree: the indicator does not see the contact-edge
+    /// error, which decides its accuracy (DESIGN.md 4.4).
+    bool degree_given = false;
+    std::optional<double> tolerance;
+    int max_degree = 24;
+    static constexpr double default_tolerance = 1e-8; ///< about 1e-4 in stress (Lame)
+    static constexpr double min_tolerance = 1e-14;    ///< the indicator's rounding floor
     int extra_gauss_points = 4; ///< Gauss points per direction and cell = p + this
     int n_cells_r = 1;          ///< uniform cells in r before splitting at break points
     int n_cells_z = 1;          ///< uniform cells in z before splitting at break points

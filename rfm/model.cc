@@ -1,5 +1,6 @@
 #include "rfm/model.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -139,5 +140,47 @@ namespace rfm
         trace += bq.weights[k] * fb.sigma(k, rr);
     p.trace = -2.0 * M_PI * trace;
     return p;
+  }
+
+  ToleranceSolve solve_to_tolerance(const Problem &problem, const DiscretizationOptions &options,
+                                    const double tolerance)
+  {
+    ToleranceSolve out;
+    double best = std::numeric_limits<double>::infinity();
+    int steps_without_progress = 0;
+    for (int p = 2; p <= options.max_degree; p += 2)
+      {
+        DiscretizationOptions o = options;
+        o.degree = p;
+        out.model = std::make_unique<RfmModel>(problem, o, std::nullopt);
+        if (!out.model->ok())
+          {
+            out.message = "p = " + std::to_string(p) + ": " + out.model->summary().message;
+            return out;
+          }
+        const double indicator = out.model->solution().functionals().indicator();
+        out.steps.push_back(
+          {p, indicator, out.model->assembly_seconds() + out.model->solve_seconds()});
+        if (indicator < tolerance)
+          {
+            out.reached = true;
+            out.message = "indicator " + std::to_string(indicator) + " < tolerance at p = " +
+                          std::to_string(p);
+            return out;
+          }
+        steps_without_progress = indicator < 0.5 * best ? 0 : steps_without_progress + 1;
+        best = std::min(best, indicator);
+        if (steps_without_progress >= 2)
+          {
+            out.message = "the indicator stopped decreasing at " + std::to_string(best) +
+                          " (p = " + std::to_string(p) + "), above the tolerance " +
+                          std::to_string(tolerance);
+            return out;
+          }
+      }
+    out.message = "tolerance " + std::to_string(tolerance) + " not reached by rfm.max_degree = " +
+                  std::to_string(options.max_degree) + " (indicator " +
+                  std::to_string(out.steps.empty() ? best : out.steps.back().indicator) + ")";
+    return out;
   }
 } // namespace rfm

@@ -15,6 +15,8 @@
 
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace rfm
 {
@@ -66,4 +68,27 @@ namespace rfm
     std::unique_ptr<RfmSolution> solution_;
     double assembly_s_ = 0.0, solve_s_ = 0.0;
   };
+
+  /// One degree of a tolerance-driven solve.
+  struct DegreeStep
+  {
+    int degree = 0;
+    double indicator = 0.0; ///< |Phi_L - Phi_C| / |Phi_R|
+    double seconds = 0.0;   ///< assembly + solve
+  };
+
+  struct ToleranceSolve
+  {
+    std::unique_ptr<RfmModel> model; ///< the last degree tried
+    std::vector<DegreeStep> steps;
+    bool reached = false;
+    std::string message;
+  };
+
+  /// rfm.tolerance: solves at p = 2, 4, 6, ... up to options.max_degree until the indicator
+  /// falls below `tolerance`. Not reached (reached = false, with the reason) when max_degree
+  /// is passed, when the indicator has not decreased over two steps (its rounding floor), or
+  /// when a solve fails. Precondition: a problem without a die.
+  ToleranceSolve solve_to_tolerance(const axisym::Problem &problem,
+                                    const DiscretizationOptions &options, double tolerance);
 } // namespace rfm

@@ -120,9 +120,14 @@ int main(int argc, char **argv)
       CLI::App app{"R-function method with Reissner's mixed principle (axisymmetric elasticity)"};
       std::string problem_path, output_path, vtu_directory;
       int degree = -1;
+      double tolerance = -1.0;
       app.add_option("problem", problem_path, "problem file (JSON, SI units)")->required();
       app.add_option("--degree", degree, "polynomial degree p per variable: N = (p+1)^2")
         ->check(CLI::Range(axisym::ranges::rfm_degree.lo, axisym::ranges::rfm_degree.hi));
+      app.add_option("--tolerance", tolerance,
+                     "raise p (2, 4, ...) until |Phi_L - Phi_C| / |Phi_R| < this; without "
+                     "--degree, rfm.degree or rfm.tolerance: 1e-8 (a die problem: p = 8)")
+        ->check(CLI::Range(axisym::RfmSettings::min_tolerance, 0.1));
       app.add_option("--output", output_path,
                      "write the result JSON to this file (atomically; after a numerical failure "
                      "with the history so far); without it the result JSON goes to stdout");
@@ -141,8 +146,22 @@ int main(int argc, char **argv)
 
       // 2. Input: everything is checked before any work or output.
       axisym::Problem problem = axisym::read_problem_file(problem_path);
+      // How p is chosen: --degree, --tolerance, rfm.degree, rfm.tolerance, then the default
+      // (a tolerance of 1e-8; p = rfm.degree's default for a die problem).
       if (degree >= 0)
-        problem.rfm.degree = degree;
+        problem.rfm.degree = degree, problem.rfm.degree_given = true;
+      else if (tolerance > 0)
+        {
+          if (problem.die)
+            throw axisym::InputError("--tolerance: not for a die problem (the indicator does not "
+                                     "see the contact-edge error; give --degree)");
+          problem.rfm.tolerance = tolerance, problem.rfm.degree_given = false;
+        }
+      std::optional<double> target_indicator;
+      if (!problem.rfm.degree_given && !problem.die)
+        target_indicator = problem.rfm.tolerance.value_or(axisym::RfmSettings::default_tolerance);
+      if (target_indicator)
+        problem.rfm.degree = problem.rfm.max_degree; // for the memory estimate below
       if (!output_path.empty())
         axisym::check_output_path("--output", output_path);
       if (!vtu_directory.empty())
@@ -165,15 +184,31 @@ int main(int argc, char **argv)
             problem.rfm.n_cells_r, problem.rfm.n_cells_z, bytes / (1 << 30), available / (1 << 30)));
       }
 
-      // 3. Solve: one linear solve, or the contact search for a die problem.
-      const int p = problem.rfm.degree;
-      fmt::print(stderr, "rfm_solve: degree p = {}, N = {} per component\n", p, (p + 1) * (p + 1));
+      // 3. Solve: one linear solve, a degree sequence to a tolerance, or the contact search
+      //    for a die problem.
       std::unique_ptr<rfm::RfmModel> model_ptr;
       rfm::ContactResult contact;
       nlohmann::json result;
       result["solver"] = "rfm";
       result["problem"] = problem.source;
-      if (problem.die)
+      std::optional<rfm::ToleranceSolve> to_tolerance;
+      if (target_indicator)
+        {
+          fmt::print(stderr, "rfm_solve: p = 2, 4, ... until the indicator < {:.1e} (up to p = {})\n",
+                     *target_indicator, problem.rfm.max_degree);
+          to_tolerance = rfm::solve_to_tolerance(problem, problem.rfm, *target_indicator);
+          model_ptr = std::move(to_tolerance->model);
+          problem.rfm.degree = to_tolerance->steps.empty() ? 2 : to_tolerance->steps.back().degree;
+          for (const rfm::DegreeStep &step : to_tolerance->steps)
+            fmt::print(stderr, "rfm_solve:   p = {:2d}: indicator {:.3e} ({:.3f} s)\n", step.degree,
+                       step.indicator, step.seconds);
+        }
+      const int p = problem.rfm.degree;
+      if (!target_indicator)
+        fmt::print(stderr, "rfm_solve: degree p = {}, N = {} per component\n", p, (p + 1) * (p + 1));
+      if (target_indicator)
+        ; // solved above
+      else if (problem.die)
         {
           contact = rfm::solve_contact(problem, problem.rfm, rfm::ContactOptions{});
           result["contact"] = contact_to_json(problem, contact);
@@ -196,7 +231,18 @@ int main(int argc, char **argv)
         {"gauss_points_per_cell", p + problem.rfm.extra_gauss_points},
         {"n_graded_layers", problem.rfm.n_graded_layers},
         {"grading_ratio", problem.rfm.grading_ratio},
-        {"section", "upper half z in [0, length/2], symmetry plane z = 0"}};
+        {"section", "upper half z in [0, length/2], symmetry plane z = 0"},
+        {"degree_policy", target_indicator ? "tolerance" : "fixed"}};
+      if (to_tolerance)
+        {
+          nlohmann::json seq = nlohmann::json::array();
+          for (const rfm::DegreeStep &step : to_tolerance->steps)
+            seq.push_back({{"degree", step.degree},
+                           {"indicator", step.indicator},
+                           {"seconds", step.seconds}});
+          result["discretization"]["tolerance"] = *target_indicator;
+          result["discretization"]["degree_sequence"] = seq;
+        }
       double assembly_s = 0.0, solve_s = 0.0;
       if (problem.die)
         for (const auto &it : contact.history)
@@ -205,7 +251,8 @@ int main(int argc, char **argv)
         assembly_s = model_ptr->assembly_seconds(), solve_s = model_ptr->solve_seconds();
       result["timing"] = {{"assembly_s", assembly_s}, {"solve_s", solve_s}};
 
-      const bool solved = model_ptr && model_ptr->ok() && (!problem.die || contact.success);
+      const bool solved = model_ptr && model_ptr->ok() && (!problem.die || contact.success) &&
+                          (!to_tolerance || to_tolerance->reached);
       if (model_ptr)
         {
           const rfm::SolveSummary &s = model_ptr->summary();
@@ -220,7 +267,9 @@ int main(int argc, char **argv)
         }
       if (!solved)
         {
-          const std::string msg = problem.die ? contact.message : model_ptr->summary().message;
+          const std::string msg = problem.die      ? contact.message
+                                  : to_tolerance ? to_tolerance->message
+                                                 : model_ptr->summary().message;
           result["diagnostics"]["status"] = "failed";
           result["diagnostics"]["message"] = msg;
           if (!output_path.empty())

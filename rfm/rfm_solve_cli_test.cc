@@ -171,6 +171,11 @@ namespace
       Case{"outline_load_without_density", sphere_with("/loading", {{"gravity", 9.81}}),
            "material.density"},
       Case{"outline_not_yet_in_rfm", sphere_with("/samples", {{0.15, 0.0}}), "geometry.outline"},
+      Case{"degree_and_tolerance", with("/rfm", {{"degree", 4}, {"tolerance", 1e-8}}), "not both"},
+      Case{"tolerance_too_small", with("/rfm", {{"tolerance", 1e-16}}), "rfm.tolerance"},
+      Case{"tolerance_for_die", [] { auto j = valid(); j["die"] = {{"indentation", 1e-6}};
+             j["rfm"] = {{"tolerance", 1e-6}}; return j.dump(); }(), "rfm.tolerance"},
+      Case{"max_degree", with("/rfm", {{"max_degree", 1}}), "rfm.max_degree"},
       Case{"memory_too_large",
            with("/rfm", {{"degree", 40}, {"extra_gauss_points", 40}, {"n_cells_r", 64}, {"n_cells_z", 64}}),
            "GiB"}),
