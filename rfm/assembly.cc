@@ -142,20 +142,12 @@ namespace rfm
     return e0 - s.s0 * c.transpose(); // rows: (e0 - C s0)^T
   }
 
-  ReissnerSystem assemble_reissner_system(const DiscreteSpace &space, const Material &material)
+  void add_polynomial_blocks(const Eigen::Ref<const Eigen::VectorXd> &mu,
+                             const Eigen::Ref<const Eigen::VectorXd> &r, const BasisValues &b,
+                             const StressStructureValues &s, const DisplacementStructureValues &d,
+                             const Eigen::Matrix4d &c, ReissnerSystem &sys)
   {
-    const Eigen::Index n = space.n_basis_functions();
-    const Eigen::Matrix4d c = material.compliance();
-    const Eigen::VectorXd &mu = space.measure();
-    const Eigen::VectorXd &r = space.quadrature().r;
-    const BasisValues &b = space.basis_values();
-    const StressStructureValues &s = space.stress_structure();
-    const DisplacementStructureValues &d = space.displacement_structure();
-
-    const Eigen::Index n_s = space.n_stress_unknowns(), n_u = space.n_displacement_unknowns();
-    ReissnerSystem sys;
-    sys.r11.setZero(n_s, n_s);
-    sys.r12.setZero(n_s, n_u);
+    const Eigen::Index n = b.value.cols();
 
     // Weighted stress bases: WX_c = diag(mu omega_c) B. Products with them give every block.
     Eigen::MatrixXd wx[n_stress_components];
@@ -186,19 +178,31 @@ namespace rfm
 
     // 3. p_s = int X . (e(u0) - C s0).
     const Eigen::MatrixXd residual = initial_strain_residual(s, d, r, c);
-    sys.p_s.setZero(n_s);
     for (int k = 0; k < n_stress_components; ++k)
       sys.p_s.segment(k * n, n).noalias() = wx[k].transpose() * residual.col(k);
 
-    // 4. p_u = int s0 . e(Phi) - int_{S_t} t . Phi.
+    // 4. p_u = int s0 . e(Phi) (the traction term is added by the caller).
     const Eigen::VectorXd m_rr = mu.cwiseProduct(s.s0.col(rr));
     const Eigen::VectorXd m_zz = mu.cwiseProduct(s.s0.col(zz));
     const Eigen::VectorXd m_tt = mu.cwiseProduct(s.s0.col(tt)).cwiseProduct(inv_r);
     const Eigen::VectorXd m_rz = mu.cwiseProduct(s.s0.col(rz));
-    sys.p_u.setZero(n_u);
     sys.p_u.segment(0, n).noalias() = v.d_r[0].transpose() * m_rr + v.value[0].transpose() * m_tt +
                                       v.d_z[0].transpose() * m_rz;
     sys.p_u.segment(n, n).noalias() = v.d_z[1].transpose() * m_zz + v.d_r[1].transpose() * m_rz;
+  }
+
+  ReissnerSystem assemble_reissner_system(const DiscreteSpace &space, const Material &material)
+  {
+    const Eigen::Index n = space.n_basis_functions();
+    const Eigen::Index n_s = space.n_stress_unknowns(), n_u = space.n_displacement_unknowns();
+    ReissnerSystem sys;
+    sys.r11.setZero(n_s, n_s);
+    sys.r12.setZero(n_s, n_u);
+    sys.p_s.setZero(n_s);
+    sys.p_u.setZero(n_u);
+    add_polynomial_blocks(space.measure(), space.quadrature().r, space.basis_values(),
+                          space.stress_structure(), space.displacement_structure(),
+                          material.compliance(), sys);
 
     const BoundaryQuadrature &bq = space.boundary_quadrature();
     const BasisValues bb = space.basis().evaluate(bq.r, bq.z);

@@ -57,6 +57,14 @@ namespace rfm
                          const StressStructureValues &s, const DisplacementStructureValues &d,
                          const EdgeColumns *edge, const Eigen::Ref<const Eigen::VectorXd> &r);
 
+  /// The blocks of the polynomial columns (N per component, first in q_s and q_u) at
+  /// quadrature points with per-radian measure mu: R11 and R12 blocks, p_s and the s0 part
+  /// of p_u, written into the leading rows and columns of `sys` (sized by the caller).
+  void add_polynomial_blocks(const Eigen::Ref<const Eigen::VectorXd> &mu,
+                             const Eigen::Ref<const Eigen::VectorXd> &r, const BasisValues &b,
+                             const StressStructureValues &s, const DisplacementStructureValues &d,
+                             const Eigen::Matrix4d &c, ReissnerSystem &sys);
+
   /// e(u0) - C s0 at points (n_points x 4): the data of p_s.
   Eigen::MatrixXd initial_strain_residual(const StressStructureValues &s,
                                           const DisplacementStructureValues &d,

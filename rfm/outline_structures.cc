@@ -1,0 +1,376 @@
+#include "rfm/outline_structures.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rfm
+{
+  using axisym::InputError;
+  using axisym::OutlineEdge;
+  using axisym::PartCondition;
+
+  namespace
+  {
+    double dot(const axisym::Point &a, const axisym::Point &b) { return a.r * b.r + a.z * b.z; }
+    axisym::Point minus(const axisym::Point &a, const axisym::Point &b)
+    {
+      return {a.r - b.r, a.z - b.z};
+    }
+  } // namespace
+
+  // 1. Edge omegas.
+  EdgeOmega::EdgeOmega(const axisym::Outline &outline, const int edge)
+    : edge_(outline.edges().at(edge))
+  {
+    const bool arc = edge_.kind == OutlineEdge::Kind::arc;
+    sign_ = arc && edge_.sweep() < 0 ? -1.0 : 1.0;
+    {
+      const axisym::Point d = minus(edge_.end, edge_.start);
+      const double length = std::sqrt(dot(d, d));
+      const axisym::BoundingBox b = outline.bounding_box();
+      s_min_ = std::numeric_limits<double>::infinity();
+      s_max_ = -s_min_;
+      for (const axisym::Point corner :
+           {axisym::Point{b.r_min, b.z_min}, axisym::Point{b.r_min, b.z_max},
+            axisym::Point{b.r_max, b.z_min}, axisym::Point{b.r_max, b.z_max}})
+        {
+          const double s = dot(minus(corner, edge_.start), d) / length;
+          s_min_ = std::min(s_min_, s), s_max_ = std::max(s_max_, s);
+        }
+    }
+    // Trim unless the carrier meets the closed section only along the edge: sample the
+    // carrier off the edge (beyond a small margin) and look for points in the section.
+    const double size = outline.size(), margin = 1e-6 * size, tol = 1e-9 * size;
+    const int n_samples = 4000;
+    if (!arc)
+      {
+        const axisym::Point d = minus(edge_.end, edge_.start);
+        const double length = std::sqrt(dot(d, d));
+        const axisym::Point tau{d.r / length, d.z / length};
+        const axisym::Point mid{0.5 * (edge_.start.r + edge_.end.r),
+                                0.5 * (edge_.start.z + edge_.end.z)};
+        const axisym::BoundingBox b = outline.bounding_box();
+        double s_lo = 0, s_hi = 0;
+        for (const axisym::Point corner :
+             {axisym::Point{b.r_min, b.z_min}, axisym::Point{b.r_min, b.z_max},
+              axisym::Point{b.r_max, b.z_min}, axisym::Point{b.r_max, b.z_max}})
+          {
+            const double s = dot(minus(corner, mid), tau);
+            s_lo = std::min(s_lo, s), s_hi = std::max(s_hi, s);
+          }
+        for (int k = 0; k <= n_samples && !trimmed_; ++k)
+          {
+            const double s = s_lo + (s_hi - s_lo) * k / n_samples;
+            if (std::abs(s) <= 0.5 * length + margin)
+              continue;
+            trimmed_ = outline.contains({mid.r + s * tau.r, mid.z + s * tau.z}, tol);
+          }
+      }
+    else
+      {
+        const double radius = edge_.radius(), sweep = edge_.sweep();
+        const double phi0 = std::atan2(edge_.start.z - edge_.center.z, edge_.start.r - edge_.center.r);
+        const double phi_margin = margin / radius;
+        for (int k = 0; k < n_samples && !trimmed_; ++k)
+          {
+            // Angle from the start in the direction of the sweep, in [0, 2 pi).
+            const double a = 2.0 * M_PI * k / n_samples;
+            if (a <= std::abs(sweep) + phi_margin || a >= 2.0 * M_PI - phi_margin)
+              continue;
+            const double phi = phi0 + (sweep > 0 ? a : -a);
+            trimmed_ = outline.contains({edge_.center.r + radius * std::cos(phi),
+                                         edge_.center.z + radius * std::sin(phi)},
+                                        tol);
+          }
+      }
+  }
+
+  RValue EdgeOmega::carrier(const double r, const double z) const
+  {
+    if (edge_.kind == OutlineEdge::Kind::line)
+      {
+        const axisym::Point n = edge_.outward_normal_at(0.5);
+        const double f = -(n.r * (r - edge_.start.r) + n.z * (z - edge_.start.z));
+        return {f, -n.r, -n.z};
+      }
+    const double radius = edge_.radius(), dr = r - edge_.center.r, dz = z - edge_.center.z;
+    return {sign_ * (radius * radius - dr * dr - dz * dz) / (2.0 * radius), -sign_ * dr / radius,
+            -sign_ * dz / radius};
+  }
+
+  RValue EdgeOmega::operator()(const double r, const double z) const
+  {
+    const RValue f = carrier(r, z);
+    if (!trimmed_)
+      return f;
+    RValue t;
+    if (edge_.kind == OutlineEdge::Kind::line)
+      {
+        const axisym::Point d = minus(edge_.end, edge_.start);
+        const double length = std::sqrt(dot(d, d));
+        const double tr = d.r / length, tz = d.z / length;
+        const double s = (r - 0.5 * (edge_.start.r + edge_.end.r)) * tr +
+                         (z - 0.5 * (edge_.start.z + edge_.end.z)) * tz;
+        t = {(0.25 * length * length - s * s) / length, -2.0 * s * tr / length,
+             -2.0 * s * tz / length};
+      }
+    else
+      {
+        // The chord's half-plane on the arc's side: t >= 0 exactly on the arc's part of the
+        // circle (the arc is under 180 degrees).
+        const axisym::Point cm{0.5 * (edge_.start.r + edge_.end.r),
+                               0.5 * (edge_.start.z + edge_.end.z)};
+        const axisym::Point am = edge_.point_at(0.5);
+        const axisym::Point m = minus(am, cm);
+        const double len = std::sqrt(dot(m, m));
+        t = {((r - cm.r) * m.r + (z - cm.z) * m.z) / len, m.r / len, m.z / len};
+      }
+    return trimmed_segment(f, t);
+  }
+
+  RValue EdgeOmega::edge_coordinate(const double r, const double z) const
+  {
+    const axisym::Point d = minus(edge_.end, edge_.start);
+    const double length = std::sqrt(dot(d, d)), scale = 2.0 / ((s_max_ - s_min_) * length);
+    const double s = (r - edge_.start.r) * d.r + (z - edge_.start.z) * d.z; // times length
+    return {scale * (s - s_min_ * length) - 1.0, scale * d.r, scale * d.z};
+  }
+
+  std::array<double, 2> EdgeOmega::tangent(const double r, const double z) const
+  {
+    if (edge_.kind == OutlineEdge::Kind::line)
+      {
+        const axisym::Point t = edge_.tangent_at(0.5);
+        return {t.r, t.z};
+      }
+    const double radius = edge_.radius(), s = edge_.sweep() > 0 ? 1.0 : -1.0;
+    return {-s * (z - edge_.center.z) / radius, s * (r - edge_.center.r) / radius};
+  }
+
+  // 2. Edge sets and the checks of what the structures support.
+  OutlineStructures::OutlineStructures(const axisym::Body &body, const int degree)
+    : body_(body), degree_(degree)
+  {
+    const auto &edges = body_.outline.edges();
+    for (int e = 0; e < static_cast<int>(edges.size()); ++e)
+      {
+        omegas_.emplace_back(body_.outline, e);
+        const PartCondition &c = body_.condition_of_edge(e);
+        const axisym::Point n = edges[e].outward_normal_at(0.5);
+        const bool along_r = std::abs(std::abs(n.r) - 1.0) < 1e-12;
+        const bool along_z = std::abs(std::abs(n.z) - 1.0) < 1e-12;
+        switch (c.kind)
+          {
+            case PartCondition::Kind::traction_free:
+            case PartCondition::Kind::pressure:
+            case PartCondition::Kind::traction: stress_edges_.push_back(e); break;
+            case PartCondition::Kind::symmetry:
+            case PartCondition::Kind::axis:
+              if (edges[e].kind != OutlineEdge::Kind::line || !(along_r || along_z))
+                throw InputError("boundary." + edges[e].part +
+                                 ": the RFM structures take symmetry edges along r or z only");
+              symmetry_edges_.push_back(e);
+              (along_r ? u_r_edges_ : u_z_edges_).push_back(e);
+              (along_r ? u_r_values_ : u_z_values_).push_back(0.0);
+              break;
+            case PartCondition::Kind::displacement:
+              u_r_edges_.push_back(e), u_r_values_.push_back(c.displacement[0]);
+              u_z_edges_.push_back(e), u_z_values_.push_back(c.displacement[1]);
+              break;
+            case PartCondition::Kind::die:
+              throw InputError("boundary." + edges[e].part +
+                               ": a die on an outline section is not supported by the RFM");
+          }
+      }
+
+    // Which S edges need the shear factor: T_e or s0_e has an rz component on a Y edge.
+    needs_shear_factor_.assign(edges.size(), false);
+    for (const int e : stress_edges_)
+      for (const int y : symmetry_edges_)
+        for (int k = 1; k < 20; ++k)
+          {
+            const axisym::Point p = edges[y].point_at(k / 20.0);
+            const double scale = 1.0 + std::abs(body_.condition_of_edge(e).traction[0]) +
+                                 std::abs(body_.condition_of_edge(e).traction[1]);
+            if (std::abs(tangent_tensor(e, p.r, p.z)[2]) > 1e-12 ||
+                std::abs(particular(e, p.r, p.z)[2]) > 1e-12 * scale)
+              needs_shear_factor_[e] = true;
+          }
+  }
+
+  std::array<double, 3> OutlineStructures::tangent_tensor(const int e, const double r,
+                                                          const double z) const
+  {
+    const auto t = omegas_[e].tangent(r, z);
+    return {t[0] * t[0], t[1] * t[1], t[0] * t[1]};
+  }
+
+  std::array<double, 3> OutlineStructures::particular(const int e, const double r,
+                                                      const double z) const
+  {
+    const PartCondition &c = body_.condition_of_edge(e);
+    if (c.kind == PartCondition::Kind::pressure)
+      return {-c.pressure, -c.pressure, 0.0};
+    if (c.kind != PartCondition::Kind::traction)
+      return {0.0, 0.0, 0.0};
+    // t n + n t - (t . n) n n with n the outward normal field (exact on the edge).
+    const auto tau = omegas_[e].tangent(r, z);
+    const double n_r = tau[1], n_z = -tau[0];
+    const double t_r = c.traction[0], t_z = c.traction[1], tn = t_r * n_r + t_z * n_z;
+    return {2 * t_r * n_r - tn * n_r * n_r, 2 * t_z * n_z - tn * n_z * n_z,
+            t_r * n_z + t_z * n_r - tn * n_r * n_z};
+  }
+
+  std::array<double, 2> OutlineStructures::prescribed_traction(const int e, const double r,
+                                                               const double z) const
+  {
+    const PartCondition &c = body_.condition_of_edge(e);
+    const auto tau = omegas_[e].tangent(r, z);
+    const double norm = std::hypot(tau[0], tau[1]);
+    const double n_r = tau[1] / norm, n_z = -tau[0] / norm;
+    if (c.kind == PartCondition::Kind::pressure)
+      return {-c.pressure * n_r, -c.pressure * n_z};
+    if (c.kind == PartCondition::Kind::traction)
+      return {c.traction[0], c.traction[1]};
+    return {0.0, 0.0};
+  }
+
+  RValue OutlineStructures::blend(const std::vector<int> &edges, const std::vector<double> &values,
+                                  const double r, const double z) const
+  {
+    // sum_e v_e prod_{f != e} w_f / sum_g prod_{h != g} w_h, with product-rule gradients.
+    RValue num{0, 0, 0}, den{0, 0, 0};
+    for (std::size_t e = 0; e < edges.size(); ++e)
+      {
+        RValue p{1, 0, 0};
+        for (std::size_t f = 0; f < edges.size(); ++f)
+          if (f != e)
+            p = product(p, omegas_[edges[f]](r, z));
+        num = {num.value + values[e] * p.value, num.d_r + values[e] * p.d_r,
+               num.d_z + values[e] * p.d_z};
+        den = {den.value + p.value, den.d_r + p.d_r, den.d_z + p.d_z};
+      }
+    if (den.value == 0.0)
+      return {0, 0, 0}; // a corner of two constrained edges: any value is as good
+    const double q = num.value / den.value;
+    return {q, (num.d_r - q * den.d_r) / den.value, (num.d_z - q * den.d_z) / den.value};
+  }
+
+  double OutlineStructures::shear_factor(const int e, const double omega_y, const double r,
+                                         const double z) const
+  {
+    if (!needs_shear_factor_[e])
+      return 1.0;
+    const double w = omegas_[e](r, z).value;
+    return omega_y + w > 0.0 ? omega_y / (omega_y + w) : 0.0;
+  }
+
+  // 3. Structures at points.
+  OutlineStressValues OutlineStructures::stress(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                                const Eigen::Ref<const Eigen::VectorXd> &z) const
+  {
+    const Eigen::Index n = r.size(), n_s = static_cast<Eigen::Index>(stress_edges_.size());
+    const int n_b = degree_ + 1;
+    OutlineStressValues v;
+    v.omega.resize(n, n_stress_components);
+    v.s0.setZero(n, n_stress_components);
+    for (auto &b : v.boundary)
+      b.setZero(n, n_boundary_columns());
+    std::vector<double> w(n_s), weight(n_s);
+    Eigen::VectorXd legendre(n_b);
+    for (Eigen::Index k = 0; k < n; ++k)
+      {
+        const double rk = r[k], zk = z[k];
+        double omega_t = 1.0, omega_y = 1.0;
+        for (Eigen::Index e = 0; e < n_s; ++e)
+          omega_t *= (w[e] = omegas_[stress_edges_[e]](rk, zk).value);
+        for (const int y : symmetry_edges_)
+          omega_y *= omegas_[y](rk, zk).value;
+        v.omega(k, rr) = v.omega(k, zz) = omega_t;
+        v.omega(k, rz) = omega_t * omega_y;
+        v.omega(k, tt) = 1.0;
+        if (n_s == 0)
+          continue;
+
+        // Transfinite weights W_e (on an S corner, shared equally by the edges through it).
+        double den = 0.0;
+        for (Eigen::Index e = 0; e < n_s; ++e)
+          {
+            double p = 1.0;
+            for (Eigen::Index f = 0; f < n_s; ++f)
+              if (f != e)
+                p *= w[f];
+            den += (weight[e] = p);
+          }
+        if (den > 0.0)
+          for (double &x : weight)
+            x /= den;
+        else
+          {
+            const double zeros = static_cast<double>(std::count(w.begin(), w.end(), 0.0));
+            for (Eigen::Index e = 0; e < n_s; ++e)
+              weight[e] = w[e] == 0.0 ? 1.0 / zeros : 0.0;
+          }
+
+        for (Eigen::Index e = 0; e < n_s; ++e)
+          {
+            const int edge = stress_edges_[e];
+            const double g = shear_factor(edge, omega_y, rk, zk);
+            const auto s0 = particular(edge, rk, zk);
+            v.s0(k, rr) += weight[e] * s0[0];
+            v.s0(k, zz) += weight[e] * s0[1];
+            v.s0(k, rz) += weight[e] * g * s0[2];
+            const auto t = tangent_tensor(edge, rk, zk);
+            // Legendre P_0..P_degree at the edge coordinate.
+            const double xi = omegas_[edge].edge_coordinate(rk, zk).value;
+            legendre[0] = 1.0;
+            if (n_b > 1)
+              legendre[1] = xi;
+            for (int j = 2; j < n_b; ++j)
+              legendre[j] = ((2 * j - 1) * xi * legendre[j - 1] - (j - 1) * legendre[j - 2]) / j;
+            for (int j = 0; j < n_b; ++j)
+              {
+                const Eigen::Index col = e * n_b + j;
+                const double b = weight[e] * legendre[j];
+                v.boundary[rr](k, col) = b * t[0];
+                v.boundary[zz](k, col) = b * t[1];
+                v.boundary[rz](k, col) = b * g * t[2];
+              }
+          }
+      }
+    return v;
+  }
+
+  OutlineDisplacementValues
+  OutlineStructures::displacement(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                  const Eigen::Ref<const Eigen::VectorXd> &z) const
+  {
+    const Eigen::Index n = r.size();
+    OutlineDisplacementValues v;
+    for (Eigen::MatrixXd *m : {&v.omega, &v.omega_r, &v.omega_z})
+      m->resize(n, 2);
+    for (Eigen::MatrixXd *m : {&v.u0, &v.u0_r, &v.u0_z})
+      m->setZero(n, 2);
+    const std::array<const std::vector<int> *, 2> sets{&u_r_edges_, &u_z_edges_};
+    const std::array<const std::vector<double> *, 2> values{&u_r_values_, &u_z_values_};
+    for (int m = 0; m < 2; ++m)
+      {
+        const bool prescribed = std::any_of(values[m]->begin(), values[m]->end(),
+                                            [](double x) { return x != 0.0; });
+        for (Eigen::Index k = 0; k < n; ++k)
+          {
+            RValue w{1, 0, 0};
+            for (const int e : *sets[m])
+              w = product(w, omegas_[e](r[k], z[k]));
+            v.omega(k, m) = w.value, v.omega_r(k, m) = w.d_r, v.omega_z(k, m) = w.d_z;
+            if (prescribed)
+              {
+                const RValue u0 = blend(*sets[m], *values[m], r[k], z[k]);
+                v.u0(k, m) = u0.value, v.u0_r(k, m) = u0.d_r, v.u0_z(k, m) = u0.d_z;
+              }
+          }
+      }
+    return v;
+  }
+} // namespace rfm

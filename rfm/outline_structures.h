@@ -1,0 +1,136 @@
+// R-function geometry and solution structures (paper eqs. 2.1, 2.2) for any meridian
+// section given as an outline of lines and arcs (problem/outline.h, DESIGN.md 7.1), with a
+// condition on every part (problem/problem.h). Every boundary condition holds identically,
+// for any coefficients.
+//
+// 1. Edge omegas (normalized: |grad omega| = 1 on the edge, omega > 0 inside). The carrier
+//    of an edge is its line, f = -n . (x - x_start), or its circle,
+//    f = +-(R^2 - |x - c|^2) / (2 R) (+ when the body is inside the circle: sweep > 0). Where
+//    the carrier meets the closed section only along the edge (a convex side, an annulus'
+//    arcs) omega = f: smooth and polynomial. Otherwise it is trimmed to the edge,
+//    omega = sqrt(f^2 + ((sqrt(t^2 + f^4) - t) / 2)^2), with t >= 0 exactly on the edge's part
+//    of the carrier (a line: the strip ((L/2)^2 - s^2) / L; an arc under 180 degrees: the
+//    half-plane of its chord, on the arc's side).
+//
+// 2. Edge sets. S (stress): traction-free, pressure and traction edges, sigma . n = t;
+//    Y (symmetry and axis): straight edges along r or z, u . n = 0 and sigma_rz = 0;
+//    D (displacement): u = u_bar.
+//
+// 3. Structures. With omega_T = prod_{e in S} omega_e, omega_Y = prod_{e in Y} omega_e and the
+//    transfinite weights W_e = prod_{f != e} omega_f / sum_g prod_{h != g} omega_h over S
+//    (W_e = 1 on e, 0 on the other S edges):
+//
+//      sigma_rr = s0_rr + omega_T P_rr + sum_{e in S} B_e(xi_e) W_e T_e,rr
+//      sigma_zz = s0_zz + omega_T P_zz + sum_{e in S} B_e(xi_e) W_e T_e,zz
+//      sigma_rz = s0_rz + omega_T omega_Y P_rz + sum_{e in S} B_e(xi_e) W_e T_e,rz
+//      sigma_tt = P_tt
+//      u_r = u0_r + omega_ur P_r,   u_z = u0_z + omega_uz P_z
+//
+//    P_c are the tensor Legendre polynomials of the bounding box; B_e are Legendre
+//    polynomials in the edge coordinate xi_e (the projection on the edge's chord: linear,
+//    monotone along the edge, in [-1, 1] over the bounding box); T_e = tau tau with tau the unit tangent field of e
+//    (constant on a line; (-(z - z_c), r - r_c) / R on an arc, radial frame), so that on e
+//    sigma . n = s0 . n and the tangential normal stress B_e is free. s0 = sum_e W_e s0_e
+//    with s0_e = -p I (pressure) or t n + n t - (t . n) n n (traction) in the (r, z) plane.
+//    Where T_e or s0_e has a shear component on a Y edge (an arc whose center is off that
+//    symmetry line), their rz components take the factor omega_Y / (omega_Y + omega_e).
+//    omega_ur vanishes on the D edges and the Y edges with normal e_r (the axis, vertical
+//    symmetry lines); omega_uz on the D edges and the Y edges with normal e_z. u0 is the
+//    transfinite blend of the prescribed values over the same edges (0 on Y edges).
+//
+// The B_e columns make the stress space complete on every traction edge (sigma_ss is free
+// there), and they are independent of the polynomial columns: on e the polynomial columns
+// vanish and the other W's are 0, so a combination that is zero forces B_e = 0 on [-1, 1].
+#pragma once
+
+#include "problem/problem.h"
+#include "rfm/material.h"
+#include "rfm/r_functions.h"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <vector>
+
+namespace rfm
+{
+  /// The omega of one outline edge and its carrier.
+  class EdgeOmega
+  {
+  public:
+    EdgeOmega(const axisym::Outline &outline, int edge);
+
+    RValue operator()(double r, double z) const;
+    /// The carrier function f (line or circle), normalized, positive on the body's side.
+    RValue carrier(double r, double z) const;
+    bool trimmed() const { return trimmed_; }
+    const axisym::OutlineEdge &edge() const { return edge_; }
+    /// The edge coordinate xi and its gradient: the projection on the edge's chord, mapped
+    /// so that the section's bounding box projects onto [-1, 1] (the edge onto a part of
+    /// it). Linear and monotone along the edge; bounded in the section, so that the
+    /// Legendre polynomials of the boundary columns stay in [-1, 1] everywhere (mapped to the
+    /// edge alone, P_p(xi) would reach 1e15 at p = 15 across the section from a short edge).
+    RValue edge_coordinate(double r, double z) const;
+    /// Unit tangent field: constant on a line; on an arc the rotated radius, which equals
+    /// the edge's tangent (direction of travel) on the arc.
+    std::array<double, 2> tangent(double r, double z) const;
+
+  private:
+    axisym::OutlineEdge edge_;
+    bool trimmed_ = false;
+    double sign_ = 1.0; ///< arcs: +1 when the body is inside the circle
+    double s_min_ = 0.0, s_max_ = 1.0; ///< the box's extent along the chord from the start
+  };
+
+  /// The structures' values at points, one row per point.
+  struct OutlineStressValues
+  {
+    Eigen::MatrixXd omega; ///< n x 4: multipliers of the polynomial columns per component
+    Eigen::MatrixXd s0;    ///< n x 4: particular stress
+    /// Boundary columns: for component c, n x n_boundary_columns.
+    std::array<Eigen::MatrixXd, 4> boundary;
+  };
+  struct OutlineDisplacementValues
+  {
+    Eigen::MatrixXd omega, omega_r, omega_z, u0, u0_r, u0_z; ///< n x 2 each: (u_r, u_z)
+  };
+
+  class OutlineStructures
+  {
+  public:
+    /// `degree`: the degree of the B_e Legendre polynomials. Throws InputError for
+    /// conditions the structures do not support (a symmetry edge not along r or z, a die).
+    OutlineStructures(const axisym::Body &body, int degree);
+
+    OutlineStressValues stress(const Eigen::Ref<const Eigen::VectorXd> &r,
+                               const Eigen::Ref<const Eigen::VectorXd> &z) const;
+    OutlineDisplacementValues displacement(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                           const Eigen::Ref<const Eigen::VectorXd> &z) const;
+
+    Eigen::Index n_boundary_columns() const
+    {
+      return static_cast<Eigen::Index>(stress_edges_.size()) * (degree_ + 1);
+    }
+    const axisym::Body &body() const { return body_; }
+    const std::vector<EdgeOmega> &omegas() const { return omegas_; }
+    /// The traction t = sigma . n prescribed at a point of edge e (0 for a non-S edge).
+    std::array<double, 2> prescribed_traction(int edge, double r, double z) const;
+
+  private:
+    // s0_e and T_e at one point, in (rr, zz, rz) order.
+    std::array<double, 3> particular(int edge, double r, double z) const;
+    std::array<double, 3> tangent_tensor(int edge, double r, double z) const;
+    // sum_e v_e W_e over `edges` with values v_e, and its gradient.
+    RValue blend(const std::vector<int> &edges, const std::vector<double> &values, double r,
+                 double z) const;
+    // The factor of the rz components of edge e at a point (1 where no Y correction).
+    double shear_factor(int edge, double omega_y, double r, double z) const;
+
+    axisym::Body body_;
+    int degree_;
+    std::vector<EdgeOmega> omegas_;
+    std::vector<int> stress_edges_, symmetry_edges_, u_r_edges_, u_z_edges_;
+    std::vector<double> u_r_values_, u_z_values_;
+    std::vector<bool> needs_shear_factor_; ///< per edge (S edges only)
+  };
+} // namespace rfm

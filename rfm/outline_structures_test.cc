@@ -1,0 +1,232 @@
+#include "rfm/outline_structures.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace rfm
+{
+  namespace
+  {
+    using axisym::PartCondition;
+
+    // A section with every edge and condition kind: the sphere of DESIGN.md 7.1 (arcs,
+    // the axis, a symmetry line), or a grooved solid shaft (a concave arc off the axis'
+    // center, an inclined free line, a clamped end).
+    axisym::Problem sphere(const nlohmann::json &outer)
+    {
+      nlohmann::json j = nlohmann::json::parse(R"({
+        "geometry": {"outline": [
+          {"start": [0.1, 0.0]},
+          {"line_to": [0.2, 0.0], "part": "equator"},
+          {"arc_to": [0.0, 0.2], "center": [0.0, 0.0], "part": "outer"},
+          {"line_to": [0.0, 0.1], "part": "axis"},
+          {"arc_to": [0.1, 0.0], "center": [0.0, 0.0], "part": "inner"}]},
+        "boundary": {"equator": {"symmetry": true}, "inner": {"pressure": 1.0e7}},
+        "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})");
+      if (!outer.empty())
+        j["boundary"]["outer"] = outer;
+      return axisym::parse_problem(j);
+    }
+
+    axisym::Problem grooved_shaft()
+    {
+      return axisym::parse_problem(nlohmann::json::parse(R"({
+        "geometry": {"outline": [
+          {"start": [0.0, 0.0]},
+          {"line_to": [0.04, 0.0], "part": "mid"},
+          {"arc_to": [0.05, 0.01], "center": [0.05, 0.0], "part": "groove"},
+          {"line_to": [0.05, 0.03], "part": "surface"},
+          {"line_to": [0.05, 0.05], "part": "land"},
+          {"line_to": [0.045, 0.08], "part": "taper"},
+          {"line_to": [0.0, 0.08], "part": "end"},
+          {"line_to": [0.0, 0.0], "part": "axis"}]},
+        "boundary": {"mid": {"symmetry": true}, "taper": {"traction": [2.0e6, -1.0e6]},
+                     "end": {"displacement": [1.0e-6, -2.0e-6]}, "surface": {"pressure": 3.0e6}},
+        "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
+    }
+
+    // Random points on edge e (away from its ends), and just inside the section.
+    std::vector<axisym::Point> points_on(const axisym::OutlineEdge &e, std::mt19937 &rng)
+    {
+      std::uniform_real_distribution<double> t(0.02, 0.98);
+      std::vector<axisym::Point> p;
+      for (int k = 0; k < 12; ++k)
+        p.push_back(e.point_at(t(rng)));
+      return p;
+    }
+  } // namespace
+
+  // omega = 0 on its edge, > 0 inside, |grad omega| = 1 on the edge; gradients against
+  // central differences; trimmed where the carrier runs on in the section.
+  TEST(EdgeOmega, VanishesOnItsEdgeIsPositiveInsideAndNormalized)
+  {
+    std::mt19937 rng(7);
+    for (const axisym::Problem &p : {sphere({{"pressure", 1.0}}), grooved_shaft()})
+      {
+        const axisym::Outline &outline = p.body->outline;
+        for (int e = 0; e < static_cast<int>(outline.edges().size()); ++e)
+          {
+            const EdgeOmega w(outline, e);
+            for (const axisym::Point &x : points_on(outline.edges()[e], rng))
+              {
+                EXPECT_NEAR(w(x.r, x.z).value, 0.0, 1e-15) << outline.edges()[e].part;
+                // Normalized: |grad omega| = 1 just inside the edge (a trimmed omega is
+                // |f| across its edge, with a kink on it).
+                const axisym::OutlineEdge &edge = outline.edges()[e];
+                axisym::Point n = edge.outward_normal_at(0.5);
+                if (edge.kind == axisym::OutlineEdge::Kind::arc)
+                  {
+                    const double s_out = edge.sweep() > 0 ? 1.0 : -1.0;
+                    n = {s_out * (x.r - edge.center.r) / edge.radius(),
+                         s_out * (x.z - edge.center.z) / edge.radius()};
+                  }
+                const double h = 1e-7 * outline.size();
+                const RValue v = w(x.r - h * n.r, x.z - h * n.z);
+                EXPECT_NEAR(std::hypot(v.d_r, v.d_z), 1.0, 1e-5) << edge.part;
+              }
+            // Positive at interior points; gradient against central differences.
+            std::uniform_real_distribution<double> ur(outline.bounding_box().r_min,
+                                                      outline.bounding_box().r_max);
+            std::uniform_real_distribution<double> uz(outline.bounding_box().z_min,
+                                                      outline.bounding_box().z_max);
+            int checked = 0;
+            while (checked < 30)
+              {
+                const axisym::Point x{ur(rng), uz(rng)};
+                if (!outline.contains(x, 0.0) || outline.distance_to_boundary(x) < 1e-3 * outline.size())
+                  continue;
+                ++checked;
+                const RValue v = w(x.r, x.z);
+                EXPECT_GT(v.value, 0.0) << outline.edges()[e].part;
+                const double h = 1e-6;
+                EXPECT_NEAR(v.d_r, (w(x.r + h, x.z).value - w(x.r - h, x.z).value) / (2 * h), 1e-6);
+                EXPECT_NEAR(v.d_z, (w(x.r, x.z + h).value - w(x.r, x.z - h).value) / (2 * h), 1e-6);
+              }
+          }
+        // The sphere's carriers never re-enter the section: all untrimmed (polynomial).
+        if (outline.edges().size() == 4)
+          {
+            for (int e = 0; e < 4; ++e)
+              EXPECT_FALSE(EdgeOmega(outline, e).trimmed()) << e;
+          }
+      }
+    // The surface and the land share the line r = 0.05: trimmed; the groove's circle and
+    // the other lines leave the shaft: untrimmed.
+    const axisym::Problem shaft = grooved_shaft();
+    for (int e = 0; e < 7; ++e)
+      EXPECT_EQ(EdgeOmega(shaft.body->outline, e).trimmed(), e == 2 || e == 3) << e;
+  }
+
+  // Every condition holds at random boundary points for random coefficients, to 1e-12
+  // relative: sigma . n = t on traction edges, sigma_rz = 0 and u . n = 0 on symmetry edges
+  // and the axis, u = u_bar on displacement edges.
+  TEST(OutlineStructures, EveryConditionHoldsForRandomCoefficients)
+  {
+    std::mt19937 rng(11);
+    std::normal_distribution<double> coef(0.0, 1.0);
+    for (const axisym::Problem &p :
+         {sphere({{"traction", {1.0e6, -3.0e6}}}), sphere(nlohmann::json::object()),
+          grooved_shaft()})
+      {
+        const axisym::Body &body = *p.body;
+        const OutlineStructures s(body, 6);
+        Eigen::VectorXd q_b(s.n_boundary_columns());
+        for (Eigen::Index j = 0; j < q_b.size(); ++j)
+          q_b[j] = coef(rng) * 1e6;
+        const double scale = 1e7; // stress scale of the loads and coefficients
+        for (int e = 0; e < static_cast<int>(body.outline.edges().size()); ++e)
+          {
+            const axisym::OutlineEdge &edge = body.outline.edges()[e];
+            const PartCondition &c = body.condition_of_edge(e);
+            const std::vector<axisym::Point> pts = points_on(edge, rng);
+            Eigen::VectorXd r(pts.size()), z(pts.size());
+            for (std::size_t k = 0; k < pts.size(); ++k)
+              r[k] = pts[k].r, z[k] = pts[k].z;
+            const OutlineStressValues sv = s.stress(r, z);
+            const OutlineDisplacementValues dv = s.displacement(r, z);
+            for (Eigen::Index k = 0; k < r.size(); ++k)
+              {
+                double sigma[4];
+                for (int comp = 0; comp < 4; ++comp)
+                  sigma[comp] = sv.s0(k, comp) + sv.omega(k, comp) * coef(rng) * 1e6 +
+                                sv.boundary[comp].row(k).dot(q_b);
+                double u[2];
+                for (int m = 0; m < 2; ++m)
+                  u[m] = dv.u0(k, m) + dv.omega(k, m) * coef(rng) * 1e-5;
+                const axisym::Point n = edge.outward_normal_at(0.5);
+                // The normal at this point (arcs: radial).
+                double n_r = n.r, n_z = n.z;
+                if (edge.kind == axisym::OutlineEdge::Kind::arc)
+                  {
+                    const double s_out = edge.sweep() > 0 ? 1.0 : -1.0;
+                    n_r = s_out * (r[k] - edge.center.r) / edge.radius();
+                    n_z = s_out * (z[k] - edge.center.z) / edge.radius();
+                  }
+                const double t_r = sigma[rr] * n_r + sigma[rz] * n_z;
+                const double t_z = sigma[rz] * n_r + sigma[zz] * n_z;
+                switch (c.kind)
+                  {
+                    case PartCondition::Kind::traction_free:
+                    case PartCondition::Kind::pressure:
+                    case PartCondition::Kind::traction:
+                      {
+                        const auto t = s.prescribed_traction(e, r[k], z[k]);
+                        EXPECT_NEAR(t_r, t[0], 1e-12 * scale) << edge.part;
+                        EXPECT_NEAR(t_z, t[1], 1e-12 * scale) << edge.part;
+                        break;
+                      }
+                    case PartCondition::Kind::symmetry:
+                    case PartCondition::Kind::axis:
+                      EXPECT_NEAR(sigma[rz], 0.0, 1e-12 * scale) << edge.part;
+                      EXPECT_NEAR(u[0] * n_r + u[1] * n_z, 0.0, 1e-18) << edge.part;
+                      break;
+                    case PartCondition::Kind::displacement:
+                      EXPECT_NEAR(u[0], c.displacement[0], 1e-18) << edge.part;
+                      EXPECT_NEAR(u[1], c.displacement[1], 1e-18) << edge.part;
+                      break;
+                    default: break;
+                  }
+              }
+          }
+      }
+  }
+
+  // The boundary columns carry the tangential normal stress of their edge: on the outer
+  // arc of the sphere, sigma_ss = sum_j q_j P_j(xi) exactly.
+  TEST(OutlineStructures, BoundaryColumnsCarryTheTangentialStressOfTheirEdge)
+  {
+    const axisym::Problem p = sphere(nlohmann::json::object());
+    const OutlineStructures s(*p.body, 3);
+    ASSERT_EQ(s.n_boundary_columns(), 2 * 4); // outer and inner arcs, P_0..P_3
+    const axisym::OutlineEdge &outer = p.body->outline.edges()[1];
+    Eigen::VectorXd r(1), z(1);
+    const axisym::Point x = outer.point_at(0.3);
+    r << x.r;
+    z << x.z;
+    const OutlineStressValues v = s.stress(r, z);
+    const double xi = s.omegas()[1].edge_coordinate(x.r, x.z).value;
+    const axisym::Point t = outer.tangent_at(0.3);
+    // Column 2 (outer edge listed first among the S edges: P_2(xi)).
+    const double p2 = 0.5 * (3 * xi * xi - 1);
+    const double s_ss = v.boundary[rr](0, 2) * t.r * t.r + v.boundary[zz](0, 2) * t.z * t.z +
+                        2 * v.boundary[rz](0, 2) * t.r * t.z;
+    EXPECT_NEAR(s_ss, p2, 1e-14);
+    // The inner edge's columns vanish on the outer edge.
+    for (int j = 4; j < 8; ++j)
+      EXPECT_NEAR(v.boundary[rr](0, j), 0.0, 1e-14);
+  }
+
+  TEST(OutlineStructures, RejectsAnInclinedSymmetryLine)
+  {
+    nlohmann::json j = nlohmann::json::parse(R"({
+      "geometry": {"outline": [
+        {"start": [0.1, 0.0]}, {"line_to": [0.2, 0.0], "part": "bottom"},
+        {"line_to": [0.2, 0.1], "part": "side"}, {"line_to": [0.1, 0.05], "part": "slope"},
+        {"line_to": [0.1, 0.0], "part": "inner"}]},
+      "boundary": {"bottom": {"symmetry": true}, "slope": {"symmetry": true}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})");
+    const axisym::Problem p = axisym::parse_problem(j);
+    EXPECT_THROW(OutlineStructures(*p.body, 2), axisym::InputError);
+  }
+} // namespace rfm
