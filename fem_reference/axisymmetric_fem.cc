@@ -6,9 +6,12 @@
 //   4. linear solve (UMFPACK or CG + SSOR),
 //   5. unilateral contact: penalty on the active set at the face quadrature points,
 //   6. post-processing: functionals, contact force three ways, half-width, samples, VTU.
+// Outline problems (DESIGN.md 7.1) share 2-4 and 6; their mesh (1o) carries manifolds on the
+// arcs and their conditions are per part (2o, 3o, 6o).
 #include "fem_reference/axisymmetric_fem.h"
 
 #include "fem_reference/half_section_mesh.h"
+#include "fem_reference/outline_mesh.h"
 
 #include <deal.II/base/convergence_table.h>
 #include <deal.II/base/function.h>
@@ -19,9 +22,11 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
+#include <deal.II/fe/mapping_q_cache.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -44,6 +49,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
+#include <memory>
 #include <sstream>
 #include <unistd.h>
 
@@ -77,6 +84,29 @@ namespace fem
            "need base_cells_r >= 1, base_cells_z >= 2");
     if (!(radial_grading >= 1 && axial_grading >= 1))
       fail("radial_grading/axial_grading", std::to_string(radial_grading), "must be >= 1");
+    if (!(outline_cells_on_shortest_edge >= 1 && outline_cells_on_shortest_edge <= 64))
+      fail("outline_cells_on_shortest_edge", std::to_string(outline_cells_on_shortest_edge),
+           "must be in [1, 64]");
+  }
+
+  void check_supported(const axisym::Problem &problem, const FemOptions &options)
+  {
+    if (problem.legacy_cylinder)
+      return;
+    if (!problem.body)
+      throw axisym::InputError("problem: an outline problem without its body (parser bug?)");
+    if (problem.body_loads.any())
+      throw axisym::InputError("loading: body loads are not applied by fem_solve yet");
+    if (problem.die)
+      throw axisym::InputError("die: the FEM reference supports a die only on the "
+                               "hollow-cylinder form");
+    for (const auto &[part, condition] : problem.body->conditions)
+      if (condition.kind == axisym::PartCondition::Kind::die)
+        throw axisym::InputError("boundary." + part +
+                                 ": a die on an outline part is not supported by fem_solve");
+    if (options.mesh == FemOptions::MeshGenerator::structured)
+      throw axisym::InputError("FEM option mesh (--mesh) = structured: only for the "
+                               "hollow-cylinder form (an outline section is meshed by gmsh)");
   }
 
   FemOptions options_from_problem(const axisym::Problem &problem)
@@ -102,7 +132,9 @@ namespace fem
     /// du_i/dx_j, x = (r, z)).
     Stress strain(double r, double u_r, const Tensor<1, 2> &grad_u_r, const Tensor<1, 2> &grad_u_z)
     {
-      return {{grad_u_r[0], grad_u_z[1], u_r / r, grad_u_r[1] + grad_u_z[0]}};
+      // On the axis (r = 0: samples, VTU points, never a quadrature point) u_r/r -> du_r/dr.
+      return {{grad_u_r[0], grad_u_z[1], r > 0 ? u_r / r : grad_u_r[0],
+               grad_u_r[1] + grad_u_z[0]}};
     }
 
     /// Strain of the shape function whose only non-zero component is `component`.
@@ -172,17 +204,23 @@ namespace fem
             out[q][1] = in.solution_values[q][1];
             for (unsigned int k = 0; k < 4; ++k)
               out[q][2 + k] = s[k];
+            out[q][6] = in.solution_values[q][0];
+            out[q][7] = in.solution_values[q][1];
           }
       }
+      // The displacement once more as one vector (x = r, y = z) for ParaView's Warp By Vector.
       std::vector<std::string> get_names() const override
       {
-        return {"u_r", "u_z", "sigma_rr", "sigma_zz", "sigma_tt", "sigma_rz"};
+        return {"u_r",      "u_z",      "sigma_rr",     "sigma_zz",
+                "sigma_tt", "sigma_rz", "displacement", "displacement"};
       }
       std::vector<DataComponentInterpretation::DataComponentInterpretation>
       get_data_component_interpretation() const override
       {
-        return std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+        std::vector<DataComponentInterpretation::DataComponentInterpretation> kinds(
           6, DataComponentInterpretation::component_is_scalar);
+        kinds.resize(8, DataComponentInterpretation::component_is_part_of_vector);
+        return kinds;
       }
       UpdateFlags get_needed_update_flags() const override
       {
@@ -202,16 +240,19 @@ namespace fem
       std::vector<PressurePoint> pressure;
       std::optional<double> error_sq, norm_sq;
       std::optional<double> error_max, norm_max;
+      std::optional<double> u_error_sq, u_norm_sq;
     };
 
     class AxisymmetricSolver
     {
     public:
       AxisymmetricSolver(const axisym::Problem &problem, const FemOptions &options,
-                         const StressFunction &exact)
+                         const StressFunction &exact, const DisplacementFunction &exact_u)
         : problem_(problem)
         , options_(options)
         , exact_(exact)
+        , exact_u_(exact_u)
+        , outline_(!problem.legacy_cylinder)
         , fe_(FE_Q<2>(options.degree), 2)
         , dof_handler_(triangulation_)
         , d_(problem.material)
@@ -219,6 +260,8 @@ namespace fem
         , face_quadrature_(options.contact_points > 0 ? options.contact_points
                                                       : options.degree + 1)
       {
+        if (!outline_)
+          mapping_ = std::make_unique<MappingQ1<2>>();
         const double a = problem.geometry.half_length();
         if (problem.die)
           {
@@ -240,7 +283,18 @@ namespace fem
       };
 
       void make_mesh();
+      void make_outline_mesh();
       void setup_system();
+      void add_outline_constraints();
+      void add_outline_tractions(const DoFHandler<2>::active_cell_iterator &cell,
+                                 FEFaceValues<2> &fv, Vector<double> &cell_rhs) const;
+      void outline_boundary_terms(double &work, double &b_c, double &b_r) const;
+      /// Outline edge of a boundary face (its manifold id - 1, set in make_outline_mesh).
+      int edge_of(const TriaIterator<TriaAccessor<1, 2, 2>> &face) const
+      {
+        return static_cast<int>(face->manifold_id()) - 1;
+      }
+      const Mapping<2> &mapping() const { return *mapping_; }
       template <typename Finish>
       void active_set_loop(FemResult &result, int pass, const Finish &finish);
       void assemble_base();
@@ -263,6 +317,8 @@ namespace fem
       const axisym::Problem &problem_;
       FemOptions options_;
       StressFunction exact_;
+      DisplacementFunction exact_u_;
+      bool outline_ = false; ///< an outline problem (DESIGN.md 7.1): the section as given
       Mode mode_ = Mode::none;
       double half_width_ = 0;
       std::optional<double> split_; ///< z where the outer line is split (contact edge)
@@ -271,7 +327,12 @@ namespace fem
       Triangulation<2> triangulation_;
       FESystem<2> fe_;
       DoFHandler<2> dof_handler_;
-      MappingQ1<2> mapping_;
+      // MappingQ1 for the legacy rectangle; for an outline MappingQ(p) cached after the
+      // refinement. Declared after the triangulation: the cache listens to its signals.
+      std::unique_ptr<Mapping<2>> mapping_;
+      double base_mesh_size_ = 0;
+      unsigned long n_base_cells_ = 0;
+      bool base_mesh_subdivided_ = false;
       Stiffness d_;
       QGauss<2> cell_quadrature_;
       QGaussLobatto<1> face_quadrature_; // on r = R2: penalty, active set, traces
@@ -288,6 +349,11 @@ namespace fem
     // 1. Mesh.
     void AxisymmetricSolver::make_mesh()
     {
+      if (outline_)
+        {
+          make_outline_mesh();
+          return;
+        }
       const axisym::Geometry &g = problem_.geometry;
       HalfSectionMeshSpec spec;
       spec.inner_radius = g.inner_radius;
@@ -366,6 +432,97 @@ namespace fem
                                      std::to_string(face->boundary_id()) + ")");
     }
 
+    // 1o. Outline mesh: the gmsh base mesh, the manifold of its edge on every boundary face
+    // (PolarManifold about the arc's center, flat for a line), transfinite interpolation on
+    // the cells, L global refinements, then MappingQ(p) cached once for the refined mesh.
+    void AxisymmetricSolver::make_outline_mesh()
+    {
+      const axisym::Outline &outline = problem_.body->outline;
+      const std::vector<axisym::OutlineEdge> &edges = outline.edges();
+      const std::vector<std::string> parts = outline.parts();
+      OutlineMeshSpec spec;
+      spec.cells_on_shortest_edge = options_.outline_cells_on_shortest_edge;
+
+      static std::atomic<int> counter{0};
+      const std::filesystem::path path =
+        std::filesystem::temp_directory_path() /
+        ("rfm_fem_outline_" + std::to_string(::getpid()) + "_" + std::to_string(counter++) +
+         ".msh");
+      const OutlineMeshInfo info = write_outline_gmsh_mesh(outline, spec, path.string());
+      GridIn<2> grid_in;
+      grid_in.attach_triangulation(triangulation_);
+      try
+        {
+          std::ifstream in(path);
+          grid_in.read_msh(in);
+        }
+      catch (...)
+        {
+          std::filesystem::remove(path);
+          throw;
+        }
+      std::filesystem::remove(path);
+      base_mesh_size_ = info.base_mesh_size;
+      base_mesh_subdivided_ = info.subdivided;
+      n_base_cells_ = triangulation_.n_active_cells();
+
+      // Manifold ids: edge i -> i + 1 on its boundary faces, the cells (and interior faces)
+      // -> n_edges + 1 (transfinite interpolation).
+      const types::manifold_id cell_manifold = static_cast<types::manifold_id>(edges.size() + 1);
+      triangulation_.set_all_manifold_ids(cell_manifold);
+      const double tol = 1e-6 * outline.size();
+      for (const auto &cell : triangulation_.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            {
+              const unsigned int id = face->boundary_id();
+              const Point<2> a = face->vertex(0), b = face->vertex(1);
+              if (id < 1 || id > parts.size())
+                throw std::runtime_error("mesh: boundary face at (" + std::to_string(a[0]) +
+                                         ", " + std::to_string(a[1]) +
+                                         ") has no part (id " + std::to_string(id) + ")");
+              const int edge =
+                edge_of_boundary_segment(outline, parts[id - 1], {a[0], a[1]}, {b[0], b[1]});
+              const double off = std::max(distance_to_edge(edges[edge], {a[0], a[1]}),
+                                          distance_to_edge(edges[edge], {b[0], b[1]}));
+              if (off > tol)
+                throw std::runtime_error("mesh: boundary face at (" + std::to_string(a[0]) +
+                                         ", " + std::to_string(a[1]) + ") is " +
+                                         std::to_string(off) + " m off its part " +
+                                         parts[id - 1]);
+              face->set_manifold_id(static_cast<types::manifold_id>(edge + 1));
+            }
+      using Geometry = FemOptions::OutlineGeometry;
+      const bool curved = options_.outline_geometry != Geometry::coarse_polygon;
+      for (std::size_t i = 0; i < edges.size(); ++i)
+        {
+          const auto id = static_cast<types::manifold_id>(i + 1);
+          if (curved && edges[i].kind == axisym::OutlineEdge::Kind::arc)
+            triangulation_.set_manifold(
+              id, PolarManifold<2>(Point<2>(edges[i].center.r, edges[i].center.z)));
+          else
+            triangulation_.set_manifold(id, FlatManifold<2>());
+        }
+      if (curved)
+        {
+          TransfiniteInterpolationManifold<2> transfinite;
+          transfinite.initialize(triangulation_);
+          triangulation_.set_manifold(cell_manifold, transfinite);
+        }
+      else
+        triangulation_.set_manifold(cell_manifold, FlatManifold<2>());
+      triangulation_.refine_global(level_);
+
+      if (options_.outline_geometry == Geometry::curved)
+        {
+          auto cache = std::make_unique<MappingQCache<2>>(options_.degree);
+          cache->initialize(MappingQ<2>(options_.degree), triangulation_);
+          mapping_ = std::move(cache);
+        }
+      else
+        mapping_ = std::make_unique<MappingQ1<2>>();
+    }
+
     // 2. Degrees of freedom and constraints.
     void AxisymmetricSolver::setup_system()
     {
@@ -373,13 +530,19 @@ namespace fem
       constraints_.clear();
       DoFTools::make_hanging_node_constraints(dof_handler_, constraints_);
       const FEValuesExtractors::Scalar u_r(0), u_z(1);
-      VectorTools::interpolate_boundary_values(mapping_, dof_handler_, symmetry_boundary,
-                                               Functions::ZeroFunction<2>(2), constraints_,
-                                               fe_.component_mask(u_z));
-      if (mode_ == Mode::bilateral)
-        VectorTools::interpolate_boundary_values(mapping_, dof_handler_, outer_contact_boundary,
-                                                 DieDisplacement(*problem_.die, problem_.geometry),
-                                                 constraints_, fe_.component_mask(u_r));
+      if (outline_)
+        add_outline_constraints();
+      else
+        {
+          VectorTools::interpolate_boundary_values(mapping(), dof_handler_, symmetry_boundary,
+                                                   Functions::ZeroFunction<2>(2), constraints_,
+                                                   fe_.component_mask(u_z));
+          if (mode_ == Mode::bilateral)
+            VectorTools::interpolate_boundary_values(
+              mapping(), dof_handler_, outer_contact_boundary,
+              DieDisplacement(*problem_.die, problem_.geometry), constraints_,
+              fe_.component_mask(u_r));
+        }
       constraints_.close();
 
       base_matrix_.clear(); // they refer to the sparsity pattern rebuilt below
@@ -395,6 +558,11 @@ namespace fem
 
       outer_faces_.clear();
       h_min_ = std::numeric_limits<double>::infinity();
+      if (outline_)
+        {
+          kappa_ = 0; // no die on an outline section (check_supported)
+          return;
+        }
       for (const auto &cell : dof_handler_.active_cell_iterators())
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() && is_outer(cell->face(f)->boundary_id()))
@@ -405,16 +573,171 @@ namespace fem
       kappa_ = options_.penalty_factor * problem_.material.youngs_modulus / h_min_;
     }
 
+    // 2o. Outline constraints. Each boundary node (the pair of u_r and u_z dofs at one support
+    // point) collects a_r u_r + a_z u_z = g from every constrained face through it:
+    // displacement (1, 0) = u_r*, (0, 1) = u_z*; axis (1, 0) = 0; symmetry n = 0 with the
+    // straight edge's normal. The first (in that order of priority) is kept, with the one
+    // most independent of it if their normals are not parallel (then both components are
+    // fixed); a single condition constrains its larger component.
+    void AxisymmetricSolver::add_outline_constraints()
+    {
+      using Kind = axisym::PartCondition::Kind;
+      const axisym::Body &body = *problem_.body;
+      struct Condition
+      {
+        double a_r, a_z, g;
+        int priority, edge;
+      };
+      struct Node
+      {
+        types::global_dof_index dof_z = 0;
+        std::vector<Condition> conditions;
+      };
+      std::map<types::global_dof_index, Node> nodes; // by the u_r dof
+      const unsigned int n_face_dofs = fe_.n_dofs_per_face();
+      std::vector<types::global_dof_index> face_dofs(n_face_dofs);
+      for (const auto &cell : dof_handler_.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          {
+            if (!cell->face(f)->at_boundary())
+              continue;
+            const int edge = edge_of(cell->face(f));
+            const axisym::PartCondition &c = body.condition_of_edge(edge);
+            std::array<Condition, 2> add{};
+            unsigned int n_add = 0;
+            if (c.kind == Kind::displacement)
+              {
+                add[n_add++] = {1, 0, c.displacement[0], 0, edge};
+                add[n_add++] = {0, 1, c.displacement[1], 0, edge};
+              }
+            else if (c.kind == Kind::axis)
+              add[n_add++] = {1, 0, 0, 1, edge};
+            else if (c.kind == Kind::symmetry)
+              {
+                const axisym::Point n = body.outline.edges()[edge].outward_normal_at(0.5);
+                // Exact zeros for edges along e_r or e_z (a single-component constraint).
+                const double n_r = std::abs(n.r) < 1e-12 ? 0.0 : n.r;
+                const double n_z = std::abs(n.z) < 1e-12 ? 0.0 : n.z;
+                add[n_add++] = {n_r, n_z, 0, 2, edge};
+              }
+            else
+              continue;
+            cell->face(f)->get_dof_indices(face_dofs);
+            // Pair the two components of each support point of the face.
+            std::map<unsigned int, std::array<types::global_dof_index, 2>> pairs;
+            for (unsigned int i = 0; i < n_face_dofs; ++i)
+              {
+                const auto [component, index] = fe_.face_system_to_component_index(i);
+                pairs[index][component] = face_dofs[i];
+              }
+            for (const auto &[index, dofs] : pairs)
+              {
+                Node &node = nodes[dofs[0]];
+                node.dof_z = dofs[1];
+                for (unsigned int k = 0; k < n_add; ++k)
+                  {
+                    const Condition &cond = add[k];
+                    const bool seen =
+                      std::any_of(node.conditions.begin(), node.conditions.end(),
+                                  [&](const Condition &o) {
+                                    return o.edge == cond.edge && o.a_r == cond.a_r &&
+                                           o.a_z == cond.a_z;
+                                  });
+                    if (!seen)
+                      node.conditions.push_back(cond);
+                  }
+              }
+          }
+
+      for (auto &[dof_r, node] : nodes)
+        {
+          std::stable_sort(node.conditions.begin(), node.conditions.end(),
+                           [](const Condition &a, const Condition &b) {
+                             return a.priority < b.priority;
+                           });
+          const Condition &first = node.conditions.front();
+          const Condition *second = nullptr;
+          double best = 0;
+          for (const Condition &c : node.conditions)
+            {
+              const double cross = std::abs(first.a_r * c.a_z - first.a_z * c.a_r);
+              if (cross > 1e-6 && cross > best)
+                best = cross, second = &c;
+            }
+          const types::global_dof_index dof_z = node.dof_z;
+          auto fix = [&](types::global_dof_index dof, double value) {
+            if (constraints_.is_constrained(dof))
+              return;
+            constraints_.add_line(dof);
+            constraints_.set_inhomogeneity(dof, value);
+          };
+          if (second)
+            {
+              // Solve [a1; a2] u = [g1; g2].
+              const double det = first.a_r * second->a_z - first.a_z * second->a_r;
+              fix(dof_r, (first.g * second->a_z - second->g * first.a_z) / det);
+              fix(dof_z, (first.a_r * second->g - second->a_r * first.g) / det);
+            }
+          else
+            {
+              const bool on_r = std::abs(first.a_r) >= std::abs(first.a_z);
+              const types::global_dof_index dof = on_r ? dof_r : dof_z;
+              const types::global_dof_index other = on_r ? dof_z : dof_r;
+              const double a = on_r ? first.a_r : first.a_z, b = on_r ? first.a_z : first.a_r;
+              if (constraints_.is_constrained(dof))
+                continue;
+              constraints_.add_line(dof);
+              if (b != 0)
+                constraints_.add_entry(dof, other, -b / a);
+              constraints_.set_inhomogeneity(dof, first.g / a);
+            }
+        }
+    }
+
+    // 3o. Pressure and traction parts: int t.v r ds with t = -p n (n of the mapped face at
+    // the quadrature point) or t = (t_r, t_z).
+    void
+    AxisymmetricSolver::add_outline_tractions(const DoFHandler<2>::active_cell_iterator &cell,
+                                              FEFaceValues<2> &fv, Vector<double> &cell_rhs) const
+    {
+      using Kind = axisym::PartCondition::Kind;
+      for (const unsigned int f : cell->face_indices())
+        {
+          if (!cell->face(f)->at_boundary())
+            continue;
+          const axisym::PartCondition &c =
+            problem_.body->condition_of_edge(edge_of(cell->face(f)));
+          if (c.kind != Kind::pressure && c.kind != Kind::traction)
+            continue;
+          fv.reinit(cell, f);
+          for (const unsigned int q : fv.quadrature_point_indices())
+            {
+              const Tensor<1, 2> n = fv.normal_vector(q);
+              const std::array<double, 2> t =
+                c.kind == Kind::pressure
+                  ? std::array<double, 2>{{-c.pressure * n[0], -c.pressure * n[1]}}
+                  : c.traction;
+              const double w = fv.quadrature_point(q)[0] * fv.JxW(q);
+              for (unsigned int i = 0; i < fe_.n_dofs_per_cell(); ++i)
+                cell_rhs(i) +=
+                  t[fe_.system_to_component_index(i).first] * fv.shape_value(i, q) * w;
+            }
+        }
+    }
+
     // 3. Assembly: int e(v).D e(u) r dr dz and int t.v r ds for the pressures.
     void AxisymmetricSolver::assemble_base()
     {
       const auto t0 = Clock::now();
-      FEValues<2> fe_values(mapping_, fe_, cell_quadrature_,
+      FEValues<2> fe_values(mapping(), fe_, cell_quadrature_,
                             update_values | update_gradients | update_quadrature_points |
                               update_JxW_values);
-      FEFaceValues<2> fe_face_values(mapping_, fe_, QGauss<1>(options_.degree + 1),
+      FEFaceValues<2> fe_face_values(mapping(), fe_, QGauss<1>(options_.degree + 1),
                                      update_values | update_quadrature_points |
                                        update_JxW_values);
+      FEFaceValues<2> outline_face_values(mapping(), fe_, QGauss<1>(options_.degree + 1),
+                                          update_values | update_quadrature_points |
+                                            update_normal_vectors | update_JxW_values);
       const unsigned int n = fe_.n_dofs_per_cell();
       FullMatrix<double> cell_matrix(n, n);
       Vector<double> cell_rhs(n);
@@ -449,10 +772,12 @@ namespace fem
             for (unsigned int j = i + 1; j < n; ++j)
               cell_matrix(i, j) = cell_matrix(j, i);
 
-          // Pressure p on a face with outward normal n: t = -p n, t.v = -p n_r v_r here.
+          if (outline_)
+            add_outline_tractions(cell, outline_face_values, cell_rhs);
+          // Legacy: pressure p on a face with outward normal n: t = -p n, t.v = -p n_r v_r.
           for (const unsigned int f : cell->face_indices())
             {
-              if (!cell->face(f)->at_boundary())
+              if (outline_ || !cell->face(f)->at_boundary())
                 continue;
               const unsigned int id = cell->face(f)->boundary_id();
               double pressure = 0, normal_r = 0;
@@ -485,7 +810,7 @@ namespace fem
       const auto t0 = Clock::now();
       system_matrix_.copy_from(base_matrix_);
       system_rhs_ = base_rhs_;
-      FEFaceValues<2> fv(mapping_, fe_, face_quadrature_,
+      FEFaceValues<2> fv(mapping(), fe_, face_quadrature_,
                          update_values | update_quadrature_points | update_JxW_values);
       const unsigned int n = fe_.n_dofs_per_cell(), n_q = face_quadrature_.size();
       FullMatrix<double> m(n, n);
@@ -555,7 +880,7 @@ namespace fem
     // 5b. The active set of the current solution: g = u_r - u_r* > 0 at the contact points.
     std::vector<char> AxisymmetricSolver::active_set() const
     {
-      FEFaceValues<2> fv(mapping_, fe_, face_quadrature_, update_values | update_quadrature_points);
+      FEFaceValues<2> fv(mapping(), fe_, face_quadrature_, update_values | update_quadrature_points);
       const unsigned int n_q = face_quadrature_.size();
       std::vector<char> active(outer_faces_.size() * n_q);
       std::vector<Vector<double>> u(n_q, Vector<double>(2));
@@ -579,13 +904,13 @@ namespace fem
       const double r1 = g.inner_radius, r2 = g.outer_radius;
 
       // Volume: U_h, the consistent reaction int s.e(v) r with v = (psi, 0), the stress error.
-      FEValues<2> fe_values(mapping_, fe_, cell_quadrature_,
+      FEValues<2> fe_values(mapping(), fe_, cell_quadrature_,
                             update_values | update_gradients | update_quadrature_points |
                               update_JxW_values);
       const unsigned int n_q = cell_quadrature_.size();
       std::vector<Vector<double>> u(n_q, Vector<double>(2));
       std::vector<std::vector<Tensor<1, 2>>> grad(n_q, std::vector<Tensor<1, 2>>(2));
-      double energy = 0, reaction = 0, error_sq = 0, norm_sq = 0;
+      double energy = 0, reaction = 0, error_sq = 0, norm_sq = 0, u_error_sq = 0, u_norm_sq = 0;
       for (const auto &cell : dof_handler_.active_cell_iterators())
         {
           fe_values.reinit(cell);
@@ -598,8 +923,20 @@ namespace fem
               const Stress e = strain(x[0], u[q][0], grad[q][0], grad[q][1]);
               const Stress s = d_ * e;
               energy += 0.5 * dot(e, s) * w;
-              const double psi = (x[0] - r1) / (r2 - r1);
-              reaction += (s[0] / (r2 - r1) + s[2] * psi / x[0]) * w;
+              if (!outline_)
+                {
+                  const double psi = (x[0] - r1) / (r2 - r1);
+                  reaction += (s[0] / (r2 - r1) + s[2] * psi / x[0]) * w;
+                }
+              if (exact_u_)
+                {
+                  const std::array<double, 2> ue = exact_u_(x[0], x[1]);
+                  for (unsigned int k = 0; k < 2; ++k)
+                    {
+                      u_error_sq += (u[q][k] - ue[k]) * (u[q][k] - ue[k]) * w;
+                      u_norm_sq += ue[k] * ue[k] * w;
+                    }
+                }
               if (exact_)
                 {
                   // Frobenius norm of the stress tensor: sigma_rz counts twice, as
@@ -614,14 +951,18 @@ namespace fem
                 }
             }
         }
+      // The legacy half section stands for the whole body (twice); an outline for itself.
+      const double mirror = outline_ ? 1.0 : 2.0;
+      if (exact_u_)
+        ev.u_error_sq = mirror * u_error_sq, ev.u_norm_sq = mirror * u_norm_sq;
       if (exact_)
         {
-          ev.error_sq = 2 * error_sq, ev.norm_sq = 2 * norm_sq;
+          ev.error_sq = mirror * error_sq, ev.norm_sq = mirror * norm_sq;
           // Max norm at the Gauss-Lobatto points of every cell (they include the cell and
           // domain boundaries, where the FEM stress error peaks); the discontinuous s_h is
           // taken from each cell in turn.
           const QGaussLobatto<2> nodes(options_.degree + 2);
-          FEValues<2> fe_nodes(mapping_, fe_, nodes,
+          FEValues<2> fe_nodes(mapping(), fe_, nodes,
                                update_values | update_gradients | update_quadrature_points);
           std::vector<Vector<double>> un(nodes.size(), Vector<double>(2));
           std::vector<std::vector<Tensor<1, 2>>> gradn(nodes.size(),
@@ -647,10 +988,23 @@ namespace fem
           ev.error_max = error_max, ev.norm_max = norm_max;
         }
 
+      if (outline_)
+        {
+          double work = 0, b_c = 0, b_r = 0;
+          outline_boundary_terms(work, b_c, b_r);
+          Functionals &phi = ev.functionals;
+          phi.strain_energy = energy;
+          phi.external_work = work;
+          phi.lagrange = phi.strain_energy - phi.external_work;
+          phi.castigliano = -phi.strain_energy + b_c;
+          phi.reissner = phi.strain_energy - phi.external_work - b_r;
+          return ev;
+        }
+
       // Boundary: work of the pressures; on r = R2 the traces, gap and contact terms.
       const double p_in = problem_.loading ? problem_.loading->inner_pressure : 0.0;
       const double p_out = problem_.loading ? problem_.loading->outer_pressure : 0.0;
-      FEFaceValues<2> fv(mapping_, fe_, face_quadrature_,
+      FEFaceValues<2> fv(mapping(), fe_, face_quadrature_,
                          update_values | update_gradients | update_quadrature_points |
                            update_JxW_values);
       const unsigned int n_fq = face_quadrature_.size();
@@ -760,23 +1114,90 @@ namespace fem
       return ev;
     }
 
-    // Fields at the sample points; z < 0 mirrored (u_z and sigma_rz are odd in z).
+    // 6o. Boundary terms of an outline problem: the work W = int t.u_h r ds of the pressure
+    // and traction parts, and on the displacement parts b_c = int (s_h n).u* r ds and
+    // b_r = int (s_h n).(u_h - u*) r ds (s_h n the element trace).
+    void AxisymmetricSolver::outline_boundary_terms(double &work, double &b_c, double &b_r) const
+    {
+      using Kind = axisym::PartCondition::Kind;
+      const QGauss<1> quadrature(options_.degree + 2);
+      FEFaceValues<2> fv(mapping(), fe_, quadrature,
+                         update_values | update_gradients | update_quadrature_points |
+                           update_normal_vectors | update_JxW_values);
+      const unsigned int n_q = quadrature.size();
+      std::vector<Vector<double>> u(n_q, Vector<double>(2));
+      std::vector<std::vector<Tensor<1, 2>>> grad(n_q, std::vector<Tensor<1, 2>>(2));
+      for (const auto &cell : dof_handler_.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          {
+            if (!cell->face(f)->at_boundary())
+              continue;
+            const axisym::PartCondition &c =
+              problem_.body->condition_of_edge(edge_of(cell->face(f)));
+            if (c.kind != Kind::pressure && c.kind != Kind::traction &&
+                c.kind != Kind::displacement)
+              continue;
+            fv.reinit(cell, f);
+            fv.get_function_values(solution_, u);
+            if (c.kind == Kind::displacement)
+              fv.get_function_gradients(solution_, grad);
+            for (unsigned int q = 0; q < n_q; ++q)
+              {
+                const Point<2> x = fv.quadrature_point(q);
+                const Tensor<1, 2> n = fv.normal_vector(q);
+                const double w = x[0] * fv.JxW(q);
+                if (c.kind == Kind::displacement)
+                  {
+                    const Stress s = d_ * strain(x[0], u[q][0], grad[q][0], grad[q][1]);
+                    const double t_r = s[0] * n[0] + s[3] * n[1];
+                    const double t_z = s[3] * n[0] + s[1] * n[1];
+                    b_c += (t_r * c.displacement[0] + t_z * c.displacement[1]) * w;
+                    b_r += (t_r * (u[q][0] - c.displacement[0]) +
+                            t_z * (u[q][1] - c.displacement[1])) *
+                           w;
+                    continue;
+                  }
+                const double t_r = c.kind == Kind::pressure ? -c.pressure * n[0] : c.traction[0];
+                const double t_z = c.kind == Kind::pressure ? -c.pressure * n[1] : c.traction[1];
+                work += (t_r * u[q][0] + t_z * u[q][1]) * w;
+              }
+          }
+    }
+
+    // Fields at the sample points; legacy: z < 0 mirrored (u_z and sigma_rz are odd in z).
+    // Outline: as given; a sample on an arc may lie just outside the Q_p image of the arc,
+    // so a miss is retried with a looser tolerance and projected onto the unit cell.
     std::vector<FieldSample> AxisymmetricSolver::samples() const
     {
+      using Found = std::pair<DoFHandler<2>::active_cell_iterator, Point<2>>;
+      const auto locate = [&](const Point<2> &x) -> Found {
+        if (!outline_)
+          return GridTools::find_active_cell_around_point(mapping(), dof_handler_, x);
+        try
+          {
+            return GridTools::find_active_cell_around_point(mapping(), dof_handler_, x);
+          }
+        catch (const std::exception &)
+          {}
+        Found found =
+          GridTools::find_active_cell_around_point(mapping(), dof_handler_, x, {}, 1e-3);
+        found.second = GeometryInfo<2>::project_to_unit_cell(found.second);
+        return found;
+      };
       std::vector<FieldSample> out;
       for (const auto &[r, z] : problem_.samples)
         {
-          const Point<2> x(r, std::abs(z));
-          const auto found = GridTools::find_active_cell_around_point(mapping_, dof_handler_, x);
+          const Point<2> x(r, outline_ ? z : std::abs(z));
+          const Found found = locate(x);
           const Quadrature<2> point(std::vector<Point<2>>{found.second});
-          FEValues<2> fv(mapping_, fe_, point, update_values | update_gradients);
+          FEValues<2> fv(mapping(), fe_, point, update_values | update_gradients);
           fv.reinit(found.first);
           std::vector<Vector<double>> u(1, Vector<double>(2));
           std::vector<std::vector<Tensor<1, 2>>> grad(1, std::vector<Tensor<1, 2>>(2));
           fv.get_function_values(solution_, u);
           fv.get_function_gradients(solution_, grad);
           const Stress s = d_ * strain(r, u[0][0], grad[0][0], grad[0][1]);
-          const double sign = z < 0 ? -1.0 : 1.0;
+          const double sign = !outline_ && z < 0 ? -1.0 : 1.0;
           out.push_back({r, z, u[0][0], sign * u[0][1], {{s[0], s[1], s[2], sign * s[3]}}});
         }
       return out;
@@ -788,7 +1209,11 @@ namespace fem
       DataOut<2> data_out;
       data_out.attach_dof_handler(dof_handler_);
       data_out.add_data_vector(solution_, post);
-      data_out.build_patches(mapping_, options_.degree);
+      if (outline_) // cells next to an arc are curved inside too (transfinite interpolation)
+        data_out.build_patches(mapping(), options_.degree, DataOut<2>::curved_inner_cells);
+      else
+        data_out.build_patches(mapping(), options_.degree);
+      std::filesystem::create_directories(options_.vtu_directory);
       const std::filesystem::path path =
         std::filesystem::path(options_.vtu_directory) / "fem_solution.vtu";
       std::ofstream out(path);
@@ -805,6 +1230,7 @@ namespace fem
       result.refinements = options_.refinements;
       result.mesh_generator =
         options_.mesh == FemOptions::MeshGenerator::gmsh ? "gmsh" : "structured";
+      result.outline = outline_;
       if (problem_.die)
         {
           result.contact.emplace();
@@ -819,6 +1245,9 @@ namespace fem
           result.stress_l2_norm = std::sqrt(*ev.norm_sq);
         if (ev.error_max)
           result.stress_max_error = *ev.error_max, result.stress_max_norm = *ev.norm_max;
+        if (ev.u_error_sq)
+          result.displacement_l2_error = std::sqrt(*ev.u_error_sq),
+          result.displacement_l2_norm = std::sqrt(*ev.u_norm_sq);
         if (result.contact)
           {
             ContactResult &c = *result.contact;
@@ -861,8 +1290,15 @@ namespace fem
               assemble_base();
               result.n_dofs = dof_handler_.n_dofs();
               result.n_cells = triangulation_.n_active_cells();
+              result.base_mesh_size = base_mesh_size_;
+              result.n_base_cells = n_base_cells_;
+              result.base_mesh_subdivided = base_mesh_subdivided_;
               std::ostringstream line;
               line.precision(6);
+              if (outline_)
+                line << "outline section: base mesh " << n_base_cells_ << " cells (h0 = "
+                     << base_mesh_size_ << " m" << (base_mesh_subdivided_ ? ", subdivided" : "")
+                     << "), ";
               line << "pass " << pass << ", L = " << level_ << ", Q" << options_.degree << ": "
                    << result.n_cells << " cells, " << result.n_dofs << " dofs ("
                    << result.mesh_generator << " mesh";
@@ -915,7 +1351,7 @@ namespace fem
       std::vector<char> start(outer_faces_.size() * face_quadrature_.size(), 1);
       if (pass > 0 && split_)
         {
-          FEFaceValues<2> fv(mapping_, fe_, face_quadrature_, update_quadrature_points);
+          FEFaceValues<2> fv(mapping(), fe_, face_quadrature_, update_quadrature_points);
           const unsigned int n_q = face_quadrature_.size();
           for (std::size_t k = 0; k < outer_faces_.size(); ++k)
             {
@@ -979,10 +1415,12 @@ namespace fem
   } // namespace
 
   FemResult solve(const axisym::Problem &problem, const FemOptions &options,
-                  const StressFunction &exact_stress)
+                  const StressFunction &exact_stress,
+                  const DisplacementFunction &exact_displacement)
   {
     options.validate();
-    AxisymmetricSolver solver(problem, options, exact_stress);
+    check_supported(problem, options);
+    AxisymmetricSolver solver(problem, options, exact_stress, exact_displacement);
     return solver.run();
   }
 

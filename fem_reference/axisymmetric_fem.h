@@ -1,9 +1,11 @@
-// deal.II finite-element reference for the axisymmetric problems of DESIGN.md section 4.
-// Plain structs only (no deal.II headers), so drivers and tests compile fast; all deal.II
+// deal.II finite-element reference for the axisymmetric problems of DESIGN.md sections 4 and
+// 7.1. Plain structs only (no deal.II headers), so drivers and tests compile fast; all deal.II
 // code lives in axisymmetric_fem.cc.
 //
-// Model (DESIGN.md sections 1 and 6): dim = 2 with x = r, y = z, on the half section
-// r in [R1, R2], z in [0, a] with the symmetry plane z = 0 (u_z = 0, zero shear).
+// Model (DESIGN.md sections 1 and 6): dim = 2 with x = r, y = z. The legacy hollow cylinder
+// (problem.legacy_cylinder) is solved on the half section r in [R1, R2], z in [0, a] with the
+// symmetry plane z = 0 (u_z = 0, zero shear), as described below; an outline problem on the
+// section as given (see "Outline problems" at the end of this comment).
 // Q_p x Q_p Lagrange elements, strain e(u) = (du_r/dr, du_z/dz, u_r/r, du_r/dz + du_z/dr),
 // s = D e, bilinear form int e(v).D e(u) r dr dz, pressures as int t.v r ds.
 //
@@ -42,6 +44,30 @@
 // next one (the zone is connected and starts at z = 0), and located inside the
 // bracket by the square-root law p^2 ~ (c - z) of a smooth contact edge (half_width) or by
 // linear interpolation of g (half_width_gap).
+//
+// Outline problems (DESIGN.md 7.1, !problem.legacy_cylinder):
+//  * Mesh: the gmsh base mesh of fem_reference/outline_mesh.h (all quadrilaterals, base size
+//    h0 = shortest edge / outline_cells_on_shortest_edge, boundary id = 1 + part index), then
+//    L = refinements global refinements. Every boundary face carries the manifold of its
+//    outline edge (PolarManifold about the center for an arc, flat for a line) and every cell
+//    a TransfiniteInterpolationManifold, so new vertices land on the arcs and the interior
+//    stays untangled; the mapping is MappingQ(p) (cached), so the curved boundary is
+//    represented at the element degree and Q_p keeps its order.
+//  * Conditions per part: pressure (t = -p n with n the normal of the mapped face at each
+//    quadrature point) and traction (t_r, t_z) as int t.v r ds; displacement (u_r, u_z),
+//    axis (u_r = 0; sigma_rz = 0 is natural) and symmetry (u.n = 0 with n the normal of the
+//    straight edge) as constraints on the boundary nodes: u_r = 0 or u_z = 0 when n is along
+//    e_r or e_z, else the line n_r u_r + n_z u_z = 0 on the larger component. Where parts
+//    meet, a node collects the conditions of all its faces (displacement before axis before
+//    symmetry); two independent ones fix both components. The hoop strain u_r/r is formed
+//    at quadrature points only (never on r = 0); at r = 0 (samples, VTU points) it is
+//    du_r/dr, its limit.
+//  * Functionals per radian of the section as given (no mirroring):
+//      lagrange = U_h - W(u_h), castigliano = -U_h + int_{S_u} (s_h n).u* r ds,
+//      reissner = U_h - W(u_h) - int_{S_u} (s_h n).(u_h - u*) r ds,
+//    S_u the displacement parts (symmetry and axis parts add nothing: u*.n = 0 there and
+//    u_h.n = 0 exactly). Samples, stress and displacement errors: the section as given.
+//  * Body loads are not applied yet: check_supported() refuses them.
 #pragma once
 
 #include "problem/problem.h"
@@ -80,6 +106,17 @@ namespace fem
     int edge_fitting_passes = 1;
     int base_cells_r = 4, base_cells_z = 8; ///< level-0 mesh
     double radial_grading = 3.0, axial_grading = 3.0; ///< largest/smallest cell, level 0
+    /// Outline problems: cells along the shortest outline edge in the base mesh (h0 = its
+    /// length / this; outline_mesh.h).
+    double outline_cells_on_shortest_edge = 4;
+    /// Outline problems: how the arcs are represented. Only `curved` keeps the order of Q_p;
+    /// the others exist to study the geometry error.
+    enum class OutlineGeometry
+    {
+      curved,         ///< manifolds on the arcs, transfinite cells, MappingQ(p)
+      straight_cells, ///< new vertices on the arcs (manifolds), straight-sided cells (MappingQ1)
+      coarse_polygon  ///< no manifolds: refinement keeps the base mesh's chords (MappingQ1)
+    } outline_geometry = OutlineGeometry::curved;
     std::string vtu_directory;  ///< write DIR/fem_solution.vtu when not empty
     bool progress = true;       ///< one line on stderr per active-set step
 
@@ -88,6 +125,11 @@ namespace fem
   };
 
   FemOptions options_from_problem(const axisym::Problem &problem);
+
+  /// Throws axisym::InputError for what the FEM reference cannot solve yet: body loads
+  /// ("loading: body loads are not applied by fem_solve yet"), a die on an outline section,
+  /// the structured mesh generator for an outline section.
+  void check_supported(const axisym::Problem &problem, const FemOptions &options);
 
   struct Functionals
   {
@@ -144,6 +186,10 @@ namespace fem
     int degree = 0, refinements = 0;
     unsigned long n_dofs = 0, n_cells = 0;
     std::string mesh_generator;
+    bool outline = false;          ///< an outline problem (the section as given)
+    double base_mesh_size = 0;     ///< outline: h0 [m]
+    unsigned long n_base_cells = 0; ///< outline: cells of the gmsh base mesh
+    bool base_mesh_subdivided = false; ///< outline: gmsh's all-quad fallback was used
     Functionals functionals;
     std::optional<ContactResult> contact;
     std::vector<FieldSample> samples;
@@ -153,17 +199,23 @@ namespace fem
     /// max |s_h - s| and max |s| over the components and the Gauss-Lobatto points of
     /// every cell (p + 2 per direction, so cell and domain boundaries are included).
     std::optional<double> stress_max_error, stress_max_norm;
+    /// r-weighted L2 norms ||u_h - u|| and ||u|| (per radian, as the stress norms), when an
+    /// exact displacement is given.
+    std::optional<double> displacement_l2_error, displacement_l2_norm;
     double assembly_seconds = 0, solve_seconds = 0, total_seconds = 0;
   };
 
   /// (sigma_rr, sigma_zz, sigma_tt, sigma_rz) at (r, z).
   using StressFunction = std::function<std::array<double, 4>(double r, double z)>;
+  /// (u_r, u_z) at (r, z).
+  using DisplacementFunction = std::function<std::array<double, 2>(double r, double z)>;
 
   /// Solves the problem. Numerical failures (singular matrix, CG not converging, active-set
   /// cycle or no convergence) return success = false with a message and whatever history
-  /// exists; bad options throw axisym::InputError.
+  /// exists; bad options and unsupported problems (check_supported) throw axisym::InputError.
   FemResult solve(const axisym::Problem &problem, const FemOptions &options,
-                  const StressFunction &exact_stress = {});
+                  const StressFunction &exact_stress = {},
+                  const DisplacementFunction &exact_displacement = {});
 
   /// A column of a convergence table.
   struct TableColumn

@@ -22,23 +22,46 @@ namespace fem
     nlohmann::json j;
     j["solver"] = "fem";
     j["problem"] = problem.source;
-    j["discretization"] = {
-      {"degree", r.degree},
-      {"refinements", r.refinements},
-      {"dofs", r.n_dofs},
-      {"cells", r.n_cells},
-      {"mesh", r.mesh_generator},
-      {"refinement_rule", "cells per line x 2^L, geometric grading q^(1/2^L) (nested)"},
-      {"base_cells", {options.base_cells_r, options.base_cells_z}},
-      {"grading", {options.radial_grading, options.axial_grading}},
-      {"linear_solver",
-       options.linear_solver == FemOptions::LinearSolver::direct ? "umfpack" : "cg-ssor"},
-      {"section", "upper half z in [0, length/2], symmetry plane z = 0"}};
+    const char *linear_solver =
+      options.linear_solver == FemOptions::LinearSolver::direct ? "umfpack" : "cg-ssor";
+    if (!r.outline)
+      j["discretization"] = {
+        {"degree", r.degree},
+        {"refinements", r.refinements},
+        {"dofs", r.n_dofs},
+        {"cells", r.n_cells},
+        {"mesh", r.mesh_generator},
+        {"refinement_rule", "cells per line x 2^L, geometric grading q^(1/2^L) (nested)"},
+        {"base_cells", {options.base_cells_r, options.base_cells_z}},
+        {"grading", {options.radial_grading, options.axial_grading}},
+        {"linear_solver", linear_solver},
+        {"section", "upper half z in [0, length/2], symmetry plane z = 0"}};
+    else
+      j["discretization"] = {
+        {"degree", r.degree},
+        {"refinements", r.refinements},
+        {"dofs", r.n_dofs},
+        {"cells", r.n_cells},
+        {"mesh", r.mesh_generator},
+        {"refinement_rule", "L global refinements of the gmsh base mesh, new vertices on the "
+                            "arcs (manifolds), MappingQ(degree)"},
+        {"base_cells", r.n_base_cells},
+        {"base_mesh_size", r.base_mesh_size},
+        {"base_cells_on_shortest_edge", options.outline_cells_on_shortest_edge},
+        {"base_mesh_subdivided", r.base_mesh_subdivided},
+        {"grading", nullptr},
+        {"linear_solver", linear_solver},
+        {"section", "the outline as given (geometry.outline), no mirroring"}};
     j["diagnostics"] = {{"status", r.success ? "ok" : "failed"}, {"message", r.message}};
     if (r.stress_l2_error)
       {
         j["diagnostics"]["stress_l2_error"] = *r.stress_l2_error;
         j["diagnostics"]["stress_l2_norm"] = *r.stress_l2_norm;
+      }
+    if (r.displacement_l2_error)
+      {
+        j["diagnostics"]["displacement_l2_error"] = *r.displacement_l2_error;
+        j["diagnostics"]["displacement_l2_norm"] = *r.displacement_l2_norm;
       }
     if (r.stress_max_error)
       {

@@ -1,15 +1,18 @@
 // fem_solve: the deal.II finite-element reference on one problem file.
 //
-// Solves the axisymmetric elastic problem of PROBLEM.json (DESIGN.md section 7) on the half
-// section z in [0, a] with Q_p elements (p = fem.degree) on the gmsh mesh of level L
-// (fem.refinements or --refinements) and writes the result JSON with the same keys as
-// rfm_solve: discretization, the Lagrange/Castigliano/Reissner functionals (J per radian),
-// the contact half-width, force and pressure profile when the problem has a die, fields at
-// the sample points, timings. The conventions are in fem_reference/axisymmetric_fem.h.
+// Solves the axisymmetric elastic problem of PROBLEM.json with Q_p elements (p = fem.degree)
+// on the gmsh mesh of level L (fem.refinements or --refinements): the hollow cylinder of
+// DESIGN.md section 7 on its half section z in [0, a], or any section given by its outline
+// (DESIGN.md 7.1) as given, curved edges represented at the element degree. Writes the result
+// JSON with the same keys as rfm_solve: discretization, the Lagrange/Castigliano/Reissner
+// functionals (J per radian), the contact half-width, force and pressure profile when the
+// problem has a die, fields at the sample points, timings. The conventions are in
+// fem_reference/axisymmetric_fem.h. --vtu DIR (created with its parents when missing) writes
+// DIR/fem_solution.vtu: u_r, u_z, the four stresses and the vector `displacement`.
 //
 // Sample run:
 //   build/bin/fem_solve verification/problems/die_unilateral.json --refinements 3
-//       --output die.json --vtu /tmp
+//       --output die.json --vtu out/vtu
 //
 // Exit status: 0 success, 2 bad input (nothing written), 3 numerical failure (the result
 // with the history so far is still written).
@@ -37,7 +40,9 @@ int main(int argc, char **argv)
       app.add_option("--refinements", refinements,
                      "mesh level L: cells per line x 2^L (nested graded meshes)");
       app.add_option("--output", output_path, "result file (JSON); default: stdout");
-      app.add_option("--vtu", vtu_directory, "write DIR/fem_solution.vtu (u and stresses)");
+      app.add_option("--vtu", vtu_directory,
+                     "write DIR/fem_solution.vtu (u_r, u_z, stresses, the vector displacement); "
+                     "DIR is created when missing");
       app.add_option("--mesh", mesh, "mesh generator")->check(CLI::IsMember({"gmsh", "structured"}));
       app.add_option("--linear-solver", solver, "direct (UMFPACK) or cg (CG + SSOR)")
         ->check(CLI::IsMember({"direct", "cg"}));
@@ -79,13 +84,22 @@ int main(int argc, char **argv)
                                                  : fem::FemOptions::LinearSolver::cg;
       options.vtu_directory = vtu_directory;
       options.validate();
+      fem::check_supported(problem, options);
       if (!output_path.empty())
         axisym::check_output_path("--output", output_path);
-      if (!vtu_directory.empty() && !std::filesystem::is_directory(vtu_directory))
-        throw axisym::InputError("--vtu = " + vtu_directory + ": must be an existing directory");
-      fmt::print(stderr, "fem_solve: Q{} elements, level L = {}, {} mesh, {} solver{}\n",
+      if (!vtu_directory.empty())
+        {
+          std::error_code ec;
+          std::filesystem::create_directories(vtu_directory, ec);
+          if (ec || !std::filesystem::is_directory(vtu_directory))
+            throw axisym::InputError("--vtu = " + vtu_directory +
+                                     ": must be a directory or creatable as one" +
+                                     (ec ? " (" + ec.message() + ")" : std::string()));
+        }
+      fmt::print(stderr, "fem_solve: Q{} elements, level L = {}, {} mesh, {} solver{}{}\n",
                  options.degree, options.refinements, mesh, solver,
-                 problem.die ? ", contact.method = " + problem.contact.method : "");
+                 problem.die ? ", contact.method = " + problem.contact.method : "",
+                 problem.legacy_cylinder ? "" : ", outline section");
 
       // 3. Solve and write.
       const fem::FemResult r = fem::solve(problem, options);
@@ -103,6 +117,9 @@ int main(int argc, char **argv)
                          "assembly {:.3f} s, solve {:.3f} s\n",
                  r.functionals.lagrange, r.functionals.castigliano, r.functionals.reissner,
                  r.assembly_seconds, r.solve_seconds);
+      if (!vtu_directory.empty())
+        fmt::print(stderr, "fem_solve: wrote {}\n",
+                   (std::filesystem::path(vtu_directory) / "fem_solution.vtu").string());
       if (r.contact)
         fmt::print(stderr, "fem_solve: c = {:.6g} m (c/a = {:.4f}), P = {:.6g} N (trace {:.6g} N)\n",
                    r.contact->half_width, r.contact->half_width / problem.geometry.half_length(),

@@ -176,7 +176,8 @@ namespace fem
         if (!spec.always_subdivide)
           mesh::generate(2);
 
-        if (spec.always_subdivide || count_elements(2) > 0) // triangles left: subdivide a mesh twice as coarse
+        // Triangles left: subdivide a mesh twice as coarse.
+        if (spec.always_subdivide || count_elements(2) > 0)
           {
             info.subdivided = true;
             mesh::clear();

@@ -13,8 +13,14 @@
 // segment if the total is odd (a triangulation with an even number of boundary segments
 // has an even number of triangles, which the blossom recombination pairs into quadrilaterals).
 // The surface is meshed by frontal-Delaunay (Mesh.Algorithm 6; 8, frontal-Delaunay for quads,
-// crashes in the installed gmsh 4.8.4) and recombined (blossom); if triangles remain, the mesh is rebuilt at twice the size and every element
-// subdivided into quadrilaterals (Mesh.SubdivisionAlgorithm 1), which always gives quads.
+// crashes in the installed gmsh 4.8.4) and recombined (blossom); if triangles remain, the
+// mesh is rebuilt at twice the size and every element subdivided into quadrilaterals
+// (Mesh.SubdivisionAlgorithm 1), which always gives quads.
+//
+// Why h0 = shortest edge / 4: the shortest edge is the smallest feature the outline names
+// (a wall thickness, a flange, a chamfer), and 4 cells across it at level 0 give 8 at L = 1
+// and 64 at the default L = 4, the same count as the legacy hollow cylinder's radial lines
+// at equal L (4 x 2^L). For the sphere of DESIGN.md 7.1 that is 56 base cells.
 #pragma once
 
 #include "problem/outline.h"
