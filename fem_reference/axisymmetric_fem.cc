@@ -1165,24 +1165,56 @@ namespace fem
     }
 
     // Fields at the sample points; legacy: z < 0 mirrored (u_z and sigma_rz are odd in z).
-    // Outline: as given; a sample on an arc may lie just outside the Q_p image of the arc,
-    // so a miss is retried with a looser tolerance and projected onto the unit cell.
+    // Outline: as given. A sample on an arc may lie just outside the Q_p image of the arc
+    // (deal.II 9.4 then returns an invalid cell rather than throwing), so a miss is retried
+    // with looser tolerances (unit-cell coordinates) and projected onto the unit cell; with
+    // straight-sided cells the nearest boundary cell is taken.
     std::vector<FieldSample> AxisymmetricSolver::samples() const
     {
       using Found = std::pair<DoFHandler<2>::active_cell_iterator, Point<2>>;
       const auto locate = [&](const Point<2> &x) -> Found {
         if (!outline_)
           return GridTools::find_active_cell_around_point(mapping(), dof_handler_, x);
-        try
+        for (const double tolerance : {1e-10, 1e-6, 1e-3})
           {
-            return GridTools::find_active_cell_around_point(mapping(), dof_handler_, x);
+            Found found;
+            try
+              {
+                found = GridTools::find_active_cell_around_point(mapping(), dof_handler_, x,
+                                                                 {}, tolerance);
+              }
+            catch (const std::exception &)
+              {
+                continue;
+              }
+            if (found.first.state() == IteratorState::valid)
+              {
+                found.second = GeometryInfo<2>::project_to_unit_cell(found.second);
+                return found;
+              }
           }
-        catch (const std::exception &)
-          {}
-        Found found =
-          GridTools::find_active_cell_around_point(mapping(), dof_handler_, x, {}, 1e-3);
-        found.second = GeometryInfo<2>::project_to_unit_cell(found.second);
-        return found;
+        // Still outside (straight-sided studies: a sample on an arc lies beyond the chord):
+        // the boundary cell nearest in unit coordinates, the point projected onto it.
+        Found best;
+        double best_distance = std::numeric_limits<double>::infinity();
+        for (const auto &cell : dof_handler_.active_cell_iterators())
+          {
+            if (!cell->at_boundary() || cell->center().distance(x) > 2 * cell->diameter())
+              continue;
+            try
+              {
+                const Point<2> unit = mapping().transform_real_to_unit_cell(cell, x);
+                const double d = GeometryInfo<2>::distance_to_unit_cell(unit);
+                if (d < best_distance)
+                  best_distance = d, best = {cell, GeometryInfo<2>::project_to_unit_cell(unit)};
+              }
+            catch (const std::exception &)
+              {}
+          }
+        if (best.first.state() != IteratorState::valid)
+          throw std::runtime_error("sample (" + std::to_string(x[0]) + ", " +
+                                   std::to_string(x[1]) + ") is not in any cell of the mesh");
+        return best;
       };
       std::vector<FieldSample> out;
       for (const auto &[r, z] : problem_.samples)

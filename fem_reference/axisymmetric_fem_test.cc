@@ -286,7 +286,8 @@ namespace fem
       {"arc_to": [0.1, 0.0], "center": [0.0, 0.0], "part": "inner"}]},
     "boundary": {"equator": {"symmetry": true}, "inner": {"pressure": 1.0e7}},
     "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3},
-    "samples": [[0.15, 0.0], [0.1, 0.1], [0.0, 0.15], [0.2, 0.0]],
+    "samples": [[0.15, 0.0], [0.1, 0.1], [0.0, 0.15], [0.2, 0.0],
+                [0.17320508075688773, 0.1]],
     "fem": {"degree": 2, "refinements": 2}
   })";
 
@@ -374,9 +375,14 @@ namespace fem
     const auto displacement = [&](double r, double z) {
       return std::array<double, 2>{{nu * pressure * r / e, -pressure * z / e}};
     };
+    // The same load as a traction (t_r, t_z) = (0, -p) on the top.
+    nlohmann::json j = nlohmann::json::parse(solid_cylinder_json);
+    j["boundary"]["top"] = {{"traction", {0.0, -pressure}}};
+    const axisym::Problem with_traction = axisym::parse_problem(j);
     for (int level = 0; level <= 1; ++level)
+      for (const axisym::Problem *problem : {&p, &with_traction})
       {
-        const FemResult r = solve(p, quiet(2, level), stress, displacement);
+        const FemResult r = solve(*problem, quiet(2, level), stress, displacement);
         ASSERT_TRUE(r.success) << r.message;
         EXPECT_FALSE(r.contact);
         const double stress_error = *r.stress_l2_error / *r.stress_l2_norm;
@@ -403,6 +409,42 @@ namespace fem
       }
   }
 
+  // Uniaxial strain: the top pushed down by d (displacement [0, -d]), the side held by a
+  // symmetry condition (u_r = 0), the bottom symmetric: u = (0, -d z / h), sigma_zz =
+  // (lambda + 2 mu) e, sigma_rr = sigma_tt = lambda e, e = -d / h. Corners where the
+  // displacement part meets the side and the axis take both conditions. Displacement-driven:
+  // Phi_L = U, and Clapeyron makes Phi_C = -U + int_top t.u* r ds = U, Phi_R = Phi_L.
+  TEST(AxisymmetricFemOutline, PrescribedDisplacementGivesUniaxialStrainAndClapeyron)
+  {
+    nlohmann::json j = nlohmann::json::parse(solid_cylinder_json);
+    const double d = 1e-5, h = 0.2, radius = 0.1;
+    j["boundary"] = {{"bottom", {{"symmetry", true}}},
+                     {"side", {{"symmetry", true}}},
+                     {"top", {{"displacement", {0.0, -d}}}}};
+    const axisym::Problem p = axisym::parse_problem(j);
+    const double e = youngs_modulus, nu = poisson_ratio;
+    const double lambda = e * nu / ((1 + nu) * (1 - 2 * nu)), mu = e / (2 * (1 + nu));
+    const double strain = -d / h;
+    const auto stress = [&](double, double) {
+      return std::array<double, 4>{{lambda * strain, (lambda + 2 * mu) * strain,
+                                    lambda * strain, 0}};
+    };
+    const auto displacement = [&](double, double z) {
+      return std::array<double, 2>{{0.0, strain * z}};
+    };
+    const FemResult r = solve(p, quiet(2, 0), stress, displacement);
+    ASSERT_TRUE(r.success) << r.message;
+    EXPECT_LT(*r.stress_l2_error / *r.stress_l2_norm, 1e-10);
+    EXPECT_LT(*r.displacement_l2_error / *r.displacement_l2_norm, 1e-10);
+    const double energy = 0.5 * (lambda + 2 * mu) * strain * strain * h * radius * radius / 2;
+    const Functionals &f = r.functionals;
+    EXPECT_NEAR(f.strain_energy, energy, 1e-10 * energy);
+    EXPECT_EQ(f.external_work, 0.0);
+    EXPECT_NEAR(f.lagrange, energy, 1e-10 * energy);
+    EXPECT_NEAR(f.castigliano, energy, 1e-9 * energy);
+    EXPECT_NEAR(f.reissner, energy, 1e-9 * energy);
+  }
+
   // Q2 on the curved quarter annulus: the r-weighted L2 stress error converges at order
   // 2 and the displacement error at 3 when the arcs are arcs (manifolds + MappingQ2);
   // with straight-sided cells the geometry error takes over.
@@ -427,7 +469,7 @@ namespace fem
 
     // Samples as given (no mirroring), on the axis (hoop strain du_r/dr there) and on the
     // corner of the outer arc with the equator.
-    ASSERT_EQ(finest.samples.size(), 4u);
+    ASSERT_EQ(finest.samples.size(), 5u); // the last one on the outer arc
     const double p_i = exact.p_i;
     for (const FieldSample &s : finest.samples)
       {

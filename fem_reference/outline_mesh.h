@@ -20,7 +20,7 @@
 // Why h0 = shortest edge / 4: the shortest edge is the smallest feature the outline names
 // (a wall thickness, a flange, a chamfer), and 4 cells across it at level 0 give 8 at L = 1
 // and 64 at the default L = 4, the same count as the legacy hollow cylinder's radial lines
-// at equal L (4 x 2^L). For the sphere of DESIGN.md 7.1 that is 56 base cells.
+// at equal L (4 x 2^L). For the sphere of DESIGN.md 7.1 that is 53 base cells.
 #pragma once
 
 #include "problem/outline.h"
