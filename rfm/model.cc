@@ -16,9 +16,8 @@ namespace rfm
   Section build_section(const Problem &problem, const std::optional<double> half_width)
   {
     if (!problem.legacy_cylinder)
-      throw InputError("geometry.outline: the RFM solves the hollow-cylinder form "
-                       "(geometry.inner_radius, outer_radius, length) only so far; fem_solve "
-                       "solves outline files");
+      throw InputError("geometry.outline: RfmModel is the hollow-cylinder model (with the "
+                       "die); an outline section is solved by OutlineModel (outline_model.h)");
     const Geometry &g = problem.geometry;
     const double a = g.half_length();
     const Loading loading = problem.loading.value_or(Loading{});
@@ -145,42 +144,11 @@ namespace rfm
   ToleranceSolve solve_to_tolerance(const Problem &problem, const DiscretizationOptions &options,
                                     const double tolerance)
   {
-    ToleranceSolve out;
-    double best = std::numeric_limits<double>::infinity();
-    int steps_without_progress = 0;
-    for (int p = 2; p <= options.max_degree; p += 2)
-      {
-        DiscretizationOptions o = options;
-        o.degree = p;
-        out.model = std::make_unique<RfmModel>(problem, o, std::nullopt);
-        if (!out.model->ok())
-          {
-            out.message = "p = " + std::to_string(p) + ": " + out.model->summary().message;
-            return out;
-          }
-        const double indicator = out.model->solution().functionals().indicator();
-        out.steps.push_back(
-          {p, indicator, out.model->assembly_seconds() + out.model->solve_seconds()});
-        if (indicator < tolerance)
-          {
-            out.reached = true;
-            out.message = "indicator " + std::to_string(indicator) + " < tolerance at p = " +
-                          std::to_string(p);
-            return out;
-          }
-        steps_without_progress = indicator < 0.5 * best ? 0 : steps_without_progress + 1;
-        best = std::min(best, indicator);
-        if (steps_without_progress >= 2)
-          {
-            out.message = "the indicator stopped decreasing at " + std::to_string(best) +
-                          " (p = " + std::to_string(p) + "), above the tolerance " +
-                          std::to_string(tolerance);
-            return out;
-          }
-      }
-    out.message = "tolerance " + std::to_string(tolerance) + " not reached by rfm.max_degree = " +
-                  std::to_string(options.max_degree) + " (indicator " +
-                  std::to_string(out.steps.empty() ? best : out.steps.back().indicator) + ")";
-    return out;
+    return solve_degree_sequence<RfmModel>(
+      options, tolerance,
+      [&](const DiscretizationOptions &o) {
+        return std::make_unique<RfmModel>(problem, o, std::nullopt);
+      },
+      [](const RfmModel &m) { return m.solution().functionals().indicator(); });
   }
 } // namespace rfm

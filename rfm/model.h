@@ -9,6 +9,7 @@
 #pragma once
 
 #include "rfm/assembly.h"
+#include "rfm/degree_sequence.h"
 #include "problem/problem.h"
 #include "rfm/saddle_point_solver.h"
 #include "rfm/solution.h"
@@ -69,21 +70,7 @@ namespace rfm
     double assembly_s_ = 0.0, solve_s_ = 0.0;
   };
 
-  /// One degree of a tolerance-driven solve.
-  struct DegreeStep
-  {
-    int degree = 0;
-    double indicator = 0.0; ///< |Phi_L - Phi_C| / |Phi_R|
-    double seconds = 0.0;   ///< assembly + solve
-  };
-
-  struct ToleranceSolve
-  {
-    std::unique_ptr<RfmModel> model; ///< the last degree tried
-    std::vector<DegreeStep> steps;
-    bool reached = false;
-    std::string message;
-  };
+  using ToleranceSolve = DegreeSequence<RfmModel>;
 
   /// rfm.tolerance: solves at p = 2, 4, 6, ... up to options.max_degree until the indicator
   /// falls below `tolerance`. Not reached (reached = false, with the reason) when max_degree

@@ -39,6 +39,19 @@ namespace rfm
           s_min_ = std::min(s_min_, s), s_max_ = std::max(s_max_, s);
         }
     }
+    if (arc && !outline.contains(edge_.center, 1e-6 * outline.size()))
+      {
+        // The angle about the center, if the section stays in a sector about the arc's mid
+        // direction (the branch cut, opposite to it, then misses the section).
+        angular_ = true;
+        for (const axisym::OutlineEdge &other : outline.edges())
+          for (int k = 0; k <= 200 && angular_; ++k)
+            {
+              const axisym::Point x = other.point_at(k / 200.0);
+              angular_ = std::abs(edge_coordinate(x.r, x.z).value) * 0.5 * std::abs(edge_.sweep()) <
+                         0.95 * M_PI;
+            }
+      }
     // Trim unless the carrier meets the closed section only along the edge: sample the
     // carrier off the edge (beyond a small margin) and look for points in the section.
     const double size = outline.size(), margin = 1e-6 * size, tol = 1e-9 * size;
@@ -131,6 +144,14 @@ namespace rfm
 
   RValue EdgeOmega::edge_coordinate(const double r, const double z) const
   {
+    if (angular_)
+      {
+        const axisym::Point m = minus(edge_.point_at(0.5), edge_.center);
+        const double dr = r - edge_.center.r, dz = z - edge_.center.z, rho2 = dr * dr + dz * dz;
+        const double phi = std::atan2(m.r * dz - m.z * dr, m.r * dr + m.z * dz);
+        const double scale = (edge_.sweep() > 0 ? 2.0 : -2.0) / std::abs(edge_.sweep());
+        return {scale * phi, -scale * dz / rho2, scale * dr / rho2};
+      }
     const axisym::Point d = minus(edge_.end, edge_.start);
     const double length = std::sqrt(dot(d, d)), scale = 2.0 / ((s_max_ - s_min_) * length);
     const double s = (r - edge_.start.r) * d.r + (z - edge_.start.z) * d.z; // times length

@@ -65,12 +65,16 @@ namespace rfm
     RValue carrier(double r, double z) const;
     bool trimmed() const { return trimmed_; }
     const axisym::OutlineEdge &edge() const { return edge_; }
-    /// The edge coordinate xi and its gradient: the projection on the edge's chord, mapped
-    /// so that the section's bounding box projects onto [-1, 1] (the edge onto a part of
-    /// it). Linear and monotone along the edge; bounded in the section, so that the
-    /// Legendre polynomials of the boundary columns stay in [-1, 1] everywhere (mapped to the
-    /// edge alone, P_p(xi) would reach 1e15 at p = 15 across the section from a short edge).
+    /// The edge coordinate xi and its gradient, monotone along the edge and bounded in the
+    /// section (so that the Legendre polynomials of the boundary columns do not grow like
+    /// xi^p away from their edge):
+    ///  * an arc whose center lies outside the section, with the section inside a sector of
+    ///    under 0.95 pi either side of the arc's mid direction: the angle about the center,
+    ///    xi = phi / (|sweep| / 2) relative to the mid direction (the arc is [-1, 1] exactly);
+    ///  * otherwise the projection on the edge's chord, mapped so that the section's
+    ///    bounding box projects onto [-1, 1] (the edge onto a part of it).
     RValue edge_coordinate(double r, double z) const;
+    bool angular_coordinate() const { return angular_; }
     /// Unit tangent field: constant on a line; on an arc the rotated radius, which equals
     /// the edge's tangent (direction of travel) on the arc.
     std::array<double, 2> tangent(double r, double z) const;
@@ -80,6 +84,7 @@ namespace rfm
     bool trimmed_ = false;
     double sign_ = 1.0; ///< arcs: +1 when the body is inside the circle
     double s_min_ = 0.0, s_max_ = 1.0; ///< the box's extent along the chord from the start
+    bool angular_ = false;
   };
 
   /// The structures' values at points, one row per point.

@@ -14,6 +14,7 @@
 #include "rfm/allocator.h"
 #include "rfm/contact.h"
 #include "rfm/model.h"
+#include "rfm/outline_model.h"
 #include "rfm/vtu_output.h"
 #include "problem/json_io.h"
 #include "problem/problem.h"
@@ -109,6 +110,123 @@ namespace
       }
     return out;
   }
+  // A section given by its outline (DESIGN.md 7.1): the outline structures, at a fixed
+  // degree or to a tolerance. Same result keys as the hollow cylinder (no contact).
+  int solve_outline(axisym::Problem problem, const std::optional<double> target_indicator,
+                    const std::string &output_path, const std::string &vtu_directory)
+  {
+    std::unique_ptr<rfm::OutlineModel> model;
+    std::optional<rfm::DegreeSequence<rfm::OutlineModel>> sequence;
+    if (target_indicator)
+      {
+        fmt::print(stderr, "rfm_solve: outline section; p = 2, 4, ... until the indicator < "
+                           "{:.1e} (up to p = {})\n",
+                   *target_indicator, problem.rfm.max_degree);
+        sequence = rfm::solve_outline_to_tolerance(problem, problem.rfm, *target_indicator);
+        model = std::move(sequence->model);
+        problem.rfm.degree = sequence->steps.empty() ? 2 : sequence->steps.back().degree;
+        for (const rfm::DegreeStep &step : sequence->steps)
+          fmt::print(stderr, "rfm_solve:   p = {:2d}: indicator {:.3e} ({:.3f} s)\n", step.degree,
+                     step.indicator, step.seconds);
+      }
+    else
+      {
+        fmt::print(stderr, "rfm_solve: outline section, degree p = {}\n", problem.rfm.degree);
+        model = std::make_unique<rfm::OutlineModel>(problem, problem.rfm);
+      }
+    const int p = problem.rfm.degree;
+    const long n_basis = static_cast<long>((p + 1) * (p + 1));
+    nlohmann::json result;
+    result["solver"] = "rfm";
+    result["problem"] = problem.source;
+    result["discretization"] = {
+      {"degree", p},
+      {"N", n_basis},
+      {"unknowns", 6 * n_basis + model->n_boundary_columns()},
+      {"stress_unknowns", 4 * n_basis + model->n_boundary_columns()},
+      {"displacement_unknowns", 2 * n_basis},
+      {"boundary_columns", model->n_boundary_columns()},
+      {"unknowns_after_orthonormalization",
+       {model->n_kept_unknowns()[0], model->n_kept_unknowns()[1]}},
+      {"quadrature_points", model->n_quadrature_points()},
+      {"section", "the outline as given (no mirroring)"},
+      {"degree_policy", target_indicator ? "tolerance" : "fixed"}};
+    if (sequence)
+      {
+        nlohmann::json seq = nlohmann::json::array();
+        for (const rfm::DegreeStep &step : sequence->steps)
+          seq.push_back(
+            {{"degree", step.degree}, {"indicator", step.indicator}, {"seconds", step.seconds}});
+        result["discretization"]["tolerance"] = *target_indicator;
+        result["discretization"]["degree_sequence"] = seq;
+      }
+    result["timing"] = {{"assembly_s", model->assembly_seconds()},
+                        {"solve_s", model->solve_seconds()}};
+    const rfm::SolveSummary &s = model->summary();
+    const bool solved = model->ok() && (!sequence || sequence->reached);
+    result["diagnostics"] = {{"status", solved ? "ok" : "failed"},
+                             {"message", sequence ? sequence->message : s.message},
+                             {"rcond_stress_block", s.rcond_stress},
+                             {"rcond_schur_complement", s.rcond_schur},
+                             {"inf_sup_indicator", s.inf_sup}};
+    if (!solved)
+      {
+        if (!output_path.empty())
+          axisym::write_json_atomically(output_path, result);
+        fmt::print(stderr, "rfm_solve: numerical failure: {}\n",
+                   result["diagnostics"]["message"].get<std::string>());
+        return 3;
+      }
+    const rfm::Functionals phi = model->functionals();
+    result["functionals"] = {{"lagrange", phi.lagrange},
+                             {"castigliano", phi.castigliano},
+                             {"reissner", phi.reissner},
+                             {"indicator", phi.indicator()},
+                             {"units", "J per radian"}};
+    nlohmann::json samples = nlohmann::json::array();
+    if (!problem.samples.empty())
+      {
+        const Eigen::Index n = static_cast<Eigen::Index>(problem.samples.size());
+        Eigen::VectorXd r(n), z(n);
+        for (Eigen::Index k = 0; k < n; ++k)
+          r[k] = problem.samples[k][0], z[k] = problem.samples[k][1];
+        const rfm::FieldValues f = model->evaluate(r, z);
+        for (Eigen::Index k = 0; k < n; ++k)
+          samples.push_back({{"r", r[k]},
+                             {"z", z[k]},
+                             {"u_r", f.u(k, 0)},
+                             {"u_z", f.u(k, 1)},
+                             {"sigma_rr", f.sigma(k, rfm::rr)},
+                             {"sigma_zz", f.sigma(k, rfm::zz)},
+                             {"sigma_tt", f.sigma(k, rfm::tt)},
+                             {"sigma_rz", f.sigma(k, rfm::rz)}});
+      }
+    result["samples"] = samples;
+    if (!output_path.empty())
+      axisym::write_json_atomically(output_path, result);
+    if (!vtu_directory.empty())
+      {
+        const axisym::Outline &outline = problem.body->outline;
+        const axisym::BoundingBox b = outline.bounding_box();
+        rfm::VtuGrid grid;
+        grid.r_min = b.r_min, grid.r_max = b.r_max, grid.z_min = b.z_min, grid.z_max = b.z_max;
+        const std::string path = vtu_directory + "/rfm_solution.vtu";
+        axisym::write_text_atomically(
+          path, rfm::fields_vtu(
+                  [&](const Eigen::Ref<const Eigen::VectorXd> &r,
+                      const Eigen::Ref<const Eigen::VectorXd> &z) { return model->evaluate(r, z); },
+                  grid,
+                  [&](double r, double z) { return outline.contains({r, z}, 1e-9 * outline.size()); }));
+        fmt::print(stderr, "rfm_solve: wrote {}\n", path);
+      }
+    fmt::print(stderr, "rfm_solve: Phi_L = {:.6e}, Phi_C = {:.6e}, Phi_R = {:.6e} J/rad; "
+                       "assembly {:.3f} s, solve {:.3f} s\n",
+               phi.lagrange, phi.castigliano, phi.reissner, model->assembly_seconds(),
+               model->solve_seconds());
+    if (output_path.empty())
+      std::cout << result.dump(2) << '\n';
+    return 0;
+  }
 } // namespace
 
 int main(int argc, char **argv)
@@ -166,6 +284,8 @@ int main(int argc, char **argv)
         axisym::check_output_path("--output", output_path);
       if (!vtu_directory.empty())
         axisym::ensure_output_directory("--vtu", vtu_directory);
+      if (!problem.legacy_cylinder)
+        return solve_outline(problem, target_indicator, output_path, vtu_directory);
       {
         // Memory: estimated before any allocation, against the machine's physical memory.
         const double bytes = rfm::estimate_memory_bytes(

@@ -170,7 +170,12 @@ namespace
       Case{"outline_sample_outside", sphere_with("/samples", {{0.05, 0.05}}), "samples[0]"},
       Case{"outline_load_without_density", sphere_with("/loading", {{"gravity", 9.81}}),
            "material.density"},
-      Case{"outline_not_yet_in_rfm", sphere_with("/samples", {{0.15, 0.0}}), "geometry.outline"},
+      Case{"outline_inclined_symmetry_in_rfm",
+           sphere_with("/geometry/outline", nlohmann::json::parse(R"([
+             {"start": [0.1, 0.0]}, {"line_to": [0.2, 0.0], "part": "bottom"},
+             {"line_to": [0.2, 0.1], "part": "side"}, {"line_to": [0.1, 0.05], "part": "equator"},
+             {"line_to": [0.1, 0.0], "part": "inner"}])")),
+           "symmetry edges along r or z"},
       Case{"degree_and_tolerance", with("/rfm", {{"degree", 4}, {"tolerance", 1e-8}}), "not both"},
       Case{"tolerance_too_small", with("/rfm", {{"tolerance", 1e-16}}), "rfm.tolerance"},
       Case{"tolerance_for_die", [] { auto j = valid(); j["die"] = {{"indentation", 1e-6}};
@@ -215,6 +220,26 @@ namespace
     const nlohmann::json r = nlohmann::json::parse(f);
     EXPECT_EQ(r.at("solver"), "rfm");
     EXPECT_LT(r.at("functionals").at("reissner").get<double>(), 0.0);
+  }
+
+  // An outline section (the sphere of DESIGN.md 7.1) solves: samples on the section, the
+  // three functionals, and the VTU with cells inside the section only.
+  TEST(RfmSolveCli, OutlineSectionSolves)
+  {
+    const fs::path dir = fs::temp_directory_path() / "rfm_cli_outline";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path in = dir / "problem.json", out = dir / "result.json";
+    std::ofstream(in) << sphere_with("/samples", {{0.15, 0.0}});
+    const Outcome o = run(in.string() + " --degree 10 --output " + out.string() + " --vtu " +
+                          (dir / "vtu").string());
+    EXPECT_EQ(o.status, 0) << o.err;
+    std::ifstream f(out);
+    const nlohmann::json r = nlohmann::json::parse(f);
+    // Lame's sphere at R = 0.15: sigma_RR = A - B / R^3 = -1.958e6 Pa (0.3 % of max at p = 10).
+    EXPECT_NEAR(r.at("samples")[0].at("sigma_rr").get<double>(), -1.9577e6, 4e4);
+    EXPECT_LT(r.at("functionals").at("indicator").get<double>(), 1e-3);
+    EXPECT_TRUE(fs::exists(dir / "vtu" / "rfm_solution.vtu"));
   }
 
   // --vtu DIR creates DIR (and its parents) and writes the fields with the FEM's names and

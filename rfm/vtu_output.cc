@@ -3,10 +3,21 @@
 #include <fmt/core.h>
 
 #include <stdexcept>
+#include <vector>
 
 namespace rfm
 {
   std::string fields_vtu(const RfmModel &model, const VtuGrid &grid)
+  {
+    return fields_vtu(
+      [&](const Eigen::Ref<const Eigen::VectorXd> &r, const Eigen::Ref<const Eigen::VectorXd> &z) {
+        return model.evaluate(r, z);
+      },
+      grid);
+  }
+
+  std::string fields_vtu(const FieldEvaluator &evaluate, const VtuGrid &grid,
+                         const std::function<bool(double, double)> &inside)
   {
     if (grid.n_r < 2 || grid.n_z < 2 || !(grid.r_max > grid.r_min) || !(grid.z_max > grid.z_min))
       throw std::invalid_argument("fields_vtu: need at least 2 x 2 points on a non-empty box");
@@ -19,8 +30,33 @@ namespace rfm
           r[k] = grid.r_min + (grid.r_max - grid.r_min) * i / (grid.n_r - 1);
           z[k] = grid.z_min + (grid.z_max - grid.z_min) * j / (grid.n_z - 1);
         }
-    const FieldValues f = model.evaluate(r, z);
-    const long n_cells = static_cast<long>(grid.n_r - 1) * (grid.n_z - 1);
+    // The points inside (all without `inside`), their fields, and the cells kept.
+    std::vector<char> in(n, 1);
+    if (inside)
+      for (Eigen::Index k = 0; k < n; ++k)
+        in[k] = inside(r[k], z[k]);
+    std::vector<Eigen::Index> index;
+    for (Eigen::Index k = 0; k < n; ++k)
+      if (in[k])
+        index.push_back(k);
+    Eigen::VectorXd ri(index.size()), zi(index.size());
+    for (std::size_t k = 0; k < index.size(); ++k)
+      ri[k] = r[index[k]], zi[k] = z[index[k]];
+    const FieldValues fi = evaluate(ri, zi);
+    FieldValues f;
+    f.u.setZero(n, 2);
+    f.sigma.setZero(n, n_stress_components);
+    for (std::size_t k = 0; k < index.size(); ++k)
+      f.u.row(index[k]) = fi.u.row(k), f.sigma.row(index[k]) = fi.sigma.row(k);
+    std::vector<long> cells;
+    for (int j = 0; j + 1 < grid.n_z; ++j)
+      for (int i = 0; i + 1 < grid.n_r; ++i)
+        {
+          const long k = static_cast<long>(j) * grid.n_r + i;
+          if (in[k] && in[k + 1] && in[k + 1 + grid.n_r] && in[k + grid.n_r])
+            cells.push_back(k);
+        }
+    const long n_cells = static_cast<long>(cells.size());
 
     std::string out;
     out += "<?xml version=\"1.0\"?>\n"
@@ -32,12 +68,8 @@ namespace rfm
       out += fmt::format("{:.17g} {:.17g} 0\n", r[k], z[k]);
     out += "</DataArray>\n</Points>\n<Cells>\n"
            "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-    for (int j = 0; j + 1 < grid.n_z; ++j)
-      for (int i = 0; i + 1 < grid.n_r; ++i)
-        {
-          const long k = static_cast<long>(j) * grid.n_r + i;
-          out += fmt::format("{} {} {} {}\n", k, k + 1, k + 1 + grid.n_r, k + grid.n_r);
-        }
+    for (const long k : cells)
+      out += fmt::format("{} {} {} {}\n", k, k + 1, k + 1 + grid.n_r, k + grid.n_r);
     out += "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
     for (long c = 1; c <= n_cells; ++c)
       out += fmt::format("{}\n", 4 * c);

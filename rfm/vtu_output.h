@@ -9,6 +9,7 @@
 
 #include "rfm/model.h"
 
+#include <functional>
 #include <string>
 
 namespace rfm
@@ -20,6 +21,15 @@ namespace rfm
     int n_r = 101, n_z = 201;
   };
 
-  /// The VTU (XML, ASCII) text of the model's fields on the grid. Precondition: model.ok().
+  /// Fields at points, as RfmModel::evaluate.
+  using FieldEvaluator = std::function<FieldValues(const Eigen::Ref<const Eigen::VectorXd> &,
+                                                   const Eigen::Ref<const Eigen::VectorXd> &)>;
+
+  /// The VTU (XML, ASCII) text of the fields on the grid. With `inside`, only the cells whose
+  /// four corners are inside are written, and the fields are evaluated at their points only
+  /// (the others are written as 0 and belong to no cell).
+  std::string fields_vtu(const FieldEvaluator &evaluate, const VtuGrid &grid,
+                         const std::function<bool(double, double)> &inside = {});
+  /// The same for a solved hollow-cylinder model. Precondition: model.ok().
   std::string fields_vtu(const RfmModel &model, const VtuGrid &grid);
 } // namespace rfm

@@ -1,0 +1,79 @@
+// rfm.tolerance (DESIGN.md / issue "accuracy, not degree"): solve at p = 2, 4, 6, ... until
+// the a-posteriori indicator |Phi_L - Phi_C| / |Phi_R| falls below a tolerance. Shared by
+// the hollow-cylinder model (model.h) and the outline model (outline_model.h).
+#pragma once
+
+#include "rfm/discrete_space.h"
+
+#include <algorithm>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rfm
+{
+  /// One degree of a tolerance-driven solve.
+  struct DegreeStep
+  {
+    int degree = 0;
+    double indicator = 0.0; ///< |Phi_L - Phi_C| / |Phi_R|
+    double seconds = 0.0;   ///< assembly + solve
+  };
+
+  template <typename Model>
+  struct DegreeSequence
+  {
+    std::unique_ptr<Model> model; ///< the last degree tried
+    std::vector<DegreeStep> steps;
+    bool reached = false;
+    std::string message;
+  };
+
+  /// `make(options)` builds and solves a model at options.degree; `indicator(model)` reads
+  /// its indicator. Not reached (reached = false, with the reason) when options.max_degree
+  /// is passed, when the indicator has not halved over two steps (its rounding floor), or
+  /// when a solve fails (model->ok() false).
+  template <typename Model, typename Make, typename Indicator>
+  DegreeSequence<Model> solve_degree_sequence(const DiscretizationOptions &options,
+                                              const double tolerance, Make make,
+                                              Indicator indicator)
+  {
+    DegreeSequence<Model> out;
+    double best = std::numeric_limits<double>::infinity();
+    int steps_without_progress = 0;
+    for (int p = 2; p <= options.max_degree; p += 2)
+      {
+        DiscretizationOptions o = options;
+        o.degree = p;
+        out.model = make(o);
+        if (!out.model->ok())
+          {
+            out.message = "p = " + std::to_string(p) + ": " + out.model->summary().message;
+            return out;
+          }
+        const double value = indicator(*out.model);
+        out.steps.push_back({p, value, out.model->assembly_seconds() + out.model->solve_seconds()});
+        if (value < tolerance)
+          {
+            out.reached = true;
+            out.message = "indicator " + std::to_string(value) + " < tolerance at p = " +
+                          std::to_string(p);
+            return out;
+          }
+        steps_without_progress = value < 0.5 * best ? 0 : steps_without_progress + 1;
+        best = std::min(best, value);
+        if (steps_without_progress >= 2)
+          {
+            out.message = "the indicator stopped decreasing at " + std::to_string(best) +
+                          " (p = " + std::to_string(p) + "), above the tolerance " +
+                          std::to_string(tolerance);
+            return out;
+          }
+      }
+    out.message = "tolerance " + std::to_string(tolerance) + " not reached by rfm.max_degree = " +
+                  std::to_string(options.max_degree) + " (indicator " +
+                  std::to_string(out.steps.empty() ? best : out.steps.back().indicator) + ")";
+    return out;
+  }
+} // namespace rfm

@@ -1,0 +1,285 @@
+#include "rfm/outline_model.h"
+
+#include "rfm/section_quadrature.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <chrono>
+#include <cmath>
+
+namespace rfm
+{
+  namespace
+  {
+    double seconds_since(const std::chrono::steady_clock::time_point &t0)
+    {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    }
+
+    TensorLegendreBasis basis_of(const axisym::Outline &outline, const int degree)
+    {
+      const axisym::BoundingBox b = outline.bounding_box();
+      return TensorLegendreBasis(degree, b.r_min, b.r_max, b.z_min, b.z_max);
+    }
+
+    // Gauss points along every edge (arcs in angle), with r ds weights. Points never fall on
+    // the axis r = 0 itself except on axis edges, whose weight r ds is zero there anyway.
+    EdgeQuadrature edge_gauss(const axisym::Outline &outline, const int n_points)
+    {
+      const GaussRule1D g = gauss_legendre(n_points);
+      std::vector<double> r, z, w, nr, nz;
+      EdgeQuadrature q;
+      for (int e = 0; e < static_cast<int>(outline.edges().size()); ++e)
+        {
+          const axisym::OutlineEdge &edge = outline.edges()[e];
+          for (Eigen::Index k = 0; k < g.nodes.size(); ++k)
+            {
+              const double t = 0.5 * (g.nodes[k] + 1.0);
+              const axisym::Point p = edge.point_at(t), n = edge.outward_normal_at(t);
+              r.push_back(p.r), z.push_back(p.z), nr.push_back(n.r), nz.push_back(n.z);
+              w.push_back(0.5 * g.weights[k] * edge.length() * p.r);
+              q.edge.push_back(e);
+            }
+        }
+      auto vec = [](const std::vector<double> &v) {
+        return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
+      };
+      q.r = vec(r), q.z = vec(z), q.weights = vec(w), q.n_r = vec(nr), q.n_z = vec(nz);
+      return q;
+    }
+
+    StressStructureValues polynomial_part(const OutlineStressValues &s)
+    {
+      return {s.omega, s.s0};
+    }
+    DisplacementStructureValues as_structure(const OutlineDisplacementValues &d)
+    {
+      return {d.omega, d.omega_r, d.omega_z, d.u0, d.u0_r, d.u0_z};
+    }
+  } // namespace
+
+  OutlineModel::OutlineModel(const axisym::Problem &problem, const DiscretizationOptions &options,
+                             const SolverOptions &solver_options)
+    : material_(problem.material)
+    , structures_(*problem.body, (options.validate(), options.degree))
+    , basis_(basis_of(problem.body->outline, options.degree))
+  {
+    if (problem.body_loads.any())
+      throw axisym::InputError("loading: body loads are not applied by the RFM yet");
+    const auto t0 = std::chrono::steady_clock::now();
+    // Products of two coordinate functions reach total degree 4p in (r, z), times the
+    // structures: the collapsed Gauss rule is exact for total degree 2n - 2 on straight
+    // triangles.
+    SectionQuadratureOptions qo;
+    qo.n_points = 2 * options.degree + options.extra_gauss_points;
+    quadrature_ = section_gauss(problem.body->outline, qo);
+    edge_quadrature_ = edge_gauss(problem.body->outline, qo.n_points);
+    std::array<Eigen::MatrixXd, 2> gram_u;
+    const ReissnerSystem sys = assemble(gram_u);
+    assembly_s_ = seconds_since(t0);
+
+    // The basis orthonormal on the section (see the header).
+    const auto t1 = std::chrono::steady_clock::now();
+    const Eigen::Index n = basis_.n_basis_functions();
+    // V L^-1/2 of the Jacobi-scaled Gram matrix D G D (D = diag(G)^-1/2), the directions
+    // with l > 1e-14 max l kept: T = D V L^-1/2, so that T^T G T = I.
+    auto orthonormal = [](const Eigen::MatrixXd &gram) {
+      const Eigen::VectorXd d = gram.diagonal().cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
+      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(d.asDiagonal() * gram *
+                                                               d.asDiagonal());
+      const Eigen::VectorXd &l = eig.eigenvalues(); // ascending
+      Eigen::Index first = 0;
+      while (first < l.size() && !(l[first] > 1e-14 * l[l.size() - 1]))
+        ++first;
+      const Eigen::Index kept = l.size() - first;
+      return Eigen::MatrixXd(d.asDiagonal() * eig.eigenvectors().rightCols(kept) *
+                             l.tail(kept).cwiseSqrt().cwiseInverse().asDiagonal());
+    };
+    // Stresses: all columns at once (R11 couples the components and the boundary columns
+    // through C, and a boundary column can come close to the polynomial ones inside).
+    const Eigen::MatrixXd s_map = orthonormal(-sys.r11);
+    std::array<Eigen::MatrixXd, 2> tu{orthonormal(gram_u[0]), orthonormal(gram_u[1])};
+    Eigen::MatrixXd u_map = Eigen::MatrixXd::Zero(2 * n, tu[0].cols() + tu[1].cols());
+    u_map.block(0, 0, n, tu[0].cols()) = tu[0];
+    u_map.block(n, tu[0].cols(), n, tu[1].cols()) = tu[1];
+    n_kept_ = {s_map.cols(), u_map.cols()};
+
+    ReissnerSystem reduced;
+    reduced.r11 = s_map.transpose() * sys.r11 * s_map;
+    reduced.r12 = s_map.transpose() * sys.r12 * u_map;
+    reduced.p_s = s_map.transpose() * sys.p_s;
+    reduced.p_u = u_map.transpose() * sys.p_u;
+    SaddlePointSolution sol = solve_saddle_point(reduced, solver_options);
+    solve_s_ = seconds_since(t1);
+    summary_ = sol.summary;
+    if (summary_.success)
+      {
+        q_s_ = s_map * sol.q_s;
+        q_u_ = u_map * sol.q_u;
+      }
+  }
+
+  ReissnerSystem OutlineModel::assemble(std::array<Eigen::MatrixXd, 2> &gram_u) const
+  {
+    const Eigen::Index n = basis_.n_basis_functions(), n_b = structures_.n_boundary_columns();
+    const Eigen::Index n_s = 4 * n + n_b, n_u = 2 * n;
+    const Eigen::Matrix4d c = material_.compliance();
+    const Quadrature2D &q = quadrature_;
+    const Eigen::VectorXd mu = q.weights.cwiseProduct(q.r);
+    const BasisValues b = basis_.evaluate(q.r, q.z);
+    const OutlineStressValues s = structures_.stress(q.r, q.z);
+    const DisplacementStructureValues d = as_structure(structures_.displacement(q.r, q.z));
+
+    ReissnerSystem sys;
+    sys.r11.setZero(n_s, n_s);
+    sys.r12.setZero(n_s, n_u);
+    sys.p_s.setZero(n_s);
+    sys.p_u.setZero(n_u);
+    const StressStructureValues sp = polynomial_part(s);
+    add_polynomial_blocks(mu, q.r, b, sp, d, c, sys);
+    {
+      // Gram matrices of the displacement columns: values / l^2 plus gradients (l the size of
+      // the section, so both terms weigh alike).
+      const DisplacementBasisValues v = displacement_basis(b, d);
+      const double l = structures_.body().outline.size();
+      for (int m = 0; m < 2; ++m)
+        {
+          const Eigen::MatrixXd wv = mu.asDiagonal() * v.value[m];
+          gram_u[m] = (wv.transpose() * v.value[m]) / (l * l);
+          gram_u[m].noalias() += v.d_r[m].transpose() * (mu.asDiagonal() * v.d_r[m]);
+          gram_u[m].noalias() += v.d_z[m].transpose() * (mu.asDiagonal() * v.d_z[m]);
+        }
+    }
+
+    // The boundary columns B_e (vector fields in rr, zz, rz): the borders of R11 and R12
+    // and their rows of p_s.
+    if (n_b > 0)
+      {
+        Eigen::MatrixXd cxb[n_stress_components]; // mu C X_b per component
+        for (int k = 0; k < n_stress_components; ++k)
+          {
+            cxb[k].setZero(q.n_points(), n_b);
+            for (int l = 0; l < n_stress_components; ++l)
+              if (c(k, l) != 0.0)
+                cxb[k] += c(k, l) * s.boundary[l];
+            cxb[k] = mu.asDiagonal() * cxb[k];
+          }
+        for (int k = 0; k < n_stress_components; ++k)
+          {
+            const Eigen::MatrixXd omega_b = s.omega.col(k).asDiagonal() * b.value;
+            sys.r11.block(k * n, 4 * n, n, n_b).noalias() -= omega_b.transpose() * cxb[k];
+            sys.r11.block(4 * n, 4 * n, n_b, n_b).noalias() -= s.boundary[k].transpose() * cxb[k];
+          }
+        sys.r11.block(4 * n, 0, n_b, 4 * n) = sys.r11.block(0, 4 * n, 4 * n, n_b).transpose();
+
+        const DisplacementBasisValues v = displacement_basis(b, d);
+        const Eigen::VectorXd inv_r = q.r.cwiseInverse();
+        Eigen::MatrixXd wxb[n_stress_components];
+        for (int k = 0; k < n_stress_components; ++k)
+          wxb[k] = mu.asDiagonal() * s.boundary[k];
+        sys.r12.block(4 * n, 0, n_b, n).noalias() =
+          wxb[rr].transpose() * v.d_r[0] + wxb[tt].transpose() * (inv_r.asDiagonal() * v.value[0]) +
+          wxb[rz].transpose() * v.d_z[0];
+        sys.r12.block(4 * n, n, n_b, n).noalias() =
+          wxb[zz].transpose() * v.d_z[1] + wxb[rz].transpose() * v.d_r[1];
+
+        const Eigen::MatrixXd residual = initial_strain_residual(sp, d, q.r, c);
+        for (int k = 0; k < n_stress_components; ++k)
+          sys.p_s.tail(n_b).noalias() += wxb[k].transpose() * residual.col(k);
+      }
+
+    // p_u: - int_{S_t} t . Phi r ds on the traction edges.
+    const EdgeQuadrature &eq = edge_quadrature_;
+    const BasisValues bb = basis_.evaluate(eq.r, eq.z);
+    const OutlineDisplacementValues bd = structures_.displacement(eq.r, eq.z);
+    for (int m = 0; m < 2; ++m)
+      {
+        Eigen::VectorXd wt(eq.r.size());
+        for (Eigen::Index k = 0; k < wt.size(); ++k)
+          wt[k] = eq.weights[k] * bd.omega(k, m) *
+                  structures_.prescribed_traction(eq.edge[k], eq.r[k], eq.z[k])[m];
+        sys.p_u.segment(m * n, n).noalias() -= bb.value.transpose() * wt;
+      }
+    return sys;
+  }
+
+  FieldValues OutlineModel::evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                     const Eigen::Ref<const Eigen::VectorXd> &z) const
+  {
+    const Eigen::Index n = basis_.n_basis_functions(), n_b = structures_.n_boundary_columns();
+    const BasisValues b = basis_.evaluate(r, z);
+    const OutlineStressValues s = structures_.stress(r, z);
+    const DisplacementStructureValues d = as_structure(structures_.displacement(r, z));
+    const DisplacementBasisValues v = displacement_basis(b, d);
+    FieldValues f;
+    f.sigma = s.s0;
+    for (int k = 0; k < n_stress_components; ++k)
+      {
+        f.sigma.col(k) += s.omega.col(k).cwiseProduct(b.value * q_s_.segment(k * n, n));
+        if (n_b > 0)
+          f.sigma.col(k) += s.boundary[k] * q_s_.tail(n_b);
+      }
+    f.u = d.u0;
+    Eigen::MatrixXd du_dr = d.u0_r, du_dz = d.u0_z;
+    for (int m = 0; m < 2; ++m)
+      {
+        const auto qm = q_u_.segment(m * n, n);
+        f.u.col(m) += v.value[m] * qm;
+        du_dr.col(m) += v.d_r[m] * qm;
+        du_dz.col(m) += v.d_z[m] * qm;
+      }
+    f.strain.resize(r.size(), n_stress_components);
+    f.strain.col(rr) = du_dr.col(0);
+    f.strain.col(zz) = du_dz.col(1);
+    f.strain.col(tt) = f.u.col(0).cwiseQuotient(r);
+    f.strain.col(rz) = du_dz.col(0) + du_dr.col(1);
+    return f;
+  }
+
+  Functionals OutlineModel::functionals() const
+  {
+    const Eigen::Matrix4d c = material_.compliance(), dmat = material_.stiffness();
+    const Quadrature2D &q = quadrature_;
+    const Eigen::VectorXd mu = q.weights.cwiseProduct(q.r);
+    const FieldValues f = evaluate(q.r, q.z);
+    double strain_energy = 0, complementary = 0, mixed = 0;
+    for (Eigen::Index k = 0; k < q.n_points(); ++k)
+      {
+        const Eigen::Vector4d e = f.strain.row(k).transpose(), s = f.sigma.row(k).transpose();
+        strain_energy += 0.5 * mu[k] * e.dot(dmat * e);
+        complementary += 0.5 * mu[k] * s.dot(c * s);
+        mixed += mu[k] * s.dot(e);
+      }
+    // Boundary terms: W(u) on the traction edges; (s n) . u_bar on the displacement edges.
+    const EdgeQuadrature &eq = edge_quadrature_;
+    const FieldValues fb = evaluate(eq.r, eq.z);
+    double work = 0, kinematic = 0;
+    for (Eigen::Index k = 0; k < eq.r.size(); ++k)
+      {
+        const auto t = structures_.prescribed_traction(eq.edge[k], eq.r[k], eq.z[k]);
+        work += eq.weights[k] * (t[0] * fb.u(k, 0) + t[1] * fb.u(k, 1));
+        const axisym::PartCondition &cond = structures_.body().condition_of_edge(eq.edge[k]);
+        if (cond.kind == axisym::PartCondition::Kind::displacement)
+          {
+            const double sn_r = fb.sigma(k, rr) * eq.n_r[k] + fb.sigma(k, rz) * eq.n_z[k];
+            const double sn_z = fb.sigma(k, rz) * eq.n_r[k] + fb.sigma(k, zz) * eq.n_z[k];
+            kinematic += eq.weights[k] * (sn_r * cond.displacement[0] + sn_z * cond.displacement[1]);
+          }
+      }
+    Functionals out;
+    out.lagrange = strain_energy - work;
+    out.castigliano = -complementary + kinematic;
+    out.reissner = mixed - complementary - work;
+    return out;
+  }
+
+  DegreeSequence<OutlineModel> solve_outline_to_tolerance(const axisym::Problem &problem,
+                                                          const DiscretizationOptions &options,
+                                                          const double tolerance)
+  {
+    return solve_degree_sequence<OutlineModel>(
+      options, tolerance,
+      [&](const DiscretizationOptions &o) { return std::make_unique<OutlineModel>(problem, o); },
+      [](const OutlineModel &m) { return m.functionals().indicator(); });
+  }
+} // namespace rfm

@@ -1,0 +1,84 @@
+// The RFM on any meridian section (DESIGN.md 7.1): the outline structures
+// (outline_structures.h), the tensor Legendre basis of the section's bounding box, the
+// curved-triangle quadrature of the section (section_quadrature.h), the resolving system of
+// Reissner's functional (assembly.h, same blocks) and its solution.
+//
+// Unknowns: q_s = (q_rr, q_zz, q_tt, q_rz, q_b): N each and the boundary columns B_e last;
+// q_u = (q_r, q_z), N each.
+//
+// Conditioning. The tensor Legendre polynomials of the bounding box are nearly dependent on a
+// section that fills only part of the box (the quarter annulus: R11's Jacobi-scaled rcond
+// estimate reaches 1e-18 at p = 10), and a boundary column can come close to the polynomial
+// ones inside. The system is therefore solved in a basis orthonormal on the section: with G
+// the Gram matrix of the stress columns in the compliance norm (G = -R11) and
+// D G D = V L V^T (D its Jacobi scaling), the columns D V_j / sqrt(l_j) with
+// l_j > 1e-14 max l are kept; likewise per displacement component with the Gram matrix of
+// values and gradients. The dropped combinations are below 1e-7 of the others in norm on
+// the section.
+#pragma once
+
+#include "problem/problem.h"
+#include "rfm/assembly.h"
+#include "rfm/basis.h"
+#include "rfm/degree_sequence.h"
+#include "rfm/outline_structures.h"
+#include "rfm/quadrature.h"
+#include "rfm/saddle_point_solver.h"
+#include "rfm/solution.h"
+
+#include <array>
+#include <memory>
+
+namespace rfm
+{
+  /// Points on the edges: (r, z), r ds weights, outward unit normal and the edge index.
+  struct EdgeQuadrature
+  {
+    Eigen::VectorXd r, z, weights, n_r, n_z;
+    std::vector<int> edge;
+  };
+
+  class OutlineModel
+  {
+  public:
+    /// Builds, assembles and solves at options.degree. Throws InputError for sections the
+    /// structures do not support. Numerical failure: ok() false, summary().message.
+    OutlineModel(const axisym::Problem &problem, const DiscretizationOptions &options,
+                 const SolverOptions &solver_options = {});
+
+    bool ok() const { return summary_.success; }
+    const SolveSummary &summary() const { return summary_; }
+    double assembly_seconds() const { return assembly_s_; }
+    double solve_seconds() const { return solve_s_; }
+    Eigen::Index n_basis_functions() const { return basis_.n_basis_functions(); }
+    Eigen::Index n_boundary_columns() const { return structures_.n_boundary_columns(); }
+    Eigen::Index n_quadrature_points() const { return quadrature_.n_points(); }
+    /// Unknowns after the orthonormalization (stress, displacement).
+    std::array<Eigen::Index, 2> n_kept_unknowns() const { return n_kept_; }
+
+    /// Fields at points of the section. Precondition: ok().
+    FieldValues evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
+                         const Eigen::Ref<const Eigen::VectorXd> &z) const;
+    Functionals functionals() const;
+
+  private:
+    /// The system, and the Gram matrices of the displacement columns (values and
+    /// gradients, per component) for the basis transform.
+    ReissnerSystem assemble(std::array<Eigen::MatrixXd, 2> &gram_u) const;
+
+    Material material_;
+    OutlineStructures structures_;
+    TensorLegendreBasis basis_;
+    Quadrature2D quadrature_;
+    EdgeQuadrature edge_quadrature_;
+    Eigen::VectorXd q_s_, q_u_;
+    SolveSummary summary_;
+    double assembly_s_ = 0.0, solve_s_ = 0.0;
+    std::array<Eigen::Index, 2> n_kept_{0, 0};
+  };
+
+  /// rfm.tolerance for an outline problem (degree_sequence.h).
+  DegreeSequence<OutlineModel> solve_outline_to_tolerance(const axisym::Problem &problem,
+                                                          const DiscretizationOptions &options,
+                                                          double tolerance);
+} // namespace rfm
