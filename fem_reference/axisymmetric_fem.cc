@@ -132,8 +132,10 @@ namespace fem
     /// du_i/dx_j, x = (r, z)).
     Stress strain(double r, double u_r, const Tensor<1, 2> &grad_u_r, const Tensor<1, 2> &grad_u_z)
     {
-      // On the axis (r = 0: samples, VTU points, never a quadrature point) u_r/r -> du_r/dr.
-      return {{grad_u_r[0], grad_u_z[1], r > 0 ? u_r / r : grad_u_r[0],
+      // On the axis (r = 0: samples, VTU and Gauss-Lobatto points, never a Gauss point)
+      // u_r/r -> du_r/dr. A mapped point on the axis can come out at r ~ 1e-19 with u_r = 0
+      // exactly, which would give e_tt = 0 instead of the limit: below 1e-13 m is the axis.
+      return {{grad_u_r[0], grad_u_z[1], r > 1e-13 ? u_r / r : grad_u_r[0],
                grad_u_r[1] + grad_u_z[0]}};
     }
 

@@ -1,0 +1,222 @@
+// bodies_of_revolution: RFM and FEM on sections given by their outline (DESIGN.md 7.1),
+// against exact solutions where they exist.
+//
+//   1. Thick spherical shell under inner and outer pressure (verification/sphere_exact.h):
+//      the RFM's max stress error on a 41 x 41 polar grid against p, with the indicator and
+//      the functional against -U; the FEM's (Q2, curved cells) r-weighted L2 and max stress
+//      errors against the level L and the observed orders.
+//   2. Solid cylinder (R1 = 0, the axis) under end pressure: uniform sigma_zz = -p.
+//   3. A shaft with a circumferential groove under tension (no closed form): the stress
+//      concentration factor K_t = sigma_zz(notch root) / (t R^2 / (R - rho)^2) from both
+//      solvers against p and L.
+//   4. The tolerance gate (verification/tolerances.json, entry "bodies_of_revolution").
+//
+// Sample run:
+//   build/bin/bodies_of_revolution --mode quick --output-dir build/verification-output
+#include "fem_reference/axisymmetric_fem.h"
+#include "problem/problem.h"
+#include "rfm/outline_model.h"
+#include "verification/driver.h"
+#include "verification/sphere_exact.h"
+
+#include <fmt/core.h>
+
+#include <cmath>
+
+namespace
+{
+  // Max over the grid points and components of |s_h - s|, relative to max |s|.
+  template <typename Exact>
+  double max_stress_error(const rfm::OutlineModel &m, const Eigen::VectorXd &r,
+                          const Eigen::VectorXd &z, Exact exact)
+  {
+    const rfm::FieldValues f = m.evaluate(r, z);
+    double err = 0, max = 0;
+    for (Eigen::Index k = 0; k < r.size(); ++k)
+      {
+        const std::array<double, 4> s = exact(r[k], z[k]);
+        for (int c = 0; c < 4; ++c)
+          err = std::max(err, std::abs(f.sigma(k, c) - s[c])), max = std::max(max, std::abs(s[c]));
+      }
+    return err / max;
+  }
+
+  fem::FemOptions quiet_fem(const axisym::Problem &problem, const int level)
+  {
+    fem::FemOptions o = fem::options_from_problem(problem);
+    o.refinements = level;
+    o.progress = false;
+    return o;
+  }
+
+  double observed_order(double e_coarse, double e_fine) { return std::log2(e_coarse / e_fine); }
+} // namespace
+
+nlohmann::json run(const verification::DriverContext &context)
+{
+  const bool full = context.full();
+  nlohmann::json results = {{"driver", "bodies_of_revolution"}, {"mode", context.mode}};
+
+  // 1. Thick sphere.
+  {
+    const axisym::Problem problem =
+      axisym::read_problem_file(context.problem_path("sphere_thick.json"));
+    const auto &cond = problem.body->conditions;
+    const verification::ThickSphere exact{0.1,
+                                          0.2,
+                                          problem.material.youngs_modulus,
+                                          problem.material.poisson_ratio,
+                                          cond.at("inner").pressure,
+                                          cond.at("outer").pressure};
+    auto stress = [&](double r, double z) { return exact.stress(r, z); };
+    Eigen::VectorXd r(41 * 41), z(41 * 41);
+    for (int i = 0; i <= 40; ++i)
+      for (int j = 0; j <= 40; ++j)
+        {
+          const double rho = 0.1 + 0.1 * i / 40.0, th = 0.5 * M_PI * j / 40.0;
+          r[41 * i + j] = std::max(rho * std::cos(th), 1e-12), z[41 * i + j] = rho * std::sin(th);
+        }
+    const double phi_exact = -exact.strain_energy();
+    nlohmann::json c = {{"problem_file", "verification/problems/sphere_thick.json"},
+                        {"exact_functional", phi_exact}};
+    fmt::print("== Thick sphere (a = 0.1, b = 0.2, p_i = {:.3g}, p_o = {:.3g} Pa) ==\n",
+               exact.inner_pressure, exact.outer_pressure);
+    fmt::print("RFM: {:>3} {:>5} {:>12} {:>11} {:>15} {:>9}\n", "p", "N", "max err", "indicator",
+               "Phi_R [J/rad]", "time [s]");
+    for (int p = 4; p <= (full ? 16 : 12); p += 2)
+      {
+        rfm::DiscretizationOptions o = problem.rfm;
+        o.degree = p;
+        const rfm::OutlineModel m(problem, o);
+        if (!m.ok())
+          throw verification::NumericalFailure("sphere, p = " + std::to_string(p) + ": " +
+                                               m.summary().message);
+        const double err = max_stress_error(m, r, z, stress);
+        const rfm::Functionals phi = m.functionals();
+        const double seconds = m.assembly_seconds() + m.solve_seconds();
+        fmt::print("     {:>3} {:>5} {:>12.3e} {:>11.3e} {:>15.9f} {:>9.3f}\n", p,
+                   m.n_basis_functions(), err, phi.indicator(), phi.reissner, seconds);
+        c["rfm"]["p" + std::to_string(p)] = {{"N", m.n_basis_functions()},
+                                             {"max_error_relative", err},
+                                             {"indicator", phi.indicator()},
+                                             {"reissner", phi.reissner},
+                                             {"functional_error_relative",
+                                              std::abs(phi.reissner - phi_exact) / std::abs(phi_exact)},
+                                             {"seconds", seconds}};
+      }
+    fmt::print("FEM Q2: {:>2} {:>8} {:>12} {:>8} {:>12} {:>9}\n", "L", "dofs", "L2 err", "order",
+               "max err", "time [s]");
+    double previous = 0;
+    for (int level = 1; level <= (full ? 4 : 3); ++level)
+      {
+        const fem::FemResult f = fem::solve(problem, quiet_fem(problem, level), stress);
+        if (!f.success)
+          throw verification::NumericalFailure("sphere FEM, L = " + std::to_string(level) + ": " +
+                                               f.message);
+        const double l2 = *f.stress_l2_error / *f.stress_l2_norm;
+        const double mx = *f.stress_max_error / *f.stress_max_norm;
+        const double order = level > 1 ? observed_order(previous, l2) : 0.0;
+        fmt::print("        {:>2} {:>8} {:>12.3e} {:>8.2f} {:>12.3e} {:>9.3f}\n", level, f.n_dofs, l2,
+                   order, mx, f.total_seconds);
+        c["fem"]["L" + std::to_string(level)] = {{"dofs", f.n_dofs},
+                                                 {"l2_error_relative", l2},
+                                                 {"max_error_relative", mx},
+                                                 {"seconds", f.total_seconds}};
+        if (level > 1)
+          c["fem"]["observed_order_l2_last"] = order;
+        previous = l2;
+      }
+    results["sphere"] = c;
+  }
+
+  // 2. Solid cylinder under end pressure: sigma_zz = -p, the rest 0.
+  {
+    const axisym::Problem problem =
+      axisym::read_problem_file(context.problem_path("solid_cylinder_end_pressure.json"));
+    const double p = problem.body->conditions.at("end").pressure;
+    auto stress = [&](double, double) { return std::array<double, 4>{0.0, -p, 0.0, 0.0}; };
+    Eigen::VectorXd r(21 * 21), z(21 * 21);
+    for (int i = 0; i <= 20; ++i)
+      for (int j = 0; j <= 20; ++j)
+        r[21 * i + j] = std::max(0.1 * i / 20.0, 1e-12), z[21 * i + j] = 0.2 * j / 20.0;
+    nlohmann::json c = {{"problem_file", "verification/problems/solid_cylinder_end_pressure.json"}};
+    fmt::print("\n== Solid cylinder under end pressure (uniform sigma_zz = -{:.3g} Pa) ==\n", p);
+    for (const int deg : {4, 8, 12})
+      {
+        rfm::DiscretizationOptions o = problem.rfm;
+        o.degree = deg;
+        const rfm::OutlineModel m(problem, o);
+        if (!m.ok())
+          throw verification::NumericalFailure("solid cylinder, p = " + std::to_string(deg) + ": " +
+                                               m.summary().message);
+        const double err = max_stress_error(m, r, z, stress);
+        fmt::print("RFM p = {:>2}: max stress error {:.3e} of p, indicator {:.3e}\n", deg, err,
+                   m.functionals().indicator());
+        c["rfm"]["p" + std::to_string(deg)] = {{"max_error_relative", err},
+                                               {"indicator", m.functionals().indicator()}};
+      }
+    for (const int level : {0, 1})
+      {
+        const fem::FemResult f = fem::solve(problem, quiet_fem(problem, level), stress);
+        if (!f.success)
+          throw verification::NumericalFailure("solid cylinder FEM: " + f.message);
+        const double mx = *f.stress_max_error / *f.stress_max_norm;
+        fmt::print("FEM Q2 L = {}: max stress error {:.3e} of p\n", level, mx);
+        c["fem"]["L" + std::to_string(level)] = {{"max_error_relative", mx}};
+      }
+    results["solid_cylinder"] = c;
+  }
+
+  // 3. Grooved shaft under tension: K_t from both solvers.
+  {
+    const axisym::Problem problem =
+      axisym::read_problem_file(context.problem_path("grooved_shaft_tension.json"));
+    const double radius = 0.05, notch = 0.01;
+    const double t = problem.body->conditions.at("end").traction[1];
+    const double net = t * radius * radius / ((radius - notch) * (radius - notch));
+    Eigen::VectorXd root(1), zero(1);
+    root << radius - notch;
+    zero << 0.0;
+    nlohmann::json c = {{"problem_file", "verification/problems/grooved_shaft_tension.json"},
+                        {"net_section_stress", net}};
+    fmt::print("\n== Grooved shaft (R = {} m, notch radius {} m) under tension {:.3g} Pa ==\n",
+               radius, notch, t);
+    for (int p = 8; p <= (full ? 16 : 12); p += 4)
+      {
+        rfm::DiscretizationOptions o = problem.rfm;
+        o.degree = p;
+        const rfm::OutlineModel m(problem, o);
+        if (!m.ok())
+          throw verification::NumericalFailure("grooved shaft, p = " + std::to_string(p) + ": " +
+                                               m.summary().message);
+        const double kt = m.evaluate(root, zero).sigma(0, rfm::zz) / net;
+        fmt::print("RFM p = {:>2}: K_t = {:.4f}, indicator {:.3e}\n", p, kt,
+                   m.functionals().indicator());
+        c["rfm"]["p" + std::to_string(p)] = {{"stress_concentration", kt},
+                                             {"indicator", m.functionals().indicator()}};
+      }
+    double previous = 0;
+    for (int level = 2; level <= 3; ++level) // L = 4 has 1.2 million dofs
+      {
+        axisym::Problem with_root = problem;
+        with_root.samples = {{radius - notch, 0.0}};
+        const fem::FemResult f = fem::solve(with_root, quiet_fem(with_root, level));
+        if (!f.success)
+          throw verification::NumericalFailure("grooved shaft FEM: " + f.message);
+        const double kt = f.samples.at(0).sigma[1] / net;
+        fmt::print("FEM Q2 L = {}: K_t = {:.4f} ({} dofs)\n", level, kt, f.n_dofs);
+        c["fem"]["L" + std::to_string(level)] = {{"stress_concentration", kt}, {"dofs", f.n_dofs}};
+        if (level > 2)
+          c["fem"]["change_last_relative"] = std::abs(kt - previous) / std::abs(kt);
+        previous = kt;
+      }
+    results["grooved_shaft"] = c;
+  }
+  return results;
+}
+
+int main(int argc, char **argv)
+{
+  return verification::run_driver(argc, argv, "bodies_of_revolution",
+                                  "RFM and FEM on sections given by their outline", run);
+}
