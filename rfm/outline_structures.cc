@@ -205,8 +205,9 @@ namespace rfm
           }
       }
 
-    // Which S edges need the shear factor: T_e or s0_e has an rz component on a Y edge.
-    needs_shear_factor_.assign(edges.size(), false);
+    // Which Y edges each S edge needs the shear factor for: T_e or s0_e has an rz component
+    // on that Y edge.
+    shear_y_edges_.assign(edges.size(), {});
     for (const int e : stress_edges_)
       for (const int y : symmetry_edges_)
         for (int k = 1; k < 20; ++k)
@@ -216,7 +217,10 @@ namespace rfm
                                  std::abs(body_.condition_of_edge(e).traction[1]);
             if (std::abs(tangent_tensor(e, p.r, p.z)[2]) > 1e-12 ||
                 std::abs(particular(e, p.r, p.z)[2]) > 1e-12 * scale)
-              needs_shear_factor_[e] = true;
+              {
+                shear_y_edges_[e].push_back(y);
+                break;
+              }
           }
   }
 
@@ -278,11 +282,13 @@ namespace rfm
     return {q, (num.d_r - q * den.d_r) / den.value, (num.d_z - q * den.d_z) / den.value};
   }
 
-  double OutlineStructures::shear_factor(const int e, const double omega_y, const double r,
-                                         const double z) const
+  double OutlineStructures::shear_factor(const int e, const double r, const double z) const
   {
-    if (!needs_shear_factor_[e])
+    if (shear_y_edges_[e].empty())
       return 1.0;
+    double omega_y = 1.0;
+    for (const int y : shear_y_edges_[e])
+      omega_y *= omegas_[y](r, z).value;
     const double w = omegas_[e](r, z).value;
     return omega_y + w > 0.0 ? omega_y / (omega_y + w) : 0.0;
   }
@@ -337,7 +343,7 @@ namespace rfm
         for (Eigen::Index e = 0; e < n_s; ++e)
           {
             const int edge = stress_edges_[e];
-            const double g = shear_factor(edge, omega_y, rk, zk);
+            const double g = shear_factor(edge, rk, zk);
             const auto s0 = particular(edge, rk, zk);
             v.s0(k, rr) += weight[e] * s0[0];
             v.s0(k, zz) += weight[e] * s0[1];

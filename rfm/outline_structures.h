@@ -32,8 +32,9 @@
 //    (constant on a line; (-(z - z_c), r - r_c) / R on an arc, radial frame), so that on e
 //    sigma . n = s0 . n and the tangential normal stress B_e is free. s0 = sum_e W_e s0_e
 //    with s0_e = -p I (pressure) or t n + n t - (t . n) n n (traction) in the (r, z) plane.
-//    Where T_e or s0_e has a shear component on a Y edge (an arc whose center is off that
-//    symmetry line), their rz components take the factor omega_Y / (omega_Y + omega_e).
+//    Where T_e or s0_e has a shear component on Y edges (an arc whose center is off those
+//    symmetry lines), their rz components take the factor omega_Ye / (omega_Ye + omega_e),
+//    omega_Ye the product of the omegas of those Y edges only.
 //    omega_ur vanishes on the D edges and the Y edges with normal e_r (the axis, vertical
 //    symmetry lines); omega_uz on the D edges and the Y edges with normal e_z. u0 is the
 //    transfinite blend of the prescribed values over the same edges (0 on Y edges).
@@ -128,14 +129,15 @@ namespace rfm
     // sum_e v_e W_e over `edges` with values v_e, and its gradient.
     RValue blend(const std::vector<int> &edges, const std::vector<double> &values, double r,
                  double z) const;
-    // The factor of the rz components of edge e at a point (1 where no Y correction).
-    double shear_factor(int edge, double omega_y, double r, double z) const;
+    // The factor of the rz components of edge e at a point: omega_Ye / (omega_Ye + omega_e),
+    // omega_Ye the product over the Y edges where T_e or s0_e has shear (1 if none).
+    double shear_factor(int edge, double r, double z) const;
 
     axisym::Body body_;
     int degree_;
     std::vector<EdgeOmega> omegas_;
     std::vector<int> stress_edges_, symmetry_edges_, u_r_edges_, u_z_edges_;
     std::vector<double> u_r_values_, u_z_values_;
-    std::vector<bool> needs_shear_factor_; ///< per edge (S edges only)
+    std::vector<std::vector<int>> shear_y_edges_; ///< per edge (S edges only)
   };
 } // namespace rfm
