@@ -40,20 +40,25 @@ namespace rfm
     b.value.resize(n_points, m * m);
     b.d_r.resize(n_points, m * m);
     b.d_z.resize(n_points, m * m);
-    Eigen::VectorXd pr(m), dpr(m), pz(m), dpz(m);
+    // 1-D tables first (point by degree), then every product as a contiguous column
+    // operation (the per-point loop wrote rows of column-major matrices: stride n_points).
+    Eigen::MatrixXd pr(n_points, m), dpr(n_points, m), pz(n_points, m), dpz(n_points, m);
+    Eigen::VectorXd p1(m), dp1(m);
     for (Eigen::Index k = 0; k < n_points; ++k)
       {
-        legendre_values(degree_, sr * (r[k] - r_min_) - 1.0, pr, dpr);
-        legendre_values(degree_, sz * (z[k] - z_min_) - 1.0, pz, dpz);
-        for (Eigen::Index j = 0; j < m; ++j)
-          for (Eigen::Index i = 0; i < m; ++i)
-            {
-              const Eigen::Index col = j * m + i;
-              b.value(k, col) = pr[i] * pz[j];
-              b.d_r(k, col) = sr * dpr[i] * pz[j];
-              b.d_z(k, col) = sz * pr[i] * dpz[j];
-            }
+        legendre_values(degree_, sr * (r[k] - r_min_) - 1.0, p1, dp1);
+        pr.row(k) = p1.transpose(), dpr.row(k) = dp1.transpose();
+        legendre_values(degree_, sz * (z[k] - z_min_) - 1.0, p1, dp1);
+        pz.row(k) = p1.transpose(), dpz.row(k) = dp1.transpose();
       }
+    for (Eigen::Index j = 0; j < m; ++j)
+      for (Eigen::Index i = 0; i < m; ++i)
+        {
+          const Eigen::Index col = j * m + i;
+          b.value.col(col) = pr.col(i).cwiseProduct(pz.col(j));
+          b.d_r.col(col) = (sr * dpr.col(i)).cwiseProduct(pz.col(j));
+          b.d_z.col(col) = (sz * pr.col(i)).cwiseProduct(dpz.col(j));
+        }
     return b;
   }
 } // namespace rfm
