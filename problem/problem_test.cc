@@ -118,21 +118,6 @@ namespace axisym
         "samples": [[0.1, 0.05], [0.0, 0.15]]
       })");
     }
-
-    void expect_outline_error(const nlohmann::json &j, const std::vector<std::string> &fragments)
-    {
-      try
-        {
-          parse_problem(j);
-          ADD_FAILURE() << "accepted: " << j.dump();
-        }
-      catch (const InputError &e)
-        {
-          for (const auto &f : fragments)
-            EXPECT_NE(std::string(e.what()).find(f), std::string::npos)
-              << "message '" << e.what() << "' lacks '" << f << "'";
-        }
-    }
   } // namespace
 
   TEST(ProblemOutline, ParsesTheSphereOfTheDesign)
@@ -193,7 +178,7 @@ namespace axisym
   {
     auto j = sphere();
     j["geometry"]["outline"][4]["arc_to"] = {0.1, 0.01};
-    expect_outline_error(j, {"geometry.outline"});
+    expect_error(j, {"geometry.outline"});
 
     j = sphere(); // clockwise: the same loop backwards
     j["geometry"]["outline"] = nlohmann::json::parse(R"([
@@ -201,59 +186,59 @@ namespace axisym
       {"line_to": [0.0, 0.2], "part": "axis"},
       {"arc_to": [0.2, 0.0], "center": [0.0, 0.0], "part": "outer"},
       {"line_to": [0.1, 0.0], "part": "equator"}])");
-    expect_outline_error(j, {"geometry.outline", "counter-clockwise"});
+    expect_error(j, {"geometry.outline", "counter-clockwise"});
 
     j = sphere();
     j["geometry"]["outline"][0]["start"] = {-0.1, 0.0};
     j["geometry"]["outline"][4]["arc_to"] = {-0.1, 0.0};
-    expect_outline_error(j, {"geometry.outline"});
+    expect_error(j, {"geometry.outline"});
 
     j = sphere();
     j["geometry"]["outline"][2]["center"] = {0.0, 0.01};
-    expect_outline_error(j, {"geometry.outline[2]"});
+    expect_error(j, {"geometry.outline[2]"});
 
     j = sphere();
     j["boundary"]["hole"] = {{"pressure", 1.0}};
-    expect_outline_error(j, {"boundary.hole", "no such part", "equator"});
+    expect_error(j, {"boundary.hole", "no such part", "equator"});
 
     j = sphere();
     j["boundary"]["axis"] = {{"pressure", 1.0}};
-    expect_outline_error(j, {"boundary.axis", "axis"});
+    expect_error(j, {"boundary.axis", "axis"});
 
     j = sphere();
     j["boundary"]["outer"] = {{"symmetry", true}};
-    expect_outline_error(j, {"boundary.outer.symmetry", "arc"});
+    expect_error(j, {"boundary.outer.symmetry", "arc"});
 
     j = sphere();
     j["boundary"]["outer"] = {{"pressure", 1.0}, {"traction", {0.0, 0.0}}};
-    expect_outline_error(j, {"boundary.outer", "exactly one"});
+    expect_error(j, {"boundary.outer", "exactly one"});
 
     j = sphere();
     j["samples"] = {{0.05, 0.05}};
-    expect_outline_error(j, {"samples[0]", "0.05", "inside geometry.outline"});
+    expect_error(j, {"samples[0]", "0.05", "inside geometry.outline"});
 
     j = sphere();
     j["loading"] = {{"angular_velocity", 10.0}};
-    expect_outline_error(j, {"loading.angular_velocity", "material.density"});
+    expect_error(j, {"loading.angular_velocity", "material.density"});
 
     j = sphere();
     j["loading"] = {{"temperature", {{"field", {1.0, 0.0, 0.0}}}}};
-    expect_outline_error(j, {"loading.temperature", "material.thermal_expansion"});
+    expect_error(j, {"loading.temperature", "material.thermal_expansion"});
 
     j = sphere();
     j["material"]["density"] = -1.0;
-    expect_outline_error(j, {"material.density", "-1", "> 0"});
+    expect_error(j, {"material.density", "-1", "> 0"});
 
     j = sphere();
     j["boundary"].erase("equator");
-    expect_outline_error(j, {"boundary", "translation in z"});
+    expect_error(j, {"boundary", "translation in z"});
 
     j = sphere();
     j["geometry"]["outline"][1]["part"] = "axis";
-    expect_outline_error(j, {"geometry.outline[1].part", "axis"});
+    expect_error(j, {"geometry.outline[1].part", "axis"});
 
     j = sphere();
     j["die"] = {{"indentation", 1e-6}};
-    expect_outline_error(j, {"die", "hollow-cylinder"});
+    expect_error(j, {"die", "hollow-cylinder"});
   }
 } // namespace axisym

@@ -27,7 +27,9 @@
 
 namespace
 {
-  nlohmann::json fields_to_json(const axisym::Problem &problem, const rfm::RfmModel &model)
+  // The fields at the problem's sample points (any model with evaluate(r, z)).
+  template <typename Model>
+  nlohmann::json fields_to_json(const axisym::Problem &problem, const Model &model)
   {
     nlohmann::json out = nlohmann::json::array();
     if (problem.samples.empty())
@@ -47,6 +49,25 @@ namespace
                      {"sigma_tt", f.sigma(k, rfm::tt)},
                      {"sigma_rz", f.sigma(k, rfm::rz)}});
     return out;
+  }
+
+  // A degree sequence (rfm.tolerance): one line per degree on stderr.
+  void print_sequence(const std::vector<rfm::DegreeStep> &steps)
+  {
+    for (const rfm::DegreeStep &step : steps)
+      fmt::print(stderr, "rfm_solve:   p = {:2d}: indicator {:.3e} ({:.3f} s)\n", step.degree,
+                 step.indicator, step.seconds);
+  }
+
+  // ... and its record in the result's discretization.
+  void record_sequence(nlohmann::json &discretization, const double tolerance,
+                       const std::vector<rfm::DegreeStep> &steps)
+  {
+    nlohmann::json seq = nlohmann::json::array();
+    for (const rfm::DegreeStep &step : steps)
+      seq.push_back({{"degree", step.degree}, {"indicator", step.indicator}, {"seconds", step.seconds}});
+    discretization["tolerance"] = tolerance;
+    discretization["degree_sequence"] = seq;
   }
 
   nlohmann::json contact_to_json(const axisym::Problem &problem, const rfm::ContactResult &c)
@@ -125,9 +146,7 @@ namespace
         sequence = rfm::solve_outline_to_tolerance(problem, problem.rfm, *target_indicator);
         model = std::move(sequence->model);
         problem.rfm.degree = sequence->steps.empty() ? 2 : sequence->steps.back().degree;
-        for (const rfm::DegreeStep &step : sequence->steps)
-          fmt::print(stderr, "rfm_solve:   p = {:2d}: indicator {:.3e} ({:.3f} s)\n", step.degree,
-                     step.indicator, step.seconds);
+        print_sequence(sequence->steps);
       }
     else
       {
@@ -152,14 +171,7 @@ namespace
       {"section", "the outline as given (no mirroring)"},
       {"degree_policy", target_indicator ? "tolerance" : "fixed"}};
     if (sequence)
-      {
-        nlohmann::json seq = nlohmann::json::array();
-        for (const rfm::DegreeStep &step : sequence->steps)
-          seq.push_back(
-            {{"degree", step.degree}, {"indicator", step.indicator}, {"seconds", step.seconds}});
-        result["discretization"]["tolerance"] = *target_indicator;
-        result["discretization"]["degree_sequence"] = seq;
-      }
+      record_sequence(result["discretization"], *target_indicator, sequence->steps);
     result["timing"] = {{"assembly_s", model->assembly_seconds()},
                         {"solve_s", model->solve_seconds()}};
     const rfm::SolveSummary &s = model->summary();
@@ -183,25 +195,7 @@ namespace
                              {"reissner", phi.reissner},
                              {"indicator", phi.indicator()},
                              {"units", "J per radian"}};
-    nlohmann::json samples = nlohmann::json::array();
-    if (!problem.samples.empty())
-      {
-        const Eigen::Index n = static_cast<Eigen::Index>(problem.samples.size());
-        Eigen::VectorXd r(n), z(n);
-        for (Eigen::Index k = 0; k < n; ++k)
-          r[k] = problem.samples[k][0], z[k] = problem.samples[k][1];
-        const rfm::FieldValues f = model->evaluate(r, z);
-        for (Eigen::Index k = 0; k < n; ++k)
-          samples.push_back({{"r", r[k]},
-                             {"z", z[k]},
-                             {"u_r", f.u(k, 0)},
-                             {"u_z", f.u(k, 1)},
-                             {"sigma_rr", f.sigma(k, rfm::rr)},
-                             {"sigma_zz", f.sigma(k, rfm::zz)},
-                             {"sigma_tt", f.sigma(k, rfm::tt)},
-                             {"sigma_rz", f.sigma(k, rfm::rz)}});
-      }
-    result["samples"] = samples;
+    result["samples"] = fields_to_json(problem, *model);
     if (!output_path.empty())
       axisym::write_json_atomically(output_path, result);
     if (!vtu_directory.empty())
@@ -319,9 +313,7 @@ int main(int argc, char **argv)
           to_tolerance = rfm::solve_to_tolerance(problem, problem.rfm, *target_indicator);
           model_ptr = std::move(to_tolerance->model);
           problem.rfm.degree = to_tolerance->steps.empty() ? 2 : to_tolerance->steps.back().degree;
-          for (const rfm::DegreeStep &step : to_tolerance->steps)
-            fmt::print(stderr, "rfm_solve:   p = {:2d}: indicator {:.3e} ({:.3f} s)\n", step.degree,
-                       step.indicator, step.seconds);
+          print_sequence(to_tolerance->steps);
         }
       const int p = problem.rfm.degree;
       if (!target_indicator)
@@ -354,15 +346,7 @@ int main(int argc, char **argv)
         {"section", "upper half z in [0, length/2], symmetry plane z = 0"},
         {"degree_policy", target_indicator ? "tolerance" : "fixed"}};
       if (to_tolerance)
-        {
-          nlohmann::json seq = nlohmann::json::array();
-          for (const rfm::DegreeStep &step : to_tolerance->steps)
-            seq.push_back({{"degree", step.degree},
-                           {"indicator", step.indicator},
-                           {"seconds", step.seconds}});
-          result["discretization"]["tolerance"] = *target_indicator;
-          result["discretization"]["degree_sequence"] = seq;
-        }
+        record_sequence(result["discretization"], *target_indicator, to_tolerance->steps);
       double assembly_s = 0.0, solve_s = 0.0;
       if (problem.die)
         for (const auto &it : contact.history)
