@@ -126,6 +126,32 @@ namespace fem
       return std::chrono::duration<double>(Clock::now() - t0).count();
     }
 
+    /// Lets `write(path)` write a gmsh .msh file to a temporary path and reads it into
+    /// `triangulation`; the file is removed in every case.
+    template <typename Write>
+    void read_through_msh_file(Triangulation<2> &triangulation, const std::string &prefix,
+                               Write write)
+    {
+      static std::atomic<int> counter{0};
+      const std::filesystem::path path =
+        std::filesystem::temp_directory_path() /
+        (prefix + std::to_string(::getpid()) + "_" + std::to_string(counter++) + ".msh");
+      try
+        {
+          write(path.string());
+          GridIn<2> grid_in;
+          grid_in.attach_triangulation(triangulation);
+          std::ifstream in(path);
+          grid_in.read_msh(in);
+        }
+      catch (...)
+        {
+          std::filesystem::remove(path);
+          throw;
+        }
+      std::filesystem::remove(path);
+    }
+
     using Stress = std::array<double, 4>; // (rr, zz, tt, rz); strains in the same order
 
     /// e(u) = (du_r/dr, du_z/dz, u_r/r, du_r/dz + du_z/dr) from u and grad u (grad[i][j] =
@@ -375,24 +401,9 @@ namespace fem
 
       if (options_.mesh == FemOptions::MeshGenerator::gmsh)
         {
-          static std::atomic<int> counter{0};
-          const std::filesystem::path path =
-            std::filesystem::temp_directory_path() /
-            ("rfm_fem_" + std::to_string(::getpid()) + "_" + std::to_string(counter++) + ".msh");
-          write_gmsh_mesh(spec, path.string());
-          GridIn<2> grid_in;
-          grid_in.attach_triangulation(triangulation_);
-          try
-            {
-              std::ifstream in(path);
-              grid_in.read_msh(in);
-            }
-          catch (...)
-            {
-              std::filesystem::remove(path);
-              throw;
-            }
-          std::filesystem::remove(path);
+          read_through_msh_file(triangulation_, "rfm_fem_", [&](const std::string &path) {
+            write_gmsh_mesh(spec, path);
+          });
         }
       else
         {
@@ -445,25 +456,10 @@ namespace fem
       OutlineMeshSpec spec;
       spec.cells_on_shortest_edge = options_.outline_cells_on_shortest_edge;
 
-      static std::atomic<int> counter{0};
-      const std::filesystem::path path =
-        std::filesystem::temp_directory_path() /
-        ("rfm_fem_outline_" + std::to_string(::getpid()) + "_" + std::to_string(counter++) +
-         ".msh");
-      const OutlineMeshInfo info = write_outline_gmsh_mesh(outline, spec, path.string());
-      GridIn<2> grid_in;
-      grid_in.attach_triangulation(triangulation_);
-      try
-        {
-          std::ifstream in(path);
-          grid_in.read_msh(in);
-        }
-      catch (...)
-        {
-          std::filesystem::remove(path);
-          throw;
-        }
-      std::filesystem::remove(path);
+      OutlineMeshInfo info;
+      read_through_msh_file(triangulation_, "rfm_fem_outline_", [&](const std::string &path) {
+        info = write_outline_gmsh_mesh(outline, spec, path);
+      });
       base_mesh_size_ = info.base_mesh_size;
       base_mesh_subdivided_ = info.subdivided;
       n_base_cells_ = triangulation_.n_active_cells();

@@ -1,5 +1,6 @@
 #include "fem_reference/axisymmetric_fem.h"
 
+#include "problem/test_problems.h"
 #include "verification/lame_exact.h"
 
 #include <gtest/gtest.h>
@@ -277,19 +278,12 @@ namespace fem
 
   // Thick sphere a = 0.1 < R < b = 0.2 (DESIGN.md 7.1): the quarter annulus with the equator
   // symmetry plane and the axis, inner pressure p_i (and outer p_o, see below).
-  const char *const sphere_json = R"({
-    "geometry": {"outline": [
-      {"start": [0.1, 0.0]},
-      {"line_to": [0.2, 0.0], "part": "equator"},
-      {"arc_to": [0.0, 0.2], "center": [0.0, 0.0], "part": "outer"},
-      {"line_to": [0.0, 0.1], "part": "axis"},
-      {"arc_to": [0.1, 0.0], "center": [0.0, 0.0], "part": "inner"}]},
-    "boundary": {"equator": {"symmetry": true}, "inner": {"pressure": 1.0e7}},
-    "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3},
-    "samples": [[0.15, 0.0], [0.1, 0.1], [0.0, 0.15], [0.2, 0.0],
-                [0.17320508075688773, 0.1]],
-    "fem": {"degree": 2, "refinements": 2}
-  })";
+  const std::string sphere_json = [] {
+    nlohmann::json j = axisym::testing::thick_sphere();
+    j["samples"] = {{0.15, 0.0}, {0.1, 0.1}, {0.0, 0.15}, {0.2, 0.0}, {0.17320508075688773, 0.1}};
+    j["fem"] = {{"degree", 2}, {"refinements", 2}};
+    return j.dump();
+  }();
 
   // The sphere's sector 0 <= polar angle from the equator <= 60 degrees: the cone
   // phi = 60 degrees is an inclined symmetry edge (u.n = 0 with n = (-sin 60, cos 60)),
@@ -450,7 +444,7 @@ namespace fem
   // with straight-sided cells the geometry error takes over.
   TEST(AxisymmetricFemOutline, SphereQ2ConvergesAtItsNominalOrdersOnCurvedBoundaries)
   {
-    const axisym::Problem p = outline_problem(sphere_json);
+    const axisym::Problem p = outline_problem(sphere_json.c_str());
     const ThickSphere exact;
     std::vector<Errors> e;
     FemResult finest;
@@ -501,7 +495,7 @@ namespace fem
   // does not converge at all (3 % stress error at every level).
   TEST(AxisymmetricFemOutline, SphereWithoutCurvedCellsLosesTheOrder)
   {
-    const axisym::Problem p = outline_problem(sphere_json);
+    const axisym::Problem p = outline_problem(sphere_json.c_str());
     const ThickSphere exact;
     using Geometry = FemOptions::OutlineGeometry;
     for (const Geometry g : {Geometry::straight_cells, Geometry::coarse_polygon})

@@ -1,57 +1,37 @@
 // fem_solve through its command line (FEM_SOLVE is the path of the executable under test):
 // an outline problem end to end, --vtu into a directory that does not exist yet, and the
 // input errors of the outline path (exit 2, message naming the field, nothing written).
+#include "problem/test_problems.h"
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
-#include <array>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <sstream>
-#include <sys/wait.h>
 #include <unistd.h>
 
 namespace
 {
   namespace fs = std::filesystem;
 
-  struct Outcome
-  {
-    int status;
-    std::string err;
-  };
+  using Outcome = axisym::testing::CommandOutcome;
 
   Outcome run(const std::string &args)
   {
-    const std::string cmd = std::string(FEM_SOLVE) + " " + args + " 2>&1 >/dev/null";
-    std::unique_ptr<FILE, int (*)(FILE *)> pipe(popen(cmd.c_str(), "r"), pclose);
-    std::string out;
-    std::array<char, 512> buf{};
-    while (fgets(buf.data(), buf.size(), pipe.get()))
-      out += buf.data();
-    const int raw = pclose(pipe.release());
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
+    return axisym::testing::run_command(std::string(FEM_SOLVE) + " " + args);
   }
 
   // The thick sphere of DESIGN.md 7.1 (quarter annulus, inner pressure), level 1.
   nlohmann::json sphere()
   {
-    return nlohmann::json::parse(R"({
-      "geometry": {"outline": [
-        {"start": [0.1, 0.0]},
-        {"line_to": [0.2, 0.0], "part": "equator"},
-        {"arc_to": [0.0, 0.2], "center": [0.0, 0.0], "part": "outer"},
-        {"line_to": [0.0, 0.1], "part": "axis"},
-        {"arc_to": [0.1, 0.0], "center": [0.0, 0.0], "part": "inner"}]},
-      "boundary": {"equator": {"symmetry": true}, "inner": {"pressure": 1.0e7}},
-      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3},
-      "samples": [[0.15, 0.0], [0.0, 0.15]],
-      "fem": {"degree": 2, "refinements": 1}
-    })");
+    nlohmann::json j = axisym::testing::thick_sphere();
+    j["samples"] = {{0.15, 0.0}, {0.0, 0.15}};
+    j["fem"] = {{"degree", 2}, {"refinements", 1}};
+    return j;
   }
 
   // A fresh scratch directory per test.

@@ -1,4 +1,5 @@
 #include "problem/problem.h"
+#include "problem/test_problems.h"
 
 #include <gtest/gtest.h>
 
@@ -106,17 +107,9 @@ namespace axisym
     // The thick spherical shell of DESIGN.md 7.1 (a quarter annulus touching the axis).
     nlohmann::json sphere()
     {
-      return nlohmann::json::parse(R"({
-        "geometry": {"outline": [
-          {"start": [0.1, 0.0]},
-          {"line_to": [0.2, 0.0], "part": "equator"},
-          {"arc_to": [0.0, 0.2], "center": [0.0, 0.0], "part": "outer"},
-          {"line_to": [0.0, 0.1], "part": "axis"},
-          {"arc_to": [0.1, 0.0], "center": [0.0, 0.0], "part": "inner"}]},
-        "boundary": {"equator": {"symmetry": true}, "inner": {"pressure": 1.0e7}},
-        "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3},
-        "samples": [[0.1, 0.05], [0.0, 0.15]]
-      })");
+      nlohmann::json j = testing::thick_sphere();
+      j["samples"] = {{0.1, 0.05}, {0.0, 0.15}};
+      return j;
     }
   } // namespace
 

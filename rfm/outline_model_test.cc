@@ -1,5 +1,7 @@
 #include "rfm/outline_model.h"
 
+#include "problem/test_problems.h"
+
 #include <gtest/gtest.h>
 
 namespace rfm
@@ -8,17 +10,8 @@ namespace rfm
   {
     // Thick spherical shell a = 0.1, b = 0.2 under inner pressure p (DESIGN.md 7.1): a quarter
     // annulus with the equator (symmetry) and the axis. Exact (Lame, spherical):
-    // sigma_RR = A - B / R^3, sigma_phiphi = A + B / (2 R^3), A = p a^3 / (b^3 - a^3), B = A b^3.
-    const char *sphere_json = R"({
-      "geometry": {"outline": [
-        {"start": [0.1, 0.0]},
-        {"line_to": [0.2, 0.0], "part": "equator"},
-        {"arc_to": [0.0, 0.2], "center": [0.0, 0.0], "part": "outer"},
-        {"line_to": [0.0, 0.1], "part": "axis"},
-        {"arc_to": [0.1, 0.0], "center": [0.0, 0.0], "part": "inner"}]},
-      "boundary": {"equator": {"symmetry": true}, "inner": {"pressure": 1.0e7}},
-      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})";
-
+    // sigma_RR = A - B / R^3, sigma_phiphi = A + B / (2 R^3), A = p a^3 / (b^3 - a^3), B = A b^3
+    // (axisym::testing::thick_sphere()).
     double sphere_stress_error(const OutlineModel &m)
     {
       const double a = 0.1, b = 0.2, p = 1e7;
@@ -49,7 +42,7 @@ namespace rfm
   // -U = -1/2 p u_R(a) a^2 per radian, Phi_C = Phi_R (mixed), Phi_L above.
   TEST(OutlineModel, ThickSphereConvergesToLamesSolution)
   {
-    const axisym::Problem problem = axisym::parse_problem(nlohmann::json::parse(sphere_json));
+    const axisym::Problem problem = axisym::parse_problem(axisym::testing::thick_sphere());
     const double a = 0.1, b = 0.2, p = 1e7, e = 2.1e11, nu = 0.3;
     const double A = p * a * a * a / (b * b * b - a * a * a), B = A * b * b * b;
     const double u_a = ((1 - 2 * nu) * A * a + (1 + nu) * B / (2 * a * a)) / e;

@@ -1,5 +1,7 @@
 #include "rfm/outline_structures.h"
 
+#include "problem/test_problems.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -15,15 +17,7 @@ namespace rfm
     // center, an inclined free line, a clamped end).
     axisym::Problem sphere(const nlohmann::json &outer)
     {
-      nlohmann::json j = nlohmann::json::parse(R"({
-        "geometry": {"outline": [
-          {"start": [0.1, 0.0]},
-          {"line_to": [0.2, 0.0], "part": "equator"},
-          {"arc_to": [0.0, 0.2], "center": [0.0, 0.0], "part": "outer"},
-          {"line_to": [0.0, 0.1], "part": "axis"},
-          {"arc_to": [0.1, 0.0], "center": [0.0, 0.0], "part": "inner"}]},
-        "boundary": {"equator": {"symmetry": true}, "inner": {"pressure": 1.0e7}},
-        "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})");
+      nlohmann::json j = axisym::testing::thick_sphere();
       if (!outer.empty())
         j["boundary"]["outer"] = outer;
       return axisym::parse_problem(j);

@@ -2,37 +2,25 @@
 // say on stderr what is wrong (a fragment naming the field or the rule), and write
 // nothing; a numerical failure exits 3 with the history written. RFM_SOLVE is the path of
 // the executable under test.
+#include "problem/test_problems.h"
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
-#include <sys/wait.h>
 
 namespace
 {
   namespace fs = std::filesystem;
 
-  struct Outcome
-  {
-    int status;
-    std::string err;
-  };
+  using Outcome = axisym::testing::CommandOutcome;
 
   Outcome run(const std::string &args)
   {
-    const std::string cmd = std::string(RFM_SOLVE) + " " + args + " 2>&1 >/dev/null";
-    std::unique_ptr<FILE, int (*)(FILE *)> pipe(popen(cmd.c_str(), "r"), pclose);
-    std::string out;
-    std::array<char, 512> buf{};
-    while (fgets(buf.data(), buf.size(), pipe.get()))
-      out += buf.data();
-    const int raw = pclose(pipe.release());
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
+    return axisym::testing::run_command(std::string(RFM_SOLVE) + " " + args);
   }
 
   nlohmann::json valid()
@@ -87,15 +75,7 @@ namespace
   // The thick sphere of DESIGN.md 7.1 in the outline form, changed at one JSON pointer.
   std::string sphere_with(const std::string &pointer, const nlohmann::json &value)
   {
-    nlohmann::json j = nlohmann::json::parse(R"({
-      "geometry": {"outline": [
-        {"start": [0.1, 0.0]},
-        {"line_to": [0.2, 0.0], "part": "equator"},
-        {"arc_to": [0.0, 0.2], "center": [0.0, 0.0], "part": "outer"},
-        {"line_to": [0.0, 0.1], "part": "axis"},
-        {"arc_to": [0.1, 0.0], "center": [0.0, 0.0], "part": "inner"}]},
-      "boundary": {"equator": {"symmetry": true}, "inner": {"pressure": 1.0e7}},
-      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})");
+    nlohmann::json j = axisym::testing::thick_sphere();
     j[nlohmann::json::json_pointer(pointer)] = value;
     return j.dump();
   }

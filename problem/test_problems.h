@@ -1,0 +1,50 @@
+// Test support shared by the unit tests of problem/, rfm/ and fem_reference/ (header only,
+// never linked into a solver): the thick sphere of DESIGN.md 7.1 as a problem file, and a
+// command-line runner for the solvers' CLI tests.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <sys/wait.h>
+
+namespace axisym::testing
+{
+  /// The thick spherical shell a = 0.1 m, b = 0.2 m of DESIGN.md 7.1: a quarter annulus with
+  /// the equator (symmetry) and the axis, inner pressure 10 MPa, steel. Tests add samples,
+  /// solver settings or other conditions to it.
+  inline nlohmann::json thick_sphere()
+  {
+    return nlohmann::json::parse(R"({
+      "geometry": {"outline": [
+        {"start": [0.1, 0.0]},
+        {"line_to": [0.2, 0.0], "part": "equator"},
+        {"arc_to": [0.0, 0.2], "center": [0.0, 0.0], "part": "outer"},
+        {"line_to": [0.0, 0.1], "part": "axis"},
+        {"arc_to": [0.1, 0.0], "center": [0.0, 0.0], "part": "inner"}]},
+      "boundary": {"equator": {"symmetry": true}, "inner": {"pressure": 1.0e7}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})");
+  }
+
+  struct CommandOutcome
+  {
+    int status;      ///< exit status (-1 if the command did not exit normally)
+    std::string err; ///< what it wrote on stderr (stdout is discarded)
+  };
+
+  /// Runs a shell command line and collects its exit status and stderr.
+  inline CommandOutcome run_command(const std::string &command)
+  {
+    const std::string cmd = command + " 2>&1 >/dev/null";
+    std::unique_ptr<FILE, int (*)(FILE *)> pipe(popen(cmd.c_str(), "r"), pclose);
+    std::string out;
+    std::array<char, 512> buf{};
+    while (fgets(buf.data(), buf.size(), pipe.get()))
+      out += buf.data();
+    const int raw = pclose(pipe.release());
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
+  }
+} // namespace axisym::testing
