@@ -386,7 +386,7 @@ namespace axisym
                              {"degree", "tolerance", "max_degree", "extra_gauss_points",
                               "n_cells_r", "n_cells_z",
                               "n_graded_layers", "grading_ratio", "edge_modes", "edge_cutoff",
-                              "edge_extra_points"});
+                              "edge_extra_points", "edge_mode_degree"});
         if (r.has("degree") && r.has("tolerance"))
           fail("rfm", top.at("rfm"), "give rfm.degree (fixed p) or rfm.tolerance (p rises "
                                      "until the indicator is below it), not both");
@@ -426,6 +426,8 @@ namespace axisym
             [](double x) { return x > 0 && x < 1; });
         if (r.has("edge_extra_points"))
           p.rfm.edge_extra_points = r.integer("edge_extra_points", ranges::rfm_edge_extra_points);
+        if (r.has("edge_mode_degree"))
+          p.rfm.edge_mode_degree = r.integer("edge_mode_degree", ranges::rfm_edge_mode_degree);
       }
     if (top.has("fem"))
       {

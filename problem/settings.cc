@@ -27,6 +27,7 @@ namespace axisym
     ranges::rfm_n_graded_layers.check(n_graded_layers);
     ranges::rfm_edge_modes.check(edge_modes);
     ranges::rfm_edge_extra_points.check(edge_extra_points);
+    ranges::rfm_edge_mode_degree.check(edge_mode_degree);
     ranges::rfm_max_degree.check(max_degree);
     if (tolerance && !(*tolerance >= min_tolerance && *tolerance <= 0.1))
       throw InputError("rfm.tolerance = " + std::to_string(*tolerance) +

@@ -34,6 +34,8 @@ namespace axisym
     inline constexpr IntRange rfm_edge_modes{"rfm.edge_modes", 0, 4,
                                              "the odd modes 1, 3, ..., 2k - 1; 0 is off"};
     inline constexpr IntRange rfm_edge_extra_points{"rfm.edge_extra_points", 0, 40};
+    inline constexpr IntRange rfm_edge_mode_degree{
+      "rfm.edge_mode_degree", 0, 6, "each edge mode times the monomials of this total degree"};
     inline constexpr IntRange fem_degree{"fem.degree", 1, 4, "FE_Q(p)"};
     inline constexpr IntRange fem_refinements{"fem.refinements", 0, 6,
                                               "level 6 already has 131072 cells"};
@@ -70,6 +72,9 @@ namespace axisym
     double edge_cutoff = 0.9;
     /// Gauss points per direction of the near-edge rule = p + extra_gauss_points + this.
     int edge_extra_points = 6;
+    /// Each edge mode is multiplied by the monomials of the scaled offsets from the edge up
+    /// to this total degree ((d + 1)(d + 2)/2 columns per mode; 0: the modes alone).
+    int edge_mode_degree = 2;
 
     /// Throws InputError naming the field, the value and the rule.
     void validate() const;

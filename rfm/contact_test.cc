@@ -62,15 +62,22 @@ namespace rfm
     EXPECT_GE(r.half_width_range->second, r.final.half_width);
   }
 
-  // Barber's principle: the maximizer of P(c) satisfies the conditions too, and its
-  // force is not below that of any iterate.
-  TEST(Contact, MaxForceAgreesWithIteration)
+  // Barber's principle: the maximizer of P(c) is the zone that edge-intensity returns (the
+  // stationary point of P next to the root of K), and no iterate of the paper's iteration
+  // has a larger force. The iteration itself stops where the trace conditions switch, which
+  // follows the sign of K: its root carries the bias of the n = 1 coefficient (measured at
+  // this p = 6: 2.3 % above the maximizer), so it is only checked to lie near.
+  TEST(Contact, MaxForceAgreesWithEdgeIntensityAndBoundsTheIteration)
   {
-    const Problem pi = die_problem(1e-6, "iterate"), pm = die_problem(1e-6, "max-force");
+    const Problem pi = die_problem(1e-6, "iterate"), pm = die_problem(1e-6, "max-force"),
+                  pe = die_problem(1e-6, "edge-intensity");
     const ContactResult ri = solve_contact(pi, pi.rfm, ContactOptions{});
     const ContactResult rm = solve_contact(pm, pm.rfm, ContactOptions{});
-    ASSERT_TRUE(ri.success && rm.success);
-    EXPECT_NEAR(rm.final.half_width / ri.final.half_width, 1.0, 0.01) << rm.message;
+    const ContactResult re = solve_contact(pe, pe.rfm, ContactOptions{});
+    ASSERT_TRUE(ri.success && rm.success && re.success);
+    EXPECT_NEAR(rm.final.half_width / re.final.half_width, 1.0, 2e-3) << rm.message;
+    EXPECT_NEAR(rm.final.force / re.final.force, 1.0, 1e-6);
+    EXPECT_NEAR(rm.final.half_width / ri.final.half_width, 1.0, 0.03) << ri.message;
     for (const auto &it : ri.history)
       EXPECT_LE(it.force, rm.final.force * (1 + 1e-9)) << "c = " << it.half_width;
   }
@@ -97,18 +104,21 @@ namespace rfm
   }
 
   // Edge intensity (DESIGN.md 4.4): K < 0 for a zone too short, K > 0 for one too long; K
-  // passes its root linearly while P(c) is stationary there (Barber), and the root search
-  // takes a handful of solves.
+  // passes its root linearly, P(c) is stationary next to it (Barber), and edge-intensity
+  // returns that stationary point in a handful of solves.
   TEST(Contact, EdgeIntensityChangesSignLinearlyWhereTheForceIsStationary)
   {
     const Problem p = die_problem(1e-6, "edge-intensity");
     const ContactResult r = solve_contact(p, p.rfm, ContactOptions{});
     ASSERT_TRUE(r.success) << r.message;
+    ASSERT_TRUE(r.edge_intensity_root.has_value());
     EXPECT_LE(r.history.size(), 8u);
-    const double c = r.final.half_width, a = 0.2;
+    const double c = r.final.half_width, root = *r.edge_intensity_root, a = 0.2;
     EXPECT_GT(c / a, 0.5);
     EXPECT_LT(c / a, 0.54);
-    EXPECT_LT(std::abs(r.final.edge_intensity), 1e-3 * 3e4) << "K at the root";
+    // The root of the n = 1 coefficient lies near the stationary point of P, not on it:
+    // unresolved edge terms leak into a_1 (measured at this p = 6: 0.7 % of c apart).
+    EXPECT_NEAR(root / c, 1.0, 0.03);
 
     auto at = [&](double cc) {
       Problem q = p;
@@ -119,29 +129,34 @@ namespace rfm
       return f.final;
     };
     const double h = 0.02 * a;
-    const ContactIterate lo = at(c - h), hi = at(c + h), short_zone = at(0.45 * a),
-                         long_zone = at(0.6 * a);
+    const ContactIterate at_root = at(root), lo = at(root - h), hi = at(root + h),
+                         short_zone = at(0.45 * a), long_zone = at(0.6 * a);
     EXPECT_LT(short_zone.edge_intensity, 0.0);
     EXPECT_GT(long_zone.edge_intensity, 0.0);
     // The reciprocal-work integral with the n = -1 mode, an independent extraction, agrees
-    // away from the root (it leaves out the hoop terms; measured at this p = 6: 8 % at 0.45 a,
-    // 11 % at 0.6 a; at p = 8: 4 % and 1.6 %).
+    // away from the root (it leaves out the hoop terms; measured at this p = 6: 11 % at
+    // 0.45 a, 5 % at 0.6 a).
     for (const ContactIterate &it : {short_zone, long_zone})
       EXPECT_NEAR(it.edge_intensity_reciprocal_work / it.edge_intensity, 1.0, 0.15)
         << "c = " << it.half_width;
     EXPECT_LT(lo.edge_intensity, 0.0);
     EXPECT_GT(hi.edge_intensity, 0.0);
+    // The root is located to root_tolerance = 1e-3 a: K there is within 2.5 % of the jump
+    // across +-0.02 a.
+    EXPECT_LT(std::abs(at_root.edge_intensity), 0.025 * (hi.edge_intensity - lo.edge_intensity))
+      << "K at its root";
     // Linear: the midpoint value is the root's (0) to 5 % of the jump across.
     EXPECT_LT(std::abs(0.5 * (lo.edge_intensity + hi.edge_intensity)),
               0.05 * (hi.edge_intensity - lo.edge_intensity));
-    // Stationary P: both neighbours are below P(c) by about (3/2)(h/c)^2 at most, and the
-    // difference across the root is far below the one across 0.45 a.
-    EXPECT_LE(lo.force, r.final.force * (1 + 1e-6));
-    EXPECT_LE(hi.force, r.final.force * (1 + 1e-6));
-    EXPECT_GT(lo.force, r.final.force * (1 - 3.0 * std::pow(h / c, 2)));
-    EXPECT_GT(hi.force, r.final.force * (1 - 3.0 * std::pow(h / c, 2)));
+    // Stationary P at c: both neighbours c -+ h are below P(c), by about (3/2)(h/c)^2 at
+    // most, and the difference across c is far below the one across 0.45 a.
+    const ContactIterate below = at(c - h), above = at(c + h);
+    EXPECT_LE(below.force, r.final.force * (1 + 1e-9));
+    EXPECT_LE(above.force, r.final.force * (1 + 1e-9));
+    EXPECT_GT(below.force, r.final.force * (1 - 3.0 * std::pow(h / c, 2)));
+    EXPECT_GT(above.force, r.final.force * (1 - 3.0 * std::pow(h / c, 2)));
     const ContactIterate s_lo = at(0.45 * a - h), s_hi = at(0.45 * a + h);
-    EXPECT_LT(std::abs(hi.force - lo.force), 0.1 * std::abs(s_hi.force - s_lo.force));
+    EXPECT_LT(std::abs(above.force - below.force), 0.1 * std::abs(s_hi.force - s_lo.force));
   }
 
   // Without the n = 1 mode there is no K: edge-intensity says so (a numerical failure).

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -72,16 +73,30 @@ namespace rfm
     if (!edges.empty() && options_.edge_modes > 0)
       {
         const double r_e = edges[0][0], z_e = edges[0][1];
-        const double rho_max =
-          std::min({z_e - s.z_min(), s.z_max() - z_e, s.r_max() - s.r_min()});
+        // The support stays off the inner side and the mid-plane (kinematic there), and
+        // off the end z = z_max unless every part of it is a traction part: then it may
+        // cross the end, clipped (edge_modes.h), so that an edge near the end keeps a wide
+        // cutoff (with a - c = 0.1 a the unclipped rho_0 was 0.018 m).
+        bool end_traction = true;
+        for (const auto &p : s.parts())
+          end_traction &= p.side != Side::top || p.condition == Condition::traction;
+        const double room = s.z_max() - z_e;
+        const double rho_max = std::min({z_e - s.z_min(), s.r_max() - s.r_min(),
+                                         end_traction ? std::numeric_limits<double>::infinity()
+                                                      : room});
         std::vector<int> modes;
         for (int k = 0; k < options_.edge_modes; ++k)
           modes.push_back(2 * k + 1);
 
-        enrichment_.emplace(r_e, z_e, options_.edge_cutoff * rho_max, modes, material);
+        const double rho_0 = options_.edge_cutoff * rho_max;
+        // The end factor of the stress columns applies whenever the end is free, not only
+        // when the support reaches it, so that the space, K(c) and P(c) change smoothly
+        // with c (a switch at rho_0 = a - c put a kink into both).
+        const double end_z = end_traction ? s.z_max() : std::numeric_limits<double>::infinity();
+        enrichment_.emplace(r_e, z_e, rho_0, modes, material, options_.edge_mode_degree, end_z);
         const int n_edge = n_gauss + options_.edge_extra_points;
         edge_quadrature_ =
-          half_disc_gauss(r_e, z_e, enrichment_->cutoff_radius(), n_edge, n_edge);
+          half_disc_gauss(r_e, z_e, rho_0, n_edge, n_edge, std::min(end_z, s.z_max()));
         edge_measure_ = weight_factor_ * edge_quadrature_.weights.cwiseProduct(edge_quadrature_.r);
         edge_basis_values_ = basis_.evaluate(edge_quadrature_.r, edge_quadrature_.z);
         edge_stress_ = structures_.stress(edge_quadrature_.r, edge_quadrature_.z);

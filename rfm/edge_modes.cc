@@ -58,28 +58,37 @@ namespace rfm
 
   EdgeEnrichment::EdgeEnrichment(const double r_edge, const double z_edge,
                                  const double cutoff_radius, std::vector<int> modes,
-                                 const Material &material)
+                                 const Material &material, const int multiplier_degree,
+                                 const double end_z)
     : r_edge_(r_edge)
     , z_edge_(z_edge)
     , cutoff_radius_(cutoff_radius)
     , modes_(std::move(modes))
     , material_(material)
+    , multiplier_degree_(multiplier_degree)
+    , end_z_(end_z)
   {
+    if (!(end_z > z_edge))
+      throw std::invalid_argument("EdgeEnrichment: the clipping end must lie beyond the edge");
+    if (multiplier_degree < 0)
+      throw std::invalid_argument("EdgeEnrichment: multiplier degree must be >= 0");
     if (!(cutoff_radius > 0.0))
       throw std::invalid_argument("EdgeEnrichment: cutoff radius must be positive");
     for (const int n : modes_)
       if (n < 1 || n % 2 == 0)
         throw std::invalid_argument("EdgeEnrichment: modes must be odd and >= 1 (even modes "
                                     "are polynomials, already in the basis)");
+
   }
 
   Eigen::Index EdgeEnrichment::singular_column() const
   {
     for (std::size_t j = 0; j < modes_.size(); ++j)
       if (modes_[j] == 1)
-        return static_cast<Eigen::Index>(j);
+        return static_cast<Eigen::Index>(j) * columns_per_mode();
     return -1;
   }
+
 
   EdgeColumns EdgeEnrichment::evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
                                        const Eigen::Ref<const Eigen::VectorXd> &z) const
@@ -92,6 +101,9 @@ namespace rfm
       s.setZero(n, m);
     for (auto &u : out.u)
       u.setZero(n, m);
+    const int d = multiplier_degree_;
+    std::vector<double> xi_pow(d + 1), eta_pow(d + 1);
+    std::vector<EdgeModeValue> v(modes_.size());
     for (Eigen::Index k = 0; k < n; ++k)
       {
         const double dr = r[k] - r_edge_, dz = z[k] - z_edge_;
@@ -102,18 +114,43 @@ namespace rfm
         // grad chi = chi'(rho) (r - r_edge, z - z_edge) / rho (zero at rho = 0: chi'(0) = 0).
         const double chi_r = rho > 0.0 ? chi.derivative * dr / rho : 0.0;
         const double chi_z = rho > 0.0 ? chi.derivative * dz / rho : 0.0;
-        for (Eigen::Index j = 0; j < m; ++j)
+        const double xi = dz / cutoff_radius_, eta = dr / cutoff_radius_;
+        // The stress columns' end factor (1 without clipping).
+        const double g = std::isfinite(end_z_) ? (end_z_ - z[k]) / (end_z_ - z_edge_) : 1.0;
+        xi_pow[0] = eta_pow[0] = 1.0;
+        for (int i = 1; i <= d; ++i)
           {
-            const EdgeModeValue v = edge_mode(modes_[j], r[k], z[k], r_edge_, z_edge_, material_);
-            for (int c = 0; c < n_stress_components; ++c)
-              out.stress[c](k, j) = chi.value * v.sigma[c];
-            out.u[0](k, j) = chi.value * v.u_r;
-            out.u[1](k, j) = chi.value * v.u_z;
-            // e(chi u) = chi e(u) + sym(grad chi (x) u) in engineering components.
-            out.strain[rr](k, j) = chi.value * v.strain[rr] + chi_r * v.u_r;
-            out.strain[zz](k, j) = chi.value * v.strain[zz] + chi_z * v.u_z;
-            out.strain[tt](k, j) = chi.value * v.strain[tt];
-            out.strain[rz](k, j) = chi.value * v.strain[rz] + chi_z * v.u_r + chi_r * v.u_z;
+            xi_pow[i] = xi_pow[i - 1] * xi;
+            eta_pow[i] = eta_pow[i - 1] * eta;
+          }
+        for (std::size_t j = 0; j < modes_.size(); ++j)
+          v[j] = edge_mode(modes_[j], r[k], z[k], r_edge_, z_edge_, material_);
+        for (std::size_t j = 0; j < modes_.size(); ++j)
+          {
+            Eigen::Index col = static_cast<Eigen::Index>(j) * columns_per_mode();
+            for (int deg = 0; deg <= d; ++deg)
+              for (int b = 0; b <= deg; ++b, ++col)
+                {
+                  // Weight w = chi xi^a eta^b (a + b = deg) and its gradient.
+                  const int a = deg - b;
+                  const double mono = xi_pow[a] * eta_pow[b];
+                  const double mono_z =
+                    a > 0 ? a * xi_pow[a - 1] * eta_pow[b] / cutoff_radius_ : 0.0;
+                  const double mono_r =
+                    b > 0 ? b * xi_pow[a] * eta_pow[b - 1] / cutoff_radius_ : 0.0;
+                  const double w = chi.value * mono;
+                  const double w_r = chi_r * mono + chi.value * mono_r;
+                  const double w_z = chi_z * mono + chi.value * mono_z;
+                  for (int c = 0; c < n_stress_components; ++c)
+                    out.stress[c](k, col) = g * w * v[j].sigma[c];
+                  out.u[0](k, col) = w * v[j].u_r;
+                  out.u[1](k, col) = w * v[j].u_z;
+                  // e(w u) = w e(u) + sym(grad w (x) u) in engineering components.
+                  out.strain[rr](k, col) = w * v[j].strain[rr] + w_r * v[j].u_r;
+                  out.strain[zz](k, col) = w * v[j].strain[zz] + w_z * v[j].u_z;
+                  out.strain[tt](k, col) = w * v[j].strain[tt];
+                  out.strain[rz](k, col) = w * v[j].strain[rz] + w_z * v[j].u_r + w_r * v[j].u_z;
+                }
           }
       }
     return out;

@@ -11,7 +11,7 @@ namespace rfm
   namespace
   {
     constexpr double r_e = 0.2, z_e = 0.11; // edge at (R2, c)
-    const Material steel{2.1e11, 0.3};
+    const Material steel{2.1e11, 0.3, {}, {}};
 
     // A point at polar (rho, theta) of the local frame: x = c - z, y = R2 - r.
     std::pair<double, double> at(double rho, double theta)
@@ -77,6 +77,37 @@ namespace rfm
         }
   }
 
+  // A support clipped at a traction-free end: the stress columns (every mode and multiplier)
+  // carry no traction on the end and stay free on the free face; at the edge they are the
+  // unclipped columns.
+  TEST(EdgeModes, ClippedColumnsAreFreeOnTheEnd)
+  {
+    const double end_z = z_e + 0.02, rho_0 = 0.09;
+    const EdgeEnrichment clipped(r_e, z_e, rho_0, {1, 3}, steel, 2, end_z);
+    const EdgeEnrichment plain(r_e, z_e, rho_0, {1, 3}, steel, 2);
+    ASSERT_EQ(clipped.n_columns(), 12);
+    const Eigen::VectorXd r_end = Eigen::VectorXd::LinSpaced(9, r_e - 0.08, r_e);
+    const EdgeColumns on_end = clipped.evaluate(r_end, Eigen::VectorXd::Constant(9, end_z));
+    const Eigen::VectorXd z_free = Eigen::VectorXd::LinSpaced(9, z_e + 1e-3, end_z);
+    const EdgeColumns on_free = clipped.evaluate(Eigen::VectorXd::Constant(9, r_e), z_free);
+    const double scale = plain.evaluate(Eigen::VectorXd::Constant(1, r_e - 0.01),
+                                        Eigen::VectorXd::Constant(1, z_e))
+                           .stress[rr]
+                           .cwiseAbs()
+                           .maxCoeff();
+    EXPECT_LT(on_end.stress[zz].cwiseAbs().maxCoeff(), 1e-14 * scale);
+    EXPECT_LT(on_end.stress[rz].cwiseAbs().maxCoeff(), 1e-14 * scale);
+    EXPECT_GT(on_end.u[0].cwiseAbs().maxCoeff(), 0.0); // displacements are not clipped
+    EXPECT_LT(on_free.stress[rr].cwiseAbs().maxCoeff(), 1e-12 * scale);
+    EXPECT_LT(on_free.stress[rz].cwiseAbs().maxCoeff(), 1e-12 * scale);
+    // Near the edge (rho = 1e-6) the stress factor is 1 to O(rho).
+    const Eigen::VectorXd r1 = Eigen::VectorXd::Constant(1, r_e - 1e-6);
+    const Eigen::VectorXd z1 = Eigen::VectorXd::Constant(1, z_e);
+    const EdgeColumns a = clipped.evaluate(r1, z1), b = plain.evaluate(r1, z1);
+    EXPECT_NEAR(a.stress[rr](0, 0) / b.stress[rr](0, 0), 1.0, 1e-12);
+    EXPECT_EQ(a.u[0](0, 0), b.u[0](0, 0));
+  }
+
   TEST(EdgeModes, CutoffIsSmoothStep)
   {
     const double rho_0 = 0.08;
@@ -132,7 +163,7 @@ namespace rfm
     const double rho_0 = 0.08;
     const Eigen::Matrix4d cm = steel.compliance();
     const Quadrature2D q = half_disc_gauss(r_e, z_e, rho_0, 24, 24);
-    for (const auto [m, n] : {std::pair{1, 1}, std::pair{1, 3}, std::pair{3, 3}})
+    for (const auto &[m, n] : {std::pair{1, 1}, std::pair{1, 3}, std::pair{3, 3}})
       {
         double quad = 0.0;
         for (Eigen::Index k = 0; k < q.n_points(); ++k)

@@ -63,8 +63,12 @@ namespace rfm
     const bool edge = !contact_edges(s).empty() && options.edge_modes > 0;
     const double n_edge_pts = n_gauss + options.edge_extra_points;
     const double n_eq = edge ? 2.0 * n_edge_pts * n_edge_pts : 0.0;
-    const double n_s = 4 * n + (edge ? options.edge_modes : 0);
-    const double n_u = 2 * n + (edge ? options.edge_modes : 0);
+    const double n_edge_columns =
+      edge ? options.edge_modes * (options.edge_mode_degree + 1.0) *
+               (options.edge_mode_degree + 2.0) / 2.0
+           : 0.0;
+    const double n_s = 4 * n + n_edge_columns;
+    const double n_u = 2 * n + n_edge_columns;
     return 8.0 * (14.0 * n_q * n + 20.0 * n_eq * n_s + 2.0 * n_s * n_s + 3.0 * n_s * n_u +
                   2.0 * n_u * n_u);
   }

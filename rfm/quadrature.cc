@@ -155,29 +155,49 @@ namespace rfm
   }
 
   Quadrature2D half_disc_gauss(const double r_c, const double z_c, const double rho_0,
-                               const int n_radial, const int n_angular)
+                               const int n_radial, const int n_angular, const double z_max)
   {
     const GaussRule1D gs = gauss_legendre(n_radial), gt = gauss_legendre(n_angular);
+    // Angular panels [theta_0, theta_1] with the ray length of each: rho_0, or the distance
+    // to the line z = z_max beyond the angle where that is shorter.
+    struct Panel
+    {
+      double theta_0, theta_1;
+      bool clipped;
+    };
+    std::vector<Panel> panels{{0.0, 0.5 * M_PI, false}};
+    const double room = z_max - z_c;
+    if (room < rho_0)
+      {
+        if (!(room > 0.0))
+          throw std::invalid_argument("half_disc_gauss: the centre must lie below z_max");
+        const double theta_star = M_PI - std::acos(room / rho_0);
+        panels.push_back({0.5 * M_PI, theta_star, false});
+        panels.push_back({theta_star, M_PI, true});
+      }
+    else
+      panels.push_back({0.5 * M_PI, M_PI, false});
     Quadrature2D q;
-    const Eigen::Index n = 2 * n_radial * n_angular;
+    const Eigen::Index n = static_cast<Eigen::Index>(panels.size()) * n_radial * n_angular;
     q.r.resize(n);
     q.z.resize(n);
     q.weights.resize(n);
     Eigen::Index k = 0;
-    for (int panel = 0; panel < 2; ++panel)
+    for (const Panel &panel : panels)
       for (int j = 0; j < n_angular; ++j)
         {
-          // theta in [panel pi/2, (panel + 1) pi/2]
-          const double theta = 0.25 * M_PI * (2 * panel + 1 + gt.nodes[j]);
-          const double w_theta = 0.25 * M_PI * gt.weights[j];
+          const double half = 0.5 * (panel.theta_1 - panel.theta_0);
+          const double theta = panel.theta_0 + half * (1.0 + gt.nodes[j]);
+          const double w_theta = half * gt.weights[j];
+          const double length = panel.clipped ? room / -std::cos(theta) : rho_0;
           for (int i = 0; i < n_radial; ++i, ++k)
             {
               const double s = 0.5 * (1.0 + gs.nodes[i]), w_s = 0.5 * gs.weights[i];
-              const double rho = rho_0 * s * s;
+              const double rho = length * s * s;
               q.r[k] = r_c - rho * std::sin(theta);
               q.z[k] = z_c - rho * std::cos(theta);
-              // dr dz = rho drho dtheta = rho_0 s^2 * 2 rho_0 s ds dtheta
-              q.weights[k] = 2.0 * rho_0 * rho_0 * s * s * s * w_s * w_theta;
+              // dr dz = rho drho dtheta = L s^2 * 2 L s ds dtheta
+              q.weights[k] = 2.0 * length * length * s * s * s * w_s * w_theta;
             }
         }
     return q;

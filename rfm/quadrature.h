@@ -7,6 +7,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <limits>
 #include <vector>
 
 namespace rfm
@@ -56,6 +57,10 @@ namespace rfm
   /// Integrands rho^(k/2) g(theta) with k >= -2 become polynomials in s: the rule is exact
   /// in rho for k/2 + 1 <= n_radial - 1 and converges exponentially in theta for smooth g.
   /// Weights are plain area weights dr dz, as in tensor_gauss.
+  /// With z_max < z_c + rho_0 the half disc is clipped at z = z_max: on the rays that meet
+  /// that line first, rho = L(theta) s^2 with L = (z_max - z_c) / (-cos theta), in a third
+  /// panel from the angle where L = rho_0 to pi (integrands stay polynomial in s).
   Quadrature2D half_disc_gauss(double r_c, double z_c, double rho_0, int n_radial,
-                               int n_angular);
+                               int n_angular,
+                               double z_max = std::numeric_limits<double>::infinity());
 } // namespace rfm

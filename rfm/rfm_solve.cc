@@ -89,6 +89,8 @@ namespace
                               : nlohmann::json(nullptr);
     if (c.half_width_range)
       out["half_width_range"] = {c.half_width_range->first, c.half_width_range->second};
+    if (c.edge_intensity_root)
+      out["edge_intensity_root"] = *c.edge_intensity_root;
     out["conditions"] = rfm::to_json(c.final, problem);
     // p: the trace -sigma_rr(R2, z); p_consistent: the consistent reactions (contact.h).
     nlohmann::json pressure = nlohmann::json::array();

@@ -18,9 +18,10 @@ namespace rfm
     DiscretizationOptions options;
     options.degree = 4;
     const DiscreteSpace space(structures, options, Material{});
-    // The die section has a contact edge at z = c: the n = 1, 3 edge modes are columns of
-    // both spaces and get random coefficients too.
-    ASSERT_EQ(space.n_edge_columns(), 2);
+    // The die section has a contact edge at z = c: the n = 1, 3 edge modes, each times the
+    // 6 monomials of degree <= 2, are columns of both spaces and get random coefficients too.
+    ASSERT_EQ(options.edge_mode_degree, 2);
+    ASSERT_EQ(space.n_edge_columns(), 2 * 6);
     std::srand(7);
     const RfmSolution sol(space, Material{}, 1e7 * Eigen::VectorXd::Random(space.n_stress_unknowns()),
                           1e-5 * Eigen::VectorXd::Random(space.n_displacement_unknowns()));
