@@ -118,6 +118,29 @@ namespace axisym
            temperature[1] != 0.0 || temperature[2] != 0.0;
   }
 
+  bool BodyLoads::thermal() const
+  {
+    return temperature[0] != 0.0 || temperature[1] != 0.0 || temperature[2] != 0.0;
+  }
+
+  std::array<double, 2> body_force(const BodyLoads &loads, const Material &material,
+                                   const double r, const double /*z*/)
+  {
+    if (!loads.body_force())
+      return {0.0, 0.0};
+    const double rho = material.density.value();
+    return {rho * loads.angular_velocity * loads.angular_velocity * r, -rho * loads.gravity};
+  }
+
+  double thermal_strain(const BodyLoads &loads, const Material &material, const double r,
+                        const double z)
+  {
+    if (!loads.thermal())
+      return 0.0;
+    const auto &t = loads.temperature;
+    return material.thermal_expansion.value() * (t[0] + t[1] * r + t[2] * z);
+  }
+
   const PartCondition &Body::condition_of_edge(const int i) const
   {
     return conditions.at(outline.edges().at(i).part);

@@ -91,7 +91,17 @@ namespace axisym
     double gravity = 0.0;                    ///< g [m/s^2]: f_z = -density g
     std::array<double, 3> temperature{{0, 0, 0}}; ///< T = T0 + T_r r + T_z z [K]
     bool any() const;
+    bool body_force() const { return angular_velocity != 0.0 || gravity != 0.0; }
+    bool thermal() const;
   };
+
+  /// The load fields of both solvers at (r, z), for a material that has the constants the
+  /// loads need (the parser checks that): the body force f = (density omega^2 r,
+  /// -density g) [N/m^3], and the free thermal strain alpha T of each normal strain
+  /// component (rr, zz, tt) [-]; 0 where the load is off.
+  std::array<double, 2> body_force(const BodyLoads &loads, const Material &material, double r,
+                                   double z);
+  double thermal_strain(const BodyLoads &loads, const Material &material, double r, double z);
 
   /// The meridian section as an outline with a condition on every part. Both file forms
   /// give one: the legacy hollow cylinder becomes the rectangle [R1, R2] x [0, a] with the

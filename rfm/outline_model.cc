@@ -61,11 +61,10 @@ namespace rfm
   OutlineModel::OutlineModel(const axisym::Problem &problem, const DiscretizationOptions &options,
                              const SolverOptions &solver_options)
     : material_(problem.material)
+    , loads_(problem.body_loads)
     , structures_(*problem.body, (options.validate(), options.degree))
     , basis_(basis_of(problem.body->outline, options.degree))
   {
-    if (problem.body_loads.any())
-      throw axisym::InputError("loading: body loads are not applied by the RFM yet");
     const auto t0 = std::chrono::steady_clock::now();
     // Products of two coordinate functions reach total degree 4p in (r, z), times the
     // structures: the collapsed Gauss rule is exact for total degree 2n - 2 on straight
@@ -98,10 +97,28 @@ namespace rfm
     // Stresses: all columns at once (R11 couples the components and the boundary columns
     // through C, and a boundary column can come close to the polynomial ones inside).
     const Eigen::MatrixXd s_map = orthonormal(-sys.r11);
-    std::array<Eigen::MatrixXd, 2> tu{orthonormal(gram_u[0]), orthonormal(gram_u[1])};
+    // Displacements per component, on the columns phi_ij with i <= p - k_r, j <= p - k_z
+    // (displacement_degree_reduction: no reduction unless u_m is constrained on two
+    // parallel lines or on arcs).
+    const int p = options.degree;
+    std::array<Eigen::MatrixXd, 2> tu;
+    std::array<std::vector<Eigen::Index>, 2> kept_columns;
+    for (int m = 0; m < 2; ++m)
+      {
+        const auto k = structures_.displacement_degree_reduction(m);
+        for (int j = 0; j <= p; ++j)
+          for (int i = 0; i <= p; ++i)
+            if (i <= p - k[0] && j <= p - k[1])
+              kept_columns[m].push_back(static_cast<Eigen::Index>(j) * (p + 1) + i);
+        if (kept_columns[m].empty())
+          kept_columns[m].push_back(0);
+        tu[m] = orthonormal(gram_u[m](kept_columns[m], kept_columns[m]));
+      }
     Eigen::MatrixXd u_map = Eigen::MatrixXd::Zero(2 * n, tu[0].cols() + tu[1].cols());
-    u_map.block(0, 0, n, tu[0].cols()) = tu[0];
-    u_map.block(n, tu[0].cols(), n, tu[1].cols()) = tu[1];
+    for (int m = 0; m < 2; ++m)
+      for (std::size_t i = 0; i < kept_columns[m].size(); ++i)
+        u_map.row(m * n + kept_columns[m][i]).segment(m == 0 ? 0 : tu[0].cols(), tu[m].cols()) =
+          tu[m].row(static_cast<Eigen::Index>(i));
     n_kept_ = {s_map.cols(), u_map.cols()};
 
     ReissnerSystem reduced;
@@ -137,10 +154,32 @@ namespace rfm
     sys.p_u.setZero(n_u);
     const StressStructureValues sp = polynomial_part(s);
     add_polynomial_blocks(mu, q.r, b, sp, d, c, sys);
+    const DisplacementBasisValues v = displacement_basis(b, d);
+
+    // Body loads: - int X . e_th in p_s (normal components), - int f . Phi in p_u.
+    Eigen::VectorXd e_th = Eigen::VectorXd::Zero(q.n_points());
+    if (loads_.thermal())
+      {
+        for (Eigen::Index k = 0; k < q.n_points(); ++k)
+          e_th[k] = axisym::thermal_strain(loads_, material_, q.r[k], q.z[k]);
+        for (const int k : {rr, zz, tt})
+          sys.p_s.segment(k * n, n).noalias() -=
+            b.value.transpose() * mu.cwiseProduct(s.omega.col(k)).cwiseProduct(e_th);
+      }
+    if (loads_.body_force())
+      {
+        Eigen::MatrixXd f(q.n_points(), 2);
+        for (Eigen::Index k = 0; k < q.n_points(); ++k)
+          {
+            const auto fk = axisym::body_force(loads_, material_, q.r[k], q.z[k]);
+            f(k, 0) = fk[0], f(k, 1) = fk[1];
+          }
+        for (int m = 0; m < 2; ++m)
+          sys.p_u.segment(m * n, n).noalias() -= v.value[m].transpose() * mu.cwiseProduct(f.col(m));
+      }
     {
       // Gram matrices of the displacement columns: values / l^2 plus gradients (l the size of
       // the section, so both terms weigh alike).
-      const DisplacementBasisValues v = displacement_basis(b, d);
       const double l = structures_.body().outline.size();
       for (int m = 0; m < 2; ++m)
         {
@@ -172,7 +211,6 @@ namespace rfm
           }
         sys.r11.block(4 * n, 0, n_b, 4 * n) = sys.r11.block(0, 4 * n, 4 * n, n_b).transpose();
 
-        const DisplacementBasisValues v = displacement_basis(b, d);
         const Eigen::VectorXd inv_r = q.r.cwiseInverse();
         Eigen::MatrixXd wxb[n_stress_components];
         for (int k = 0; k < n_stress_components; ++k)
@@ -183,7 +221,9 @@ namespace rfm
         sys.r12.block(4 * n, n, n_b, n).noalias() =
           wxb[zz].transpose() * v.d_z[1] + wxb[rz].transpose() * v.d_r[1];
 
-        const Eigen::MatrixXd residual = initial_strain_residual(sp, d, q.r, c);
+        Eigen::MatrixXd residual = initial_strain_residual(sp, d, q.r, c);
+        for (const int k : {rr, zz, tt})
+          residual.col(k) -= e_th;
         for (int k = 0; k < n_stress_components; ++k)
           sys.p_s.tail(n_b).noalias() += wxb[k].transpose() * residual.col(k);
       }
@@ -242,18 +282,25 @@ namespace rfm
     const Quadrature2D &q = quadrature_;
     const Eigen::VectorXd mu = q.weights.cwiseProduct(q.r);
     const FieldValues f = evaluate(q.r, q.z);
-    double strain_energy = 0, complementary = 0, mixed = 0;
+    // With the thermal strain e_th (elastic strain e - e_th) and the body force f in W.
+    double strain_energy = 0, complementary = 0, mixed = 0, thermal = 0, work = 0;
     for (Eigen::Index k = 0; k < q.n_points(); ++k)
       {
-        const Eigen::Vector4d e = f.strain.row(k).transpose(), s = f.sigma.row(k).transpose();
+        const double th = axisym::thermal_strain(loads_, material_, q.r[k], q.z[k]);
+        const Eigen::Vector4d e_th(th, th, th, 0.0);
+        const Eigen::Vector4d e = f.strain.row(k).transpose() - e_th,
+                              s = f.sigma.row(k).transpose();
         strain_energy += 0.5 * mu[k] * e.dot(dmat * e);
         complementary += 0.5 * mu[k] * s.dot(c * s);
         mixed += mu[k] * s.dot(e);
+        thermal += mu[k] * s.dot(e_th);
+        const auto fk = axisym::body_force(loads_, material_, q.r[k], q.z[k]);
+        work += mu[k] * (fk[0] * f.u(k, 0) + fk[1] * f.u(k, 1));
       }
     // Boundary terms: W(u) on the traction edges; (s n) . u_bar on the displacement edges.
     const EdgeQuadrature &eq = edge_quadrature_;
     const FieldValues fb = evaluate(eq.r, eq.z);
-    double work = 0, kinematic = 0;
+    double kinematic = 0;
     for (Eigen::Index k = 0; k < eq.r.size(); ++k)
       {
         const auto t = structures_.prescribed_traction(eq.edge[k], eq.r[k], eq.z[k]);
@@ -268,7 +315,7 @@ namespace rfm
       }
     Functionals out;
     out.lagrange = strain_energy - work;
-    out.castigliano = -complementary + kinematic;
+    out.castigliano = -complementary - thermal + kinematic;
     out.reissner = mixed - complementary - work;
     return out;
   }

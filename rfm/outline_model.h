@@ -6,6 +6,12 @@
 // Unknowns: q_s = (q_rr, q_zz, q_tt, q_rz, q_b): N each and the boundary columns B_e last;
 // q_u = (q_r, q_z), N each.
 //
+// Body loads (DESIGN.md 7.1): the body force f enters p_u (- int f . Phi) and W(u); the
+// thermal strain e_th = alpha T (1, 1, 1, 0) enters p_s (int X . (e(u0) - C s0 - e_th)) and
+// the functionals: Phi_L = 1/2 int (e - e_th) . D (e - e_th) - W, Phi_C = -1/2 int s . C s
+// - int s . e_th + int_{S_u} (s n) . u*, Phi_R = int [s . (e - e_th) - 1/2 s . C s] - W, so
+// that all three are the same number at the exact solution. The stress is the total stress.
+//
 // Conditioning. The tensor Legendre polynomials of the bounding box are nearly dependent on a
 // section that fills only part of the box (the quarter annulus: R11's Jacobi-scaled rcond
 // estimate reaches 1e-18 at p = 10), and a boundary column can come close to the polynomial
@@ -67,6 +73,7 @@ namespace rfm
     ReissnerSystem assemble(std::array<Eigen::MatrixXd, 2> &gram_u) const;
 
     Material material_;
+    axisym::BodyLoads loads_; ///< body force in p_u and W, thermal strain in p_s and the functionals
     OutlineStructures structures_;
     TensorLegendreBasis basis_;
     Quadrature2D quadrature_;

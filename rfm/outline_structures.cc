@@ -224,6 +224,25 @@ namespace rfm
           }
   }
 
+  std::array<int, 2> OutlineStructures::displacement_degree_reduction(const int m) const
+  {
+    std::array<int, 2> degree{0, 0}; // of the omega product, in r and in z
+    for (const int e : m == 0 ? u_r_edges_ : u_z_edges_)
+      {
+        const OutlineEdge &edge = body_.outline.edges()[e];
+        const axisym::Point n = edge.outward_normal_at(0.5);
+        if (edge.kind != OutlineEdge::Kind::line)
+          degree[0] += 2, degree[1] += 2;
+        else if (std::abs(std::abs(n.r) - 1.0) < 1e-12)
+          degree[0] += 1;
+        else if (std::abs(std::abs(n.z) - 1.0) < 1e-12)
+          degree[1] += 1;
+        else
+          degree[0] += 1, degree[1] += 1;
+      }
+    return {std::max(0, degree[0] - 1), std::max(0, degree[1] - 1)};
+  }
+
   std::array<double, 3> OutlineStructures::tangent_tensor(const int e, const double r,
                                                           const double z) const
   {

@@ -121,6 +121,15 @@ namespace rfm
     const std::vector<EdgeOmega> &omegas() const { return omegas_; }
     /// The traction t = sigma . n prescribed at a point of edge e (0 for a non-S edge).
     std::array<double, 2> prescribed_traction(int edge, double r, double z) const;
+    /// How far the polynomial degree of displacement component m (0: u_r, 1: u_z) is
+    /// lowered in r and in z. Its omega is the product over the edges where u_m is
+    /// constrained; an edge along z (r = const) has degree 1 in r, one along r degree 1 in
+    /// z, an inclined line 1 in both, an arc 2 in both. Where that product has degree k > 1
+    /// in a direction (two ends with u_z = 0: z (h - z)), e(u) would reach degree p + k - 1
+    /// there while the normal stresses need not carry any omega in that direction: a
+    /// strain the stresses cannot see (u_z = int P_{p+1}(z) dz made R12 lose rank on a slab
+    /// with symmetry on both ends). The degree is lowered by k - 1.
+    std::array<int, 2> displacement_degree_reduction(int m) const;
 
   private:
     // s0_e and T_e at one point, in (rr, zz, rz) order.
