@@ -62,24 +62,35 @@ namespace rfm
     EXPECT_GE(r.half_width_range->second, r.final.half_width);
   }
 
-  // Barber's principle: the maximizer of P(c) is the zone that edge-intensity returns (the
-  // stationary point of P next to the root of K), and no iterate of the paper's iteration
-  // has a larger force. The iteration itself stops where the trace conditions switch, which
-  // follows the sign of K: its root carries the bias of the n = 1 coefficient (measured at
-  // this p = 6: 2.3 % above the maximizer), so it is only checked to lie near.
-  TEST(Contact, MaxForceAgreesWithEdgeIntensityAndBoundsTheIteration)
+  // Barber's principle: the maximizer of P(c) (golden section, to 2e-3 a here to keep the
+  // test short) is the zone that edge-intensity returns (the stationary point of P next to
+  // the root of K), with the same force.
+  TEST(Contact, MaxForceAgreesWithEdgeIntensity)
   {
-    const Problem pi = die_problem(1e-6, "iterate"), pm = die_problem(1e-6, "max-force"),
-                  pe = die_problem(1e-6, "edge-intensity");
-    const ContactResult ri = solve_contact(pi, pi.rfm, ContactOptions{});
-    const ContactResult rm = solve_contact(pm, pm.rfm, ContactOptions{});
+    const Problem pm = die_problem(1e-6, "max-force"), pe = die_problem(1e-6, "edge-intensity");
+    ContactOptions coarse;
+    coarse.tolerance = 2e-3;
+    const ContactResult rm = solve_contact(pm, pm.rfm, coarse);
     const ContactResult re = solve_contact(pe, pe.rfm, ContactOptions{});
-    ASSERT_TRUE(ri.success && rm.success && re.success);
-    EXPECT_NEAR(rm.final.half_width / re.final.half_width, 1.0, 2e-3) << rm.message;
+    ASSERT_TRUE(rm.success && re.success);
+    EXPECT_NEAR(rm.final.half_width / re.final.half_width, 1.0, 3e-3) << rm.message;
     EXPECT_NEAR(rm.final.force / re.final.force, 1.0, 1e-6);
-    EXPECT_NEAR(rm.final.half_width / ri.final.half_width, 1.0, 0.03) << ri.message;
+    EXPECT_LE(rm.final.force, re.final.force * (1 + 1e-9)); // P is largest at the stationary point
+  }
+
+  // No iterate of the paper's iteration has a larger force than the stationary point of P.
+  // The iteration stops where the trace conditions switch, which follows the sign of K: its
+  // root carries the bias of the n = 1 coefficient (measured at this p = 6: 2.3 % above the
+  // stationary point), so its c is only checked to lie near.
+  TEST(Contact, StationaryForceBoundsTheIteration)
+  {
+    const Problem pi = die_problem(1e-6, "iterate"), pe = die_problem(1e-6, "edge-intensity");
+    const ContactResult ri = solve_contact(pi, pi.rfm, ContactOptions{});
+    const ContactResult re = solve_contact(pe, pe.rfm, ContactOptions{});
+    ASSERT_TRUE(ri.success && re.success);
+    EXPECT_NEAR(re.final.half_width / ri.final.half_width, 1.0, 0.03) << ri.message;
     for (const auto &it : ri.history)
-      EXPECT_LE(it.force, rm.final.force * (1 + 1e-9)) << "c = " << it.half_width;
+      EXPECT_LE(it.force, re.final.force * (1 + 1e-9)) << "c = " << it.half_width;
   }
   // Regression: without the edge modes, at p = 8 and 12 an early iterate (c = 0.37 a) shows both
   // tension (the oscillation of the compressive edge singularity the polynomials cannot
