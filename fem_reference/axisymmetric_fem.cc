@@ -10,6 +10,7 @@
 // arcs and their conditions are per part (2o, 3o, 6o).
 #include "fem_reference/axisymmetric_fem.h"
 
+#include "fem_reference/body_loads.h"
 #include "fem_reference/half_section_mesh.h"
 #include "fem_reference/outline_mesh.h"
 
@@ -95,8 +96,6 @@ namespace fem
       return;
     if (!problem.body)
       throw axisym::InputError("problem: an outline problem without its body (parser bug?)");
-    if (problem.body_loads.any())
-      throw axisym::InputError("loading: body loads are not applied by fem_solve yet");
     if (problem.die)
       throw axisym::InputError("die: the FEM reference supports a die only on the "
                                "hollow-cylinder form");
@@ -198,6 +197,22 @@ namespace fem
       return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
     }
 
+    /// The elastic part e(u) - e_th of the strain e at (r, z); e itself without a thermal load.
+    Stress elastic_strain(const BodyLoadField &loads, double r, double z, const Stress &e)
+    {
+      if (!loads.has_thermal_strain())
+        return e;
+      const double e_th = loads.thermal_strain(r, z);
+      return {{e[0] - e_th, e[1] - e_th, e[2] - e_th, e[3]}};
+    }
+
+    /// The total stress D (e - e_th) that every output reports (DESIGN.md 7.1).
+    Stress total_stress(const Stiffness &d, const BodyLoadField &loads, double r, double z,
+                        const Stress &e)
+    {
+      return d * elastic_strain(loads, r, z, e);
+    }
+
     /// u_r* on the contact zone as a 2-component function (u_z unconstrained: masked out).
     class DieDisplacement : public Function<2>
     {
@@ -219,15 +234,17 @@ namespace fem
     class StressPostprocessor : public DataPostprocessor<2>
     {
     public:
-      explicit StressPostprocessor(const Stiffness &d) : d_(d) {}
+      StressPostprocessor(const Stiffness &d, const BodyLoadField &loads) : d_(d), loads_(loads) {}
       void evaluate_vector_field(const DataPostprocessorInputs::Vector<2> &in,
                                  std::vector<Vector<double>> &out) const override
       {
         for (unsigned int q = 0; q < in.solution_values.size(); ++q)
           {
-            const double r = in.evaluation_points[q][0];
-            const Stress s = d_ * strain(r, in.solution_values[q][0], in.solution_gradients[q][0],
-                                         in.solution_gradients[q][1]);
+            const Point<2> &x = in.evaluation_points[q];
+            const Stress s =
+              total_stress(d_, loads_, x[0], x[1],
+                           strain(x[0], in.solution_values[q][0], in.solution_gradients[q][0],
+                                  in.solution_gradients[q][1]));
             out[q][0] = in.solution_values[q][0];
             out[q][1] = in.solution_values[q][1];
             for (unsigned int k = 0; k < 4; ++k)
@@ -257,6 +274,7 @@ namespace fem
 
     private:
       Stiffness d_;
+      BodyLoadField loads_;
     };
 
     /// Everything computed from one solution (one active-set step).
@@ -284,6 +302,7 @@ namespace fem
         , fe_(FE_Q<2>(options.degree), 2)
         , dof_handler_(triangulation_)
         , d_(problem.material)
+        , loads_(problem)
         , cell_quadrature_(options.degree + 2)
         , face_quadrature_(options.contact_points > 0 ? options.contact_points
                                                       : options.degree + 1)
@@ -331,7 +350,13 @@ namespace fem
       std::vector<char> active_set() const;
       Evaluation evaluate(const std::vector<char> *active) const;
       std::vector<FieldSample> samples() const;
+      std::vector<PartReaction> reactions() const;
       void write_vtu() const;
+      /// Total stress D (e - e_th) at x for the strain e of the solution there.
+      Stress stress_at(const Point<2> &x, const Stress &e) const
+      {
+        return total_stress(d_, loads_, x[0], x[1], e);
+      }
       void progress(const std::string &line) const
       {
         if (options_.progress)
@@ -362,6 +387,7 @@ namespace fem
       unsigned long n_base_cells_ = 0;
       bool base_mesh_subdivided_ = false;
       Stiffness d_;
+      BodyLoadField loads_; ///< f and e_th (outline problems; none for the legacy form)
       QGauss<2> cell_quadrature_;
       QGaussLobatto<1> face_quadrature_; // on r = R2: penalty, active set, traces
       AffineConstraints<double> constraints_;
@@ -370,6 +396,15 @@ namespace fem
       Vector<double> base_rhs_, system_rhs_, solution_;
       // Faces on r = R2, in cell order; contact quadrature point k * n_q + q.
       std::vector<std::pair<DoFHandler<2>::active_cell_iterator, unsigned int>> outer_faces_;
+      /// Outline: the dofs whose residual is a support reaction, with the outline edge whose
+      /// condition (symmetry or displacement) holds them and their component (set in
+      /// add_outline_constraints).
+      struct ReactionDof
+      {
+        int edge = 0;
+        unsigned int component = 0;
+      };
+      std::map<types::global_dof_index, ReactionDof> reaction_dofs_;
       double h_min_ = 0, kappa_ = 0;
       double assembly_s_ = 0, solve_s_ = 0;
     };
@@ -592,6 +627,7 @@ namespace fem
         std::vector<Condition> conditions;
       };
       std::map<types::global_dof_index, Node> nodes; // by the u_r dof
+      reaction_dofs_.clear();
       const unsigned int n_face_dofs = fe_.n_dofs_per_face();
       std::vector<types::global_dof_index> face_dofs(n_face_dofs);
       for (const auto &cell : dof_handler_.active_cell_iterators())
@@ -663,18 +699,29 @@ namespace fem
                 best = cross, second = &c;
             }
           const types::global_dof_index dof_z = node.dof_z;
-          auto fix = [&](types::global_dof_index dof, double value) {
+          // The residual of a constrained dof is the reaction of the support that holds it;
+          // the axis is no support (its exact reaction vanishes with r).
+          auto own = [&](types::global_dof_index dof, const Condition &by) {
+            if (body.condition_of_edge(by.edge).kind != Kind::axis)
+              reaction_dofs_[dof] = {by.edge, dof == dof_z ? 1u : 0u};
+          };
+          auto fix = [&](types::global_dof_index dof, double value, const Condition &by) {
             if (constraints_.is_constrained(dof))
               return;
             constraints_.add_line(dof);
             constraints_.set_inhomogeneity(dof, value);
+            own(dof, by);
           };
           if (second)
             {
-              // Solve [a1; a2] u = [g1; g2].
+              // Solve [a1; a2] u = [g1; g2]. u_r belongs to the condition that weighs it
+              // more (the first on a tie), u_z to the other.
               const double det = first.a_r * second->a_z - first.a_z * second->a_r;
-              fix(dof_r, (first.g * second->a_z - second->g * first.a_z) / det);
-              fix(dof_z, (first.a_r * second->g - second->a_r * first.g) / det);
+              const bool first_has_r = std::abs(first.a_r) >= std::abs(second->a_r);
+              fix(dof_r, (first.g * second->a_z - second->g * first.a_z) / det,
+                  first_has_r ? first : *second);
+              fix(dof_z, (first.a_r * second->g - second->a_r * first.g) / det,
+                  first_has_r ? *second : first);
             }
           else
             {
@@ -685,8 +732,9 @@ namespace fem
               if (constraints_.is_constrained(dof))
                 continue;
               constraints_.add_line(dof);
-              if (b != 0)
-                constraints_.add_entry(dof, other, -b / a);
+              own(dof, first);
+              if (b != 0) // an inclined edge: the node's reaction (both components) is along n
+                constraints_.add_entry(dof, other, -b / a), own(other, first);
               constraints_.set_inhomogeneity(dof, first.g / a);
             }
         }
@@ -723,7 +771,8 @@ namespace fem
         }
     }
 
-    // 3. Assembly: int e(v).D e(u) r dr dz and int t.v r ds for the pressures.
+    // 3. Assembly: int e(v).D e(u) r dr dz, int t.v r ds for the pressures and tractions, and
+    // for the body loads int f.v r dr dz + int e(v).D e_th r dr dz.
     void AxisymmetricSolver::assemble_base()
     {
       const auto t0 = Clock::now();
@@ -765,6 +814,21 @@ namespace fem
               for (unsigned int i = 0; i < n; ++i)
                 for (unsigned int j = 0; j <= i; ++j)
                   cell_matrix(i, j) += dot(b[i], db[j]) * w;
+              // Body loads: int f.v r + int e(v).D e_th r (the thermal strain as an initial
+              // strain: the stress is D (e(u) - e_th)).
+              if (loads_.any())
+                {
+                  const Point<2> &x = fe_values.quadrature_point(q);
+                  const std::array<double, 2> f = loads_.force(x[0], x[1]);
+                  const double e_th = loads_.thermal_strain(x[0], x[1]);
+                  const Stress s_th = d_ * Stress{{e_th, e_th, e_th, 0.0}};
+                  for (unsigned int i = 0; i < n; ++i)
+                    {
+                      const unsigned int c = fe_.system_to_component_index(i).first;
+                      cell_rhs(i) +=
+                        (f[c] * fe_values.shape_value_component(i, q, c) + dot(b[i], s_th)) * w;
+                    }
+                }
             }
           for (unsigned int i = 0; i < n; ++i)
             for (unsigned int j = i + 1; j < n; ++j)
@@ -909,6 +973,7 @@ namespace fem
       std::vector<Vector<double>> u(n_q, Vector<double>(2));
       std::vector<std::vector<Tensor<1, 2>>> grad(n_q, std::vector<Tensor<1, 2>>(2));
       double energy = 0, reaction = 0, error_sq = 0, norm_sq = 0, u_error_sq = 0, u_norm_sq = 0;
+      double body_force_work = 0, thermal_strain_work = 0; // int f.u_h r, int s_h.e_th r
       for (const auto &cell : dof_handler_.active_cell_iterators())
         {
           fe_values.reinit(cell);
@@ -918,9 +983,18 @@ namespace fem
             {
               const Point<2> x = fe_values.quadrature_point(q);
               const double w = x[0] * fe_values.JxW(q);
-              const Stress e = strain(x[0], u[q][0], grad[q][0], grad[q][1]);
+              // e = e(u_h) - e_th, s = D e the total stress, U_h = 1/2 int e.D e r.
+              const Stress e =
+                elastic_strain(loads_, x[0], x[1], strain(x[0], u[q][0], grad[q][0], grad[q][1]));
               const Stress s = d_ * e;
               energy += 0.5 * dot(e, s) * w;
+              if (loads_.has_force())
+                {
+                  const std::array<double, 2> f = loads_.force(x[0], x[1]);
+                  body_force_work += (f[0] * u[q][0] + f[1] * u[q][1]) * w;
+                }
+              if (loads_.has_thermal_strain())
+                thermal_strain_work += loads_.thermal_strain(x[0], x[1]) * (s[0] + s[1] + s[2]) * w;
               if (!outline_)
                 {
                   const double psi = (x[0] - r1) / (r2 - r1);
@@ -974,7 +1048,7 @@ namespace fem
               for (unsigned int q = 0; q < nodes.size(); ++q)
                 {
                   const Point<2> x = fe_nodes.quadrature_point(q);
-                  const Stress s = d_ * strain(x[0], un[q][0], gradn[q][0], gradn[q][1]);
+                  const Stress s = stress_at(x, strain(x[0], un[q][0], gradn[q][0], gradn[q][1]));
                   const Stress se = exact_(x[0], x[1]);
                   for (int k = 0; k < 4; ++k)
                     {
@@ -990,11 +1064,16 @@ namespace fem
         {
           double work = 0, b_c = 0, b_r = 0;
           outline_boundary_terms(work, b_c, b_r);
+          // DESIGN.md 3 with the thermal strain as an initial strain (axisymmetric_fem.h):
+          // W = int f.u_h r + int_St t.u_h r ds; the Castigliano functional carries
+          // -int s_h.e_th r; in Reissner's s.e(u) - 1/2 s.C s - s.e_th = U density for s = s_h.
           Functionals &phi = ev.functionals;
           phi.strain_energy = energy;
-          phi.external_work = work;
+          phi.body_force_work = body_force_work;
+          phi.thermal_strain_work = thermal_strain_work;
+          phi.external_work = work + body_force_work;
           phi.lagrange = phi.strain_energy - phi.external_work;
-          phi.castigliano = -phi.strain_energy + b_c;
+          phi.castigliano = -phi.strain_energy - thermal_strain_work + b_c;
           phi.reissner = phi.strain_energy - phi.external_work - b_r;
           return ev;
         }
@@ -1042,7 +1121,7 @@ namespace fem
                   const double w = x[0] * fv.JxW(q); // r ds with r = R2
                   const double target = axisym::die_u_r(*problem_.die, g, x[1]);
                   const double gap = uf[q][0] - target;
-                  const Stress s = d_ * strain(x[0], uf[q][0], gradf[q][0], gradf[q][1]);
+                  const Stress s = stress_at(x, strain(x[0], uf[q][0], gradf[q][0], gradf[q][1]));
                   trace += s[0] * fv.JxW(q);
                   const bool in_zone =
                     active ? static_cast<bool>((*active)[k * n_fq + q]) : prescribed_face;
@@ -1146,7 +1225,7 @@ namespace fem
                 const double w = x[0] * fv.JxW(q);
                 if (c.kind == Kind::displacement)
                   {
-                    const Stress s = d_ * strain(x[0], u[q][0], grad[q][0], grad[q][1]);
+                    const Stress s = stress_at(x, strain(x[0], u[q][0], grad[q][0], grad[q][1]));
                     const double t_r = s[0] * n[0] + s[3] * n[1];
                     const double t_z = s[3] * n[0] + s[1] * n[1];
                     b_c += (t_r * c.displacement[0] + t_z * c.displacement[1]) * w;
@@ -1160,6 +1239,85 @@ namespace fem
                 work += (t_r * u[q][0] + t_z * u[q][1]) * w;
               }
           }
+    }
+
+    // 6r. Support reactions of an outline problem. The residual of the discrete equilibrium,
+    // R_i = int s_h.e(phi_i) r dr dz - int f.phi_i r dr dz - int_St t.phi_i r ds, vanishes at
+    // the free dofs (to the solver's accuracy); at a dof held by a symmetry or displacement
+    // part it is the force that part exerts on the body (per radian). Summed per part and
+    // component and times 2 pi: N for the full body. Taking v = e_z everywhere (e(v) = 0)
+    // gives the global balance: the z reactions sum to minus the applied z load.
+    std::vector<PartReaction> AxisymmetricSolver::reactions() const
+    {
+      using Kind = axisym::PartCondition::Kind;
+      const axisym::Body &body = *problem_.body;
+      std::vector<PartReaction> out;
+      std::map<std::string, std::size_t> index;
+      for (const std::string &part : body.outline.parts())
+        {
+          const Kind kind = body.conditions.at(part).kind;
+          if (kind != Kind::symmetry && kind != Kind::displacement)
+            continue;
+          index[part] = out.size();
+          PartReaction reaction;
+          reaction.part = part;
+          reaction.condition = axisym::to_string(kind);
+          out.push_back(reaction);
+        }
+      if (reaction_dofs_.empty())
+        return out;
+
+      FEValues<2> fe_values(mapping(), fe_, cell_quadrature_,
+                            update_values | update_gradients | update_quadrature_points |
+                              update_JxW_values);
+      // The face rule and flags of the assembly (3o), so that R is the discrete residual.
+      FEFaceValues<2> face_values(mapping(), fe_, QGauss<1>(options_.degree + 1),
+                                  update_values | update_quadrature_points |
+                                    update_normal_vectors | update_JxW_values);
+      const unsigned int n = fe_.n_dofs_per_cell(), n_q = cell_quadrature_.size();
+      std::vector<Vector<double>> u(n_q, Vector<double>(2));
+      std::vector<std::vector<Tensor<1, 2>>> grad(n_q, std::vector<Tensor<1, 2>>(2));
+      std::vector<types::global_dof_index> dofs(n);
+      Vector<double> cell_residual(n), cell_load(n), residual(dof_handler_.n_dofs());
+      for (const auto &cell : dof_handler_.active_cell_iterators())
+        {
+          cell->get_dof_indices(dofs);
+          if (std::none_of(dofs.begin(), dofs.end(), [&](types::global_dof_index i) {
+                return reaction_dofs_.count(i) > 0;
+              }))
+            continue;
+          fe_values.reinit(cell);
+          fe_values.get_function_values(solution_, u);
+          fe_values.get_function_gradients(solution_, grad);
+          cell_residual = 0;
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              const Point<2> x = fe_values.quadrature_point(q);
+              const double w = x[0] * fe_values.JxW(q);
+              const Stress s = stress_at(x, strain(x[0], u[q][0], grad[q][0], grad[q][1]));
+              const std::array<double, 2> f = loads_.force(x[0], x[1]);
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const unsigned int c = fe_.system_to_component_index(i).first;
+                  const double phi = fe_values.shape_value_component(i, q, c);
+                  const Stress b =
+                    shape_strain(c, x[0], phi, fe_values.shape_grad_component(i, q, c));
+                  cell_residual(i) += (dot(b, s) - f[c] * phi) * w;
+                }
+            }
+          cell_load = 0;
+          add_outline_tractions(cell, face_values, cell_load);
+          cell_residual -= cell_load;
+          for (unsigned int i = 0; i < n; ++i)
+            residual(dofs[i]) += cell_residual(i);
+        }
+      for (const auto &[dof, held] : reaction_dofs_)
+        {
+          PartReaction &reaction =
+            out[index.at(body.outline.edges()[held.edge].part)];
+          (held.component == 0 ? reaction.force_r : reaction.force_z) += 2 * pi * residual(dof);
+        }
+      return out;
     }
 
     // Fields at the sample points; legacy: z < 0 mirrored (u_z and sigma_rz are odd in z).
@@ -1226,7 +1384,7 @@ namespace fem
           std::vector<std::vector<Tensor<1, 2>>> grad(1, std::vector<Tensor<1, 2>>(2));
           fv.get_function_values(solution_, u);
           fv.get_function_gradients(solution_, grad);
-          const Stress s = d_ * strain(r, u[0][0], grad[0][0], grad[0][1]);
+          const Stress s = stress_at(x, strain(r, u[0][0], grad[0][0], grad[0][1]));
           const double sign = !outline_ && z < 0 ? -1.0 : 1.0;
           out.push_back({r, z, u[0][0], sign * u[0][1], {{s[0], s[1], s[2], sign * s[3]}}});
         }
@@ -1235,7 +1393,7 @@ namespace fem
 
     void AxisymmetricSolver::write_vtu() const
     {
-      const StressPostprocessor post(d_);
+      const StressPostprocessor post(d_, loads_);
       DataOut<2> data_out;
       data_out.attach_dof_handler(dof_handler_);
       data_out.add_data_vector(solution_, post);
@@ -1359,6 +1517,8 @@ namespace fem
             }
           if (result.success)
             result.samples = samples();
+          if (result.success && outline_)
+            result.reactions = reactions();
         }
       catch (const std::exception &e)
         {

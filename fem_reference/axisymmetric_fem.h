@@ -67,7 +67,22 @@
 //      reissner = U_h - W(u_h) - int_{S_u} (s_h n).(u_h - u*) r ds,
 //    S_u the displacement parts (symmetry and axis parts add nothing: u*.n = 0 there and
 //    u_h.n = 0 exactly). Samples, stress and displacement errors: the section as given.
-//  * Body loads are not applied yet: check_supported() refuses them.
+//  * Body loads (DESIGN.md 7.1; pointwise in fem_reference/body_loads.h): the body force
+//    f = (density omega^2 r, -density g) enters as int f.v r dr dz, the thermal strain
+//    e_th = alpha T (1, 1, 1, 0), T = T0 + T_r r + T_z z, as an initial strain:
+//    int e(v).D e(u) r = int f.v r + int_St t.v r ds + int e(v).D e_th r. Every stress the
+//    FEM reports (samples, VTU, error norms, element traces in the functionals) is the total
+//    stress s_h = D (e(u_h) - e_th). With them the functionals are (per radian)
+//      U_h        = 1/2 int (e(u_h) - e_th).D (e(u_h) - e_th) r dr dz   (strain_energy)
+//      W(u_h)     = int f.u_h r dr dz + int_St t.u_h r ds               (external_work)
+//      lagrange    = U_h - W(u_h)
+//      castigliano = -U_h - int s_h.e_th r dr dz + int_{S_u} (s_h n).u* r ds
+//      reissner    = U_h - W(u_h) - int_{S_u} (s_h n).(u_h - u*) r ds
+//    (Reissner's int [s.e(u) - 1/2 s.C s - s.e_th] is U_h at s = s_h). All three equal the
+//    potential energy at the exact solution; without body loads they are the formulas above.
+//  * Reactions: the force each symmetry or displacement part exerts on the body (N, full
+//    360 degree body), from the residual of the discrete equilibrium at the dofs it holds
+//    (PartReaction).
 #pragma once
 
 #include "problem/problem.h"
@@ -126,16 +141,18 @@ namespace fem
 
   FemOptions options_from_problem(const axisym::Problem &problem);
 
-  /// Throws axisym::InputError for what the FEM reference cannot solve yet: body loads
-  /// ("loading: body loads are not applied by fem_solve yet"), a die on an outline section,
-  /// the structured mesh generator for an outline section.
+  /// Throws axisym::InputError for what the FEM reference cannot solve yet: a die on an
+  /// outline section, the structured mesh generator for an outline section. (Body loads
+  /// exist only on outline sections and are applied.)
   void check_supported(const axisym::Problem &problem, const FemOptions &options);
 
   struct Functionals
   {
     double lagrange = 0, castigliano = 0, reissner = 0; ///< J per radian
-    double strain_energy = 0;  ///< U_h, J per radian
-    double external_work = 0;  ///< W(u_h)
+    double strain_energy = 0;  ///< U_h = 1/2 int (e - e_th).D (e - e_th) r, J per radian
+    double external_work = 0;  ///< W(u_h) = body_force_work + int_St t.u_h r ds
+    double body_force_work = 0;     ///< int f.u_h r dr dz (part of external_work)
+    double thermal_strain_work = 0; ///< int s_h.e_th r dr dz (in castigliano)
     double penalty_energy = 0; ///< 1/2 kappa int_A g^2 r ds (full body, per radian)
   };
 
@@ -173,6 +190,17 @@ namespace fem
     std::vector<PressurePoint> pressure; ///< at the face Gauss points of r = R2, sorted by z
   };
 
+  /// The force a support part (symmetry or displacement) exerts on the body [N], full 360
+  /// degree body: 2 pi times the residual of the discrete equilibrium summed over the dofs
+  /// the part holds (a node shared with another support counts for the condition that fixes
+  /// that component; the axis is no support). force_r is 2 pi int t_r r ds, as the contact
+  /// force P.
+  struct PartReaction
+  {
+    std::string part, condition; ///< "symmetry" or "displacement"
+    double force_r = 0, force_z = 0;
+  };
+
   struct FieldSample
   {
     double r = 0, z = 0, u_r = 0, u_z = 0;
@@ -193,6 +221,7 @@ namespace fem
     Functionals functionals;
     std::optional<ContactResult> contact;
     std::vector<FieldSample> samples;
+    std::vector<PartReaction> reactions; ///< outline problems: every support part
     /// r-weighted L2 norms over the full body (per radian), when an exact stress is given:
     /// ||s_h - s|| and ||s||, s = (rr, zz, tt, rz) with the Euclidean norm.
     std::optional<double> stress_l2_error, stress_l2_norm;

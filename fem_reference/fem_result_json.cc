@@ -11,6 +11,8 @@ namespace fem
               {"reissner", f.reissner},
               {"strain_energy", f.strain_energy},
               {"external_work", f.external_work},
+              {"body_force_work", f.body_force_work},
+              {"thermal_strain_work", f.thermal_strain_work},
               {"penalty_energy", f.penalty_energy},
               {"units", "J per radian"}};
     }
@@ -125,6 +127,17 @@ namespace fem
                          {"sigma_tt", s.sigma[2]},
                          {"sigma_rz", s.sigma[3]}});
     j["samples"] = samples;
+    if (r.outline)
+      {
+        // Support reactions [N, full 360 degree body] (axisymmetric_fem.h, PartReaction).
+        nlohmann::json reactions = nlohmann::json::array();
+        for (const PartReaction &p : r.reactions)
+          reactions.push_back({{"part", p.part},
+                               {"condition", p.condition},
+                               {"force_r", p.force_r},
+                               {"force_z", p.force_z}});
+        j["reactions"] = reactions;
+      }
     return j;
   }
 } // namespace fem

@@ -8,7 +8,9 @@
 namespace fem
 {
   /// {"solver": "fem", "problem", "discretization", "functionals", "contact", "samples",
-  ///  "diagnostics", "timing"}; "functionals" and "contact" only when the solve produced them.
+  ///  "reactions", "diagnostics", "timing"}; "functionals" and "contact" only when the solve
+  ///  produced them, "reactions" (support parts, N for the full body) for outline problems.
+  ///  The meaning of every key: fem_reference/README.md.
   nlohmann::json result_to_json(const axisym::Problem &problem, const FemOptions &options,
                                 const FemResult &result);
 } // namespace fem

@@ -3,7 +3,9 @@
 // Solves the axisymmetric elastic problem of PROBLEM.json with Q_p elements (p = fem.degree)
 // on the gmsh mesh of level L (fem.refinements or --refinements): the hollow cylinder of
 // DESIGN.md section 7 on its half section z in [0, a], or any section given by its outline
-// (DESIGN.md 7.1) as given, curved edges represented at the element degree. Writes the result
+// (DESIGN.md 7.1) as given, curved edges represented at the element degree, with its body
+// loads (rotation, gravity, temperature; stresses reported are total stresses) and the
+// reactions of its support parts. Writes the result
 // JSON with the same keys as rfm_solve: discretization, the Lagrange/Castigliano/Reissner
 // functionals (J per radian), the contact half-width, force and pressure profile when the
 // problem has a die, fields at the sample points, timings. The conventions are in
@@ -100,6 +102,21 @@ int main(int argc, char **argv)
                  options.degree, options.refinements, mesh, solver,
                  problem.die ? ", contact.method = " + problem.contact.method : "",
                  problem.legacy_cylinder ? "" : ", outline section");
+      if (problem.body_loads.any())
+        {
+          const axisym::BodyLoads &l = problem.body_loads;
+          fmt::print(stderr,
+                     "fem_solve: body loads: angular_velocity = {} rad/s, gravity = {} m/s^2, "
+                     "temperature.field = [{}, {}, {}] (K, K/m, K/m); density = {} kg/m^3, "
+                     "thermal_expansion = {} 1/K; stresses reported are total stresses\n",
+                     l.angular_velocity, l.gravity, l.temperature[0], l.temperature[1],
+                     l.temperature[2],
+                     problem.material.density ? fmt::format("{}", *problem.material.density)
+                                              : std::string("-"),
+                     problem.material.thermal_expansion
+                       ? fmt::format("{}", *problem.material.thermal_expansion)
+                       : std::string("-"));
+        }
 
       // 3. Solve and write.
       const fem::FemResult r = fem::solve(problem, options);
