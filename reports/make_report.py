@@ -804,7 +804,7 @@ def body_loads_section(bl, out_dir):
     md += [f"![body loads]({save(fig, out_dir, 'body_loads_rfm_convergence.png')})", ""]
     hs = bl.get("heated_sphere")
     if hs:
-        md += ["### 6.4 Thick sphere (arcs) heated by T = 1000 r [K] under inner pressure 10 MPa: RFM against FEM", "",
+        md += ["### 6.4 Thick sphere (arcs) heated by T = 1000 z [K] under inner pressure 10 MPa: RFM against FEM", "",
                f"No closed form: the FEM (Q2, curved cells) at each level against the RFM at p = "
                f"{hs['rfm_reference_degree']} (max over the FEM's Gauss-Lobatto points of |s_FEM - s_RFM|, relative to "
                "max |s_RFM|, and the r-weighted L2 difference).", "",
