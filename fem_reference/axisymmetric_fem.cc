@@ -234,7 +234,9 @@ namespace fem
     class StressPostprocessor : public DataPostprocessor<2>
     {
     public:
-      StressPostprocessor(const Stiffness &d, const BodyLoadField &loads) : d_(d), loads_(loads) {}
+      StressPostprocessor(const Stiffness &d, const BodyLoadField &loads)
+        : d_(d), loads_(loads)
+      {}
       void evaluate_vector_field(const DataPostprocessorInputs::Vector<2> &in,
                                  std::vector<Vector<double>> &out) const override
       {
@@ -984,8 +986,8 @@ namespace fem
               const Point<2> x = fe_values.quadrature_point(q);
               const double w = x[0] * fe_values.JxW(q);
               // e = e(u_h) - e_th, s = D e the total stress, U_h = 1/2 int e.D e r.
-              const Stress e =
-                elastic_strain(loads_, x[0], x[1], strain(x[0], u[q][0], grad[q][0], grad[q][1]));
+              const Stress e = elastic_strain(loads_, x[0], x[1],
+                                              strain(x[0], u[q][0], grad[q][0], grad[q][1]));
               const Stress s = d_ * e;
               energy += 0.5 * dot(e, s) * w;
               if (loads_.has_force())
@@ -994,7 +996,8 @@ namespace fem
                   body_force_work += (f[0] * u[q][0] + f[1] * u[q][1]) * w;
                 }
               if (loads_.has_thermal_strain())
-                thermal_strain_work += loads_.thermal_strain(x[0], x[1]) * (s[0] + s[1] + s[2]) * w;
+                thermal_strain_work +=
+                  loads_.thermal_strain(x[0], x[1]) * (s[0] + s[1] + s[2]) * w;
               if (!outline_)
                 {
                   const double psi = (x[0] - r1) / (r2 - r1);
@@ -1048,7 +1051,8 @@ namespace fem
               for (unsigned int q = 0; q < nodes.size(); ++q)
                 {
                   const Point<2> x = fe_nodes.quadrature_point(q);
-                  const Stress s = stress_at(x, strain(x[0], un[q][0], gradn[q][0], gradn[q][1]));
+                  const Stress s =
+                    stress_at(x, strain(x[0], un[q][0], gradn[q][0], gradn[q][1]));
                   const Stress se = exact_(x[0], x[1]);
                   for (int k = 0; k < 4; ++k)
                     {
@@ -1121,7 +1125,8 @@ namespace fem
                   const double w = x[0] * fv.JxW(q); // r ds with r = R2
                   const double target = axisym::die_u_r(*problem_.die, g, x[1]);
                   const double gap = uf[q][0] - target;
-                  const Stress s = stress_at(x, strain(x[0], uf[q][0], gradf[q][0], gradf[q][1]));
+                  const Stress s =
+                    stress_at(x, strain(x[0], uf[q][0], gradf[q][0], gradf[q][1]));
                   trace += s[0] * fv.JxW(q);
                   const bool in_zone =
                     active ? static_cast<bool>((*active)[k * n_fq + q]) : prescribed_face;
