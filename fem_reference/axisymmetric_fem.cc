@@ -388,6 +388,7 @@ namespace fem
       double base_mesh_size_ = 0;
       unsigned long n_base_cells_ = 0;
       bool base_mesh_subdivided_ = false;
+      unsigned int base_mesh_flat_corners_ = 0;
       Stiffness d_;
       BodyLoadField loads_; ///< f and e_th (outline problems; none for the legacy form)
       QGauss<2> cell_quadrature_;
@@ -527,6 +528,20 @@ namespace fem
                                          parts[id - 1]);
               face->set_manifold_id(static_cast<types::manifold_id>(edge + 1));
             }
+      // A cell with two faces on the same outline edge has a corner of 180 degrees on it (flat
+      // once an arc's faces are curved): the Jacobian is singular there and the stress near
+      // that vertex converges slowly. Counted and reported; the mesh is not changed.
+      base_mesh_flat_corners_ = 0;
+      for (const auto &cell : triangulation_.active_cell_iterators())
+        {
+          std::vector<types::manifold_id> on_edges;
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              on_edges.push_back(face->manifold_id());
+          std::sort(on_edges.begin(), on_edges.end());
+          if (std::adjacent_find(on_edges.begin(), on_edges.end()) != on_edges.end())
+            ++base_mesh_flat_corners_;
+        }
       using Geometry = FemOptions::OutlineGeometry;
       const bool curved = options_.outline_geometry != Geometry::coarse_polygon;
       for (std::size_t i = 0; i < edges.size(); ++i)
@@ -1486,12 +1501,17 @@ namespace fem
               result.base_mesh_size = base_mesh_size_;
               result.n_base_cells = n_base_cells_;
               result.base_mesh_subdivided = base_mesh_subdivided_;
+              result.base_mesh_flat_corners = base_mesh_flat_corners_;
               std::ostringstream line;
               line.precision(6);
               if (outline_)
                 line << "outline section: base mesh " << n_base_cells_ << " cells (h0 = "
                      << base_mesh_size_ << " m" << (base_mesh_subdivided_ ? ", subdivided" : "")
                      << "), ";
+              if (outline_ && base_mesh_flat_corners_ > 0)
+                progress("warning: " + std::to_string(base_mesh_flat_corners_) +
+                         " base cell(s) with two faces on one outline edge (a 180 degree "
+                         "corner): the stress next to that boundary vertex converges slowly");
               line << "pass " << pass << ", L = " << level_ << ", Q" << options_.degree << ": "
                    << result.n_cells << " cells, " << result.n_dofs << " dofs ("
                    << result.mesh_generator << " mesh";

@@ -572,7 +572,8 @@ namespace fem
   // recombination leaves a quad with two edges on the outer arc (vertices at 67.5, 78.75 and
   // 90 degrees), whose corner on the arc is flat once the edges are curved. There the
   // max-norm error was 3.5, 0.55, 0.11 of max |s| at L = 1, 2, 3 (L2 unaffected: 1.8e-3,
-  // 4.5e-4, 1.1e-4); with 5 it is 3.9e-3, 9.7e-4, 2.4e-4 (fem_reference/README.md).
+  // 4.5e-4, 1.1e-4); with 5 it is 3.9e-3, 9.7e-4, 2.4e-4 (fem_reference/README.md;
+  // FemResult::base_mesh_flat_corners counts such cells).
   TEST(AxisymmetricFemBodyLoads, RotatingSolidSphereConvergesAtOrderTwoOnACurvedBoundary)
   {
     const RotatingSphere exact;
@@ -591,6 +592,7 @@ namespace fem
     const std::vector<Level> levels = solve_levels(
       p, 1, 3, [&](double r, double z) { return exact.stress(r, z); },
       [&](double r, double z) { return exact.displacement(r, z); }, "rotating sphere", 5);
+    EXPECT_EQ(levels.back().result.base_mesh_flat_corners, 0u);
     EXPECT_NEAR(rate(levels, &Level::stress_l2), 2.0, rate_tolerance);
     EXPECT_NEAR(rate(levels, &Level::stress_max), 2.0, rate_tolerance);
     EXPECT_NEAR(rate(levels, &Level::displacement_l2), 3.0, rate_tolerance);
