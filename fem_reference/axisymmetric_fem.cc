@@ -234,7 +234,9 @@ namespace fem
     class StressPostprocessor : public DataPostprocessor<2>
     {
     public:
-      StressPostprocessor(const Stiffness &d, const BodyLoadField &loads) : d_(d), loads_(loads) {}
+      StressPostprocessor(const Stiffness &d, const BodyLoadField &loads)
+        : d_(d), loads_(loads)
+      {}
       void evaluate_vector_field(const DataPostprocessorInputs::Vector<2> &in,
                                  std::vector<Vector<double>> &out) const override
       {
@@ -386,6 +388,7 @@ namespace fem
       double base_mesh_size_ = 0;
       unsigned long n_base_cells_ = 0;
       bool base_mesh_subdivided_ = false;
+      unsigned int base_mesh_flat_corners_ = 0;
       Stiffness d_;
       BodyLoadField loads_; ///< f and e_th (outline problems; none for the legacy form)
       QGauss<2> cell_quadrature_;
@@ -525,6 +528,20 @@ namespace fem
                                          parts[id - 1]);
               face->set_manifold_id(static_cast<types::manifold_id>(edge + 1));
             }
+      // A cell with two faces on the same outline edge has a corner of 180 degrees on it (flat
+      // once an arc's faces are curved): the Jacobian is singular there and the stress near
+      // that vertex converges slowly. Counted and reported; the mesh is not changed.
+      base_mesh_flat_corners_ = 0;
+      for (const auto &cell : triangulation_.active_cell_iterators())
+        {
+          std::vector<types::manifold_id> on_edges;
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              on_edges.push_back(face->manifold_id());
+          std::sort(on_edges.begin(), on_edges.end());
+          if (std::adjacent_find(on_edges.begin(), on_edges.end()) != on_edges.end())
+            ++base_mesh_flat_corners_;
+        }
       using Geometry = FemOptions::OutlineGeometry;
       const bool curved = options_.outline_geometry != Geometry::coarse_polygon;
       for (std::size_t i = 0; i < edges.size(); ++i)
@@ -984,8 +1001,8 @@ namespace fem
               const Point<2> x = fe_values.quadrature_point(q);
               const double w = x[0] * fe_values.JxW(q);
               // e = e(u_h) - e_th, s = D e the total stress, U_h = 1/2 int e.D e r.
-              const Stress e =
-                elastic_strain(loads_, x[0], x[1], strain(x[0], u[q][0], grad[q][0], grad[q][1]));
+              const Stress e = elastic_strain(loads_, x[0], x[1],
+                                              strain(x[0], u[q][0], grad[q][0], grad[q][1]));
               const Stress s = d_ * e;
               energy += 0.5 * dot(e, s) * w;
               if (loads_.has_force())
@@ -994,7 +1011,8 @@ namespace fem
                   body_force_work += (f[0] * u[q][0] + f[1] * u[q][1]) * w;
                 }
               if (loads_.has_thermal_strain())
-                thermal_strain_work += loads_.thermal_strain(x[0], x[1]) * (s[0] + s[1] + s[2]) * w;
+                thermal_strain_work +=
+                  loads_.thermal_strain(x[0], x[1]) * (s[0] + s[1] + s[2]) * w;
               if (!outline_)
                 {
                   const double psi = (x[0] - r1) / (r2 - r1);
@@ -1048,7 +1066,8 @@ namespace fem
               for (unsigned int q = 0; q < nodes.size(); ++q)
                 {
                   const Point<2> x = fe_nodes.quadrature_point(q);
-                  const Stress s = stress_at(x, strain(x[0], un[q][0], gradn[q][0], gradn[q][1]));
+                  const Stress s =
+                    stress_at(x, strain(x[0], un[q][0], gradn[q][0], gradn[q][1]));
                   const Stress se = exact_(x[0], x[1]);
                   for (int k = 0; k < 4; ++k)
                     {
@@ -1121,7 +1140,8 @@ namespace fem
                   const double w = x[0] * fv.JxW(q); // r ds with r = R2
                   const double target = axisym::die_u_r(*problem_.die, g, x[1]);
                   const double gap = uf[q][0] - target;
-                  const Stress s = stress_at(x, strain(x[0], uf[q][0], gradf[q][0], gradf[q][1]));
+                  const Stress s =
+                    stress_at(x, strain(x[0], uf[q][0], gradf[q][0], gradf[q][1]));
                   trace += s[0] * fv.JxW(q);
                   const bool in_zone =
                     active ? static_cast<bool>((*active)[k * n_fq + q]) : prescribed_face;
@@ -1481,12 +1501,17 @@ namespace fem
               result.base_mesh_size = base_mesh_size_;
               result.n_base_cells = n_base_cells_;
               result.base_mesh_subdivided = base_mesh_subdivided_;
+              result.base_mesh_flat_corners = base_mesh_flat_corners_;
               std::ostringstream line;
               line.precision(6);
               if (outline_)
                 line << "outline section: base mesh " << n_base_cells_ << " cells (h0 = "
                      << base_mesh_size_ << " m" << (base_mesh_subdivided_ ? ", subdivided" : "")
                      << "), ";
+              if (outline_ && base_mesh_flat_corners_ > 0)
+                progress("warning: " + std::to_string(base_mesh_flat_corners_) +
+                         " base cell(s) with two faces on one outline edge (a 180 degree "
+                         "corner): the stress next to that boundary vertex converges slowly");
               line << "pass " << pass << ", L = " << level_ << ", Q" << options_.degree << ": "
                    << result.n_cells << " cells, " << result.n_dofs << " dofs ("
                    << result.mesh_generator << " mesh";

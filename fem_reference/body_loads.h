@@ -2,9 +2,9 @@
 // them: the body force per unit volume and the thermal strain. No deal.II here (the local
 // integrands in axisymmetric_fem.cc call these at their quadrature points).
 //
-//   f = (f_r, f_z) = (density omega^2 r, -density g)          [N/m^3]
-//   T = T0 + T_r r + T_z z                                    [K], change from the stress-free state
-//   e_th = alpha T (1, 1, 1, 0) in the order (rr, zz, tt, rz)  (no thermal shear strain)
+//   f = (f_r, f_z) = (density omega^2 r, -density g)   [N/m^3]
+//   T = T0 + T_r r + T_z z                             [K], the change from the stress-free state
+//   e_th = alpha T (1, 1, 1, 0)                        in the order (rr, zz, tt, rz): no shear
 //
 // omega = loading.angular_velocity [rad/s] (the rotation about the z axis: f is the
 // centrifugal force of the rotating frame, along +e_r), g = loading.gravity [m/s^2] (gravity

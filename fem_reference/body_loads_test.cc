@@ -21,8 +21,10 @@ namespace fem
 
   TEST(BodyLoadField, RotationGravityAndTemperatureAsInDesign71)
   {
-    const axisym::Problem p = axisym::parse_problem(sphere_with(
-      {{"angular_velocity", 300.0}, {"gravity", 9.81}, {"temperature", {{"field", {50.0, -200.0, 100.0}}}}}));
+    const axisym::Problem p = axisym::parse_problem(
+      sphere_with({{"angular_velocity", 300.0},
+                   {"gravity", 9.81},
+                   {"temperature", {{"field", {50.0, -200.0, 100.0}}}}}));
     const BodyLoadField loads(p);
     EXPECT_TRUE(loads.has_force());
     EXPECT_TRUE(loads.has_thermal_strain());

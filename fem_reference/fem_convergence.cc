@@ -10,6 +10,8 @@
 // Sample run:
 //   build/bin/fem_convergence verification/problems/die_unilateral.json --max-refinements 4
 //
+// Outline problems (DESIGN.md 7.1) are refused (exit 2): run fem_solve per level for them.
+//
 // Exit status: 0 success, 2 bad input, 3 numerical failure (the study so far is written).
 #include "fem_reference/axisymmetric_fem.h"
 #include "problem/problem.h"
@@ -91,6 +93,13 @@ int main(int argc, char **argv)
           return status == 0 ? 0 : 2;
         }
       const axisym::Problem problem = axisym::read_problem_file(problem_path);
+      // The study compares with the Lame solution or studies the die: the hollow-cylinder form.
+      // (An outline problem used to run against a Lame solution built from absent pressures.)
+      if (!problem.legacy_cylinder)
+        throw axisym::InputError("problem file " + problem_path +
+                                 ": fem_convergence studies the hollow-cylinder form only "
+                                 "(geometry.inner_radius, ...); for an outline section run "
+                                 "fem_solve --refinements L");
       fem::FemOptions base = fem::options_from_problem(problem);
       if (degree > 0)
         base.degree = degree;

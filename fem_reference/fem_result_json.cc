@@ -51,6 +51,7 @@ namespace fem
         {"base_mesh_size", r.base_mesh_size},
         {"base_cells_on_shortest_edge", options.outline_cells_on_shortest_edge},
         {"base_mesh_subdivided", r.base_mesh_subdivided},
+        {"base_mesh_flat_corners", r.base_mesh_flat_corners},
         {"grading", nullptr},
         {"linear_solver", linear_solver},
         {"section", "the outline as given (geometry.outline), no mirroring"}};
