@@ -20,6 +20,8 @@
 
 namespace fem
 {
+  /// The loads of one problem, checked once; the values come from the problem layer
+  /// (axisym::body_force, axisym::thermal_strain), the one definition both solvers use.
   class BodyLoadField
   {
   public:
@@ -31,22 +33,20 @@ namespace fem
     bool has_thermal_strain() const { return has_thermal_; }
     bool any() const { return has_force_ || has_thermal_; }
 
-    /// f = (density omega^2 r, -density g) [N/m^3] (z kept for a uniform signature).
-    std::array<double, 2> force(double r, [[maybe_unused]] double z) const
+    /// f = (density omega^2 r, -density g) [N/m^3].
+    std::array<double, 2> force(double r, double z) const
     {
-      return {{density_omega2_ * r, -density_g_}};
-    }
-    /// T = T0 + T_r r + T_z z [K].
-    double temperature(double r, double z) const
-    {
-      return temperature_[0] + temperature_[1] * r + temperature_[2] * z;
+      return has_force_ ? axisym::body_force(loads_, material_, r, z) : std::array<double, 2>{};
     }
     /// alpha T: each of e_rr, e_zz, e_tt of the thermal strain (e_rz = 0).
-    double thermal_strain(double r, double z) const { return alpha_ * temperature(r, z); }
+    double thermal_strain(double r, double z) const
+    {
+      return has_thermal_ ? axisym::thermal_strain(loads_, material_, r, z) : 0.0;
+    }
 
   private:
     bool has_force_ = false, has_thermal_ = false;
-    double density_omega2_ = 0, density_g_ = 0, alpha_ = 0;
-    std::array<double, 3> temperature_{{0, 0, 0}};
+    axisym::BodyLoads loads_;
+    axisym::Material material_;
   };
 } // namespace fem
