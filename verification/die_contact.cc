@@ -162,6 +162,8 @@ nlohmann::json run(const verification::DriverContext &context)
       if (r.half_width_range)
         j["half_width_range_ratio"] = {r.half_width_range->first / a,
                                        r.half_width_range->second / a};
+      if (r.edge_intensity_root)
+        j["edge_intensity_root_ratio"] = *r.edge_intensity_root / a;
       for (const auto &it : r.history)
         j["history"].push_back(rfm::to_json(it, base));
       const std::string key = run.method + "_p" + std::to_string(run.degree) +
