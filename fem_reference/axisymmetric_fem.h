@@ -218,8 +218,9 @@ namespace fem
     double base_mesh_size = 0;     ///< outline: h0 [m]
     unsigned long n_base_cells = 0; ///< outline: cells of the gmsh base mesh
     bool base_mesh_subdivided = false; ///< outline: gmsh's all-quad fallback was used
-    /// outline: base cells with two faces on the same outline edge (a 180 degree corner on
-    /// the boundary; near it the pointwise stress converges slowly). 0 is the normal case.
+    /// outline: base cells with two boundary faces meeting where the outline is smooth (a
+    /// 180 degree corner on the boundary, a singular Jacobian there) that remain after the
+    /// generator's retries with more cells (fem_reference/README.md). 0 is the normal case.
     unsigned int base_mesh_flat_corners = 0;
     Functionals functionals;
     std::optional<ContactResult> contact;
