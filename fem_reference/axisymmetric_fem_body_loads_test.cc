@@ -10,6 +10,7 @@
 // Reported errors are relative: the r-weighted L2 norm ||s_h - s|| / ||s|| and the max error
 // at the cells' Gauss-Lobatto points max |s_h - s| / max |s| (FemResult).
 #include "fem_reference/axisymmetric_fem.h"
+#include "problem/test_problems.h"
 
 #include <gtest/gtest.h>
 
@@ -492,15 +493,9 @@ namespace fem
   // weight only by the geometry error of the mapped arcs.
   TEST(AxisymmetricFemBodyLoads, HemisphericalShellUnderGravityRestsItsWeightOnTheEquator)
   {
-    nlohmann::json j = nlohmann::json::parse(R"({
-      "geometry": {"outline": [
-        {"start": [0.1, 0.0]},
-        {"line_to": [0.2, 0.0], "part": "equator"},
-        {"arc_to": [0.0, 0.2], "center": [0.0, 0.0], "part": "outer"},
-        {"line_to": [0.0, 0.1], "part": "axis"},
-        {"arc_to": [0.1, 0.0], "center": [0.0, 0.0], "part": "inner"}]},
-      "boundary": {"equator": {"symmetry": true}},
-      "loading": {"gravity": 9.81}})");
+    nlohmann::json j = axisym::testing::thick_sphere(); // the quarter annulus a = 0.1, b = 0.2
+    j["boundary"] = {{"equator", {{"symmetry", true}}}};
+    j["loading"] = {{"gravity", 9.81}};
     j["material"] = rectangle(0, 1, 1)["material"];
     const axisym::Problem p = axisym::parse_problem(j);
     const double a = 0.1, b = 0.2, weight = density * 9.81 * 2 * pi / 3 * (b * b * b - a * a * a);
@@ -524,16 +519,10 @@ namespace fem
   // stress, no reaction, no energy. u is linear, so isoparametric Q2 holds it to rounding.
   TEST(AxisymmetricFemBodyLoads, UniformTemperatureLeavesACurvedSectorStressFree)
   {
-    nlohmann::json j = nlohmann::json::parse(R"({
-      "geometry": {"outline": [
-        {"start": [0.1, 0.0]},
-        {"line_to": [0.2, 0.0], "part": "equator"},
-        {"arc_to": [0.1, 0.17320508075688773], "center": [0.0, 0.0], "part": "outer"},
-        {"line_to": [0.05, 0.08660254037844387], "part": "cone"},
-        {"arc_to": [0.1, 0.0], "center": [0.0, 0.0], "part": "inner"}]},
-      "boundary": {"equator": {"symmetry": true}, "cone": {"symmetry": true}},
-      "loading": {"temperature": {"field": [80.0, 0.0, 0.0]}},
-      "samples": [[0.15, 0.0], [0.1, 0.17320508075688773]]})");
+    nlohmann::json j = axisym::testing::thick_sphere_sector();
+    j["boundary"] = {{"equator", {{"symmetry", true}}}, {"cone", {{"symmetry", true}}}};
+    j["loading"] = {{"temperature", {{"field", {80.0, 0.0, 0.0}}}}};
+    j["samples"] = {{0.15, 0.0}, {0.1, 0.17320508075688773}};
     j["material"] = rectangle(0, 1, 1)["material"];
     const axisym::Problem p = axisym::parse_problem(j);
     const double t0 = 80, s_scale = youngs_modulus * thermal_expansion * t0;

@@ -285,21 +285,12 @@ namespace fem
     return j.dump();
   }();
 
-  // The sphere's sector 0 <= polar angle from the equator <= 60 degrees: the cone
-  // phi = 60 degrees is an inclined symmetry edge (u.n = 0 with n = (-sin 60, cos 60)),
-  // which the spherically symmetric solution satisfies.
-  const char *const sphere_sector_json = R"({
-    "geometry": {"outline": [
-      {"start": [0.1, 0.0]},
-      {"line_to": [0.2, 0.0], "part": "equator"},
-      {"arc_to": [0.1, 0.17320508075688773], "center": [0.0, 0.0], "part": "outer"},
-      {"line_to": [0.05, 0.08660254037844387], "part": "cone"},
-      {"arc_to": [0.1, 0.0], "center": [0.0, 0.0], "part": "inner"}]},
-    "boundary": {"equator": {"symmetry": true}, "cone": {"symmetry": true},
-                 "inner": {"pressure": 1.0e7}},
-    "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3},
-    "fem": {"degree": 2, "refinements": 2}
-  })";
+  // The sphere's 60 degree sector (axisym::testing::thick_sphere_sector()), FEM Q2 at L = 2.
+  const std::string sphere_sector_json = [] {
+    nlohmann::json j = axisym::testing::thick_sphere_sector();
+    j["fem"] = {{"degree", 2}, {"refinements", 2}};
+    return j.dump();
+  }();
 
   /// Lame's thick sphere: sigma_RR = A - B / R^3, sigma_phiphi = sigma_tt = A + B / (2 R^3)
   /// with B = (p_i - p_o) a^3 b^3 / (b^3 - a^3), A = (p_i a^3 - p_o b^3) / (b^3 - a^3)
@@ -544,7 +535,7 @@ namespace fem
   // line per node.
   TEST(AxisymmetricFemOutline, InclinedSymmetryEdgeMatchesTheSphere)
   {
-    const axisym::Problem p = outline_problem(sphere_sector_json);
+    const axisym::Problem p = outline_problem(sphere_sector_json.c_str());
     const ThickSphere exact;
     const Errors coarse = sphere_errors(p, exact, 1), fine = sphere_errors(p, exact, 2);
     std::cout << "sphere sector L = 1, 2: stress " << coarse.stress << ", " << fine.stress
@@ -585,7 +576,7 @@ namespace fem
         ASSERT_TRUE(r.success) << r.message;
         EXPECT_EQ(r.base_mesh_flat_corners, 0u);
       }
-    for (const char *json : {solid_cylinder_json, sphere_json.c_str(), sphere_sector_json})
+    for (const char *json : {solid_cylinder_json, sphere_json.c_str(), sphere_sector_json.c_str()})
       EXPECT_EQ(solve(outline_problem(json), quiet(2, 0)).base_mesh_flat_corners, 0u);
   }
 

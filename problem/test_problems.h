@@ -1,5 +1,6 @@
 // Test support shared by the unit tests of problem/, rfm/ and fem_reference/ (header only,
-// never linked into a solver): the thick sphere of DESIGN.md 7.1 as a problem file, and a
+// never linked into a solver): the thick sphere of DESIGN.md 7.1 and its 60-degree sector as
+// problem files, and a
 // command-line runner for the solvers' CLI tests.
 #pragma once
 
@@ -26,6 +27,23 @@ namespace axisym::testing
         {"line_to": [0.0, 0.1], "part": "axis"},
         {"arc_to": [0.1, 0.0], "center": [0.0, 0.0], "part": "inner"}]},
       "boundary": {"equator": {"symmetry": true}, "inner": {"pressure": 1.0e7}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})");
+  }
+
+  /// The sector 0 <= polar angle from the equator <= 60 degrees of the same shell: the cone
+  /// phi = 60 degrees is an inclined symmetry edge (u.n = 0 with n = (-sin 60, cos 60)),
+  /// which a spherically symmetric solution satisfies; inner pressure 10 MPa, steel.
+  inline nlohmann::json thick_sphere_sector()
+  {
+    return nlohmann::json::parse(R"({
+      "geometry": {"outline": [
+        {"start": [0.1, 0.0]},
+        {"line_to": [0.2, 0.0], "part": "equator"},
+        {"arc_to": [0.1, 0.17320508075688773], "center": [0.0, 0.0], "part": "outer"},
+        {"line_to": [0.05, 0.08660254037844387], "part": "cone"},
+        {"arc_to": [0.1, 0.0], "center": [0.0, 0.0], "part": "inner"}]},
+      "boundary": {"equator": {"symmetry": true}, "cone": {"symmetry": true},
+                   "inner": {"pressure": 1.0e7}},
       "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})");
   }
 

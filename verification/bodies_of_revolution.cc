@@ -17,6 +17,7 @@
 #include "problem/problem.h"
 #include "rfm/outline_model.h"
 #include "verification/driver.h"
+#include "verification/outline_errors.h"
 #include "verification/sphere_exact.h"
 
 #include <fmt/core.h>
@@ -25,21 +26,9 @@
 
 namespace
 {
-  // Max over the grid points and components of |s_h - s|, relative to max |s|.
-  template <typename Exact>
-  double max_stress_error(const rfm::OutlineModel &m, const Eigen::VectorXd &r,
-                          const Eigen::VectorXd &z, Exact exact)
-  {
-    const rfm::FieldValues f = m.evaluate(r, z);
-    double err = 0, max = 0;
-    for (Eigen::Index k = 0; k < r.size(); ++k)
-      {
-        const std::array<double, 4> s = exact(r[k], z[k]);
-        for (int c = 0; c < 4; ++c)
-          err = std::max(err, std::abs(f.sigma(k, c) - s[c])), max = std::max(max, std::abs(s[c]));
-      }
-    return err / max;
-  }
+  using verification::max_stress_error;
+  using verification::observed_order;
+
 
   fem::FemOptions quiet_fem(const axisym::Problem &problem, const int level)
   {
@@ -49,7 +38,6 @@ namespace
     return o;
   }
 
-  double observed_order(double e_coarse, double e_fine) { return std::log2(e_coarse / e_fine); }
 } // namespace
 
 nlohmann::json run(const verification::DriverContext &context)

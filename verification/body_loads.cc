@@ -22,6 +22,7 @@
 #include "rfm/quadrature.h"
 #include "verification/body_load_exact.h"
 #include "verification/driver.h"
+#include "verification/outline_errors.h"
 
 #include <fmt/core.h>
 
@@ -29,6 +30,9 @@
 
 namespace
 {
+  using verification::max_stress_error;
+  using verification::observed_order;
+
   using Stress = std::function<std::array<double, 4>(double, double)>;
 
   rfm::OutlineModel solve_rfm(const axisym::Problem &problem, const int p, const std::string &name)
@@ -55,20 +59,6 @@ namespace
     return f;
   }
 
-  // Max over the points and components of |s_h - s|, relative to max |s|.
-  double max_stress_error(const rfm::OutlineModel &m, const Eigen::VectorXd &r,
-                          const Eigen::VectorXd &z, const Stress &exact)
-  {
-    const rfm::FieldValues f = m.evaluate(r, z);
-    double err = 0, max = 0;
-    for (Eigen::Index k = 0; k < r.size(); ++k)
-      {
-        const std::array<double, 4> s = exact(r[k], z[k]);
-        for (int c = 0; c < 4; ++c)
-          err = std::max(err, std::abs(f.sigma(k, c) - s[c])), max = std::max(max, std::abs(s[c]));
-      }
-    return err / max;
-  }
 
   // A grid of the rectangle [r0, r1] x [0, h] (r0 = 0 moved off the axis by 1e-9 m).
   std::pair<Eigen::VectorXd, Eigen::VectorXd> grid(double r0, double r1, double h, int nr, int nz)
@@ -92,7 +82,6 @@ namespace
     return c;
   }
 
-  double observed_order(double e_coarse, double e_fine) { return std::log2(e_coarse / e_fine); }
 
   // Cases 1-3: a plane-strain cylinder [a, 0.2] x [0, 0.1] against its closed form.
   nlohmann::json cylinder_case(const verification::DriverContext &context, const std::string &file,
