@@ -687,6 +687,21 @@ def interval_cell(r):
     return f"[{rng[0]:.4f}, {rng[1]:.4f}]" if rng else "-"
 
 
+def fem_error_rows(fem, first_header):
+    """Table rows of a driver's FEM levels ("L1", "L2", ...): DoFs, L2 stress error with the
+    observed order against the previous level, max stress error, time."""
+    md = [f"| {first_header} | DoFs | L2 stress err | observed order | max stress err | time [s] |",
+          "|---|---|---|---|---|---|"]
+    prev = None
+    for k in sorted([k for k in fem if k.startswith("L")], key=lambda k: int(k[1:])):
+        r = fem[k]
+        order = "" if prev is None else f"{np.log2(prev / r['l2_error_relative']):.2f}"
+        md.append(f"| {k[1:]} | {r['dofs']} | {r['l2_error_relative']:.3e} | {order} | "
+                  f"{r['max_error_relative']:.3e} | {r['seconds']:.3f} |")
+        prev = r["l2_error_relative"]
+    return md
+
+
 def bodies_section(bor, out_dir):
     """Sections given by their outline (DESIGN.md 7.1): sphere, solid cylinder, grooved shaft."""
     md = ["## 5. Any body of revolution: sections given by their outline (`bodies_of_revolution`)", ""]
@@ -709,16 +724,7 @@ def bodies_section(bor, out_dir):
     md.append("FEM Q2 on curved cells (PolarManifold on the arcs, MappingQ2): r-weighted L2 and max "
               "stress errors.")
     md.append("")
-    md.append("| L | DoFs | L2 stress err | observed order | max stress err | time [s] |")
-    md.append("|---|---|---|---|---|---|")
-    ls = sorted([k for k in sph["fem"] if k.startswith("L")], key=lambda k: int(k[1:]))
-    prev = None
-    for k in ls:
-        r = sph["fem"][k]
-        order = "" if prev is None else f"{np.log2(prev / r['l2_error_relative']):.2f}"
-        md.append(f"| {k[1:]} | {r['dofs']} | {r['l2_error_relative']:.3e} | {order} | "
-                  f"{r['max_error_relative']:.3e} | {r['seconds']:.3f} |")
-        prev = r["l2_error_relative"]
+    md += fem_error_rows(sph["fem"], "L")
     md.append("")
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     ax.semilogy([int(k[1:]) for k in ps], [sph["rfm"][k]["max_error_relative"] for k in ps], "o-",
@@ -793,15 +799,7 @@ def body_loads_section(bl, out_dir):
             r = c["rfm"][k]
             md.append(f"| {k[1:]} | {r['N']} | {r['max_error_relative']:.3e} | {r['indicator']:.3e} | "
                       f"{r['functional_error_relative']:.3e} | {r['seconds']:.3f} |")
-        md += ["", "| FEM Q2, L | DoFs | L2 stress err | observed order | max stress err | time [s] |",
-               "|---|---|---|---|---|---|"]
-        prev = None
-        for k in sorted([k for k in c["fem"] if k.startswith("L")], key=lambda k: int(k[1:])):
-            r = c["fem"][k]
-            order = "" if prev is None else f"{np.log2(prev / r['l2_error_relative']):.2f}"
-            md.append(f"| {k[1:]} | {r['dofs']} | {r['l2_error_relative']:.3e} | {order} | "
-                      f"{r['max_error_relative']:.3e} | {r['seconds']:.3f} |")
-            prev = r["l2_error_relative"]
+        md += [""] + fem_error_rows(c["fem"], "FEM Q2, L")
         md.append("")
         if key != "spinning_solid_cylinder":
             ax.semilogy([int(k[1:]) for k in ps], [c["rfm"][k]["max_error_relative"] for k in ps], "o-",
