@@ -6,6 +6,7 @@
 #include "rfm/discrete_space.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <limits>
 #include <memory>
 #include <string>
@@ -13,6 +14,14 @@
 
 namespace rfm
 {
+  /// x as "1.234e-08" (std::to_string prints indicators and tolerances as 0.000000).
+  inline std::string scientific(const double x)
+  {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.3e", x);
+    return buffer;
+  }
+
   /// One degree of a tolerance-driven solve.
   struct DegreeStep
   {
@@ -57,7 +66,7 @@ namespace rfm
         if (value < tolerance)
           {
             out.reached = true;
-            out.message = "indicator " + std::to_string(value) + " < tolerance at p = " +
+            out.message = "indicator " + scientific(value) + " < tolerance at p = " +
                           std::to_string(p);
             return out;
           }
@@ -65,15 +74,15 @@ namespace rfm
         best = std::min(best, value);
         if (steps_without_progress >= 2)
           {
-            out.message = "the indicator stopped decreasing at " + std::to_string(best) +
+            out.message = "the indicator stopped decreasing at " + scientific(best) +
                           " (p = " + std::to_string(p) + "), above the tolerance " +
-                          std::to_string(tolerance);
+                          scientific(tolerance);
             return out;
           }
       }
-    out.message = "tolerance " + std::to_string(tolerance) + " not reached by rfm.max_degree = " +
+    out.message = "tolerance " + scientific(tolerance) + " not reached by rfm.max_degree = " +
                   std::to_string(options.max_degree) + " (indicator " +
-                  std::to_string(out.steps.empty() ? best : out.steps.back().indicator) + ")";
+                  scientific(out.steps.empty() ? best : out.steps.back().indicator) + ")";
     return out;
   }
 } // namespace rfm
