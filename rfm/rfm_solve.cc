@@ -124,7 +124,10 @@ namespace
         if (!m.ok())
           continue;
         const rfm::ContactForce f = m.contact_force();
-        const double k_edge = m.edge_intensity();
+        const double k_edge =
+          c < a && m.space().enrichment()
+            ? rfm::edge_intensity_interaction(m, problem, c, rfm::interaction_radius(problem.geometry, c))
+            : std::numeric_limits<double>::quiet_NaN();
         out.push_back({{"half_width", c},
                        {"force", f.domain},
                        {"force_trace", f.trace},

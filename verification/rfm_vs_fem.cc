@@ -396,6 +396,7 @@ nlohmann::json run(const verification::DriverContext &context)
         (ca <= 0.6 ? worst_short : worst_long) = std::max(ca <= 0.6 ? worst_short : worst_long, diff);
         curve.push_back({{"half_width_ratio", ca}, {"fem_force", fr.contact->force},
                          {"rfm_force", rr.final.force}, {"rfm_edge_intensity", rr.final.edge_intensity},
+                         {"rfm_edge_intensity_coefficient", rr.final.edge_intensity_coefficient},
                          {"rfm_edge_intensity_reciprocal_work", rr.final.edge_intensity_reciprocal_work},
                          {"force_difference_relative", diff}});
         fmt::print("P({:.2f} a): FEM L={} {:.1f} N, RFM p={} {:.1f} N ({:.2e}); K = {:.4g} Pa m^1/2\n",
