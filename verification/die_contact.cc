@@ -67,7 +67,8 @@ nlohmann::json run(const verification::DriverContext &context)
                             {"paper", paper},
                             {"contact_options", {{"tolerance", options.tolerance},
                                                  {"n_check_points", options.n_check_points},
-                                                 {"violation_tolerance", options.violation_tolerance}}}};
+                                                 {"violation_tolerance", options.violation_tolerance},
+                                                 {"penetration_tolerance", options.penetration_tolerance}}}};
 
   // 2. Iteration 0: bilateral contact over the whole outer side.
   fmt::print("== Iteration 0 (c = a): P against the paper's 128.7 kN, Phi against 0.0176 J ==\n");

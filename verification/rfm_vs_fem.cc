@@ -180,7 +180,8 @@ nlohmann::json run(const verification::DriverContext &context)
                {"contact_options", {{"max_iterations", co.max_iterations},
                                     {"tolerance", co.tolerance},
                                     {"n_check_points", co.n_check_points},
-                                    {"violation_tolerance", co.violation_tolerance}}}}}};
+                                    {"violation_tolerance", co.violation_tolerance},
+                                    {"penetration_tolerance", co.penetration_tolerance}}}}}};
   }
   // 2a. Iteration 0, both methods.
   {
