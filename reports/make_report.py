@@ -463,15 +463,20 @@ def comparison_section(cmp, die, out_dir):
     if "bilateral_curve" in d:
         md.append("P(c) of the bilateral problem at the default degree against the FEM's, with the RFM's edge intensity K:")
         md.append("")
-        md.append("| c / a | P FEM [kN] | P RFM [kN] | difference | K [Pa m^1/2] | K, n = 1 coefficient | K, contour |")
-        md.append("|---|---|---|---|---|---|---|")
+        md.append("| c / a | P FEM [kN] | P RFM [kN] | difference | K FEM [Pa m^1/2] | K RFM [Pa m^1/2] | K RFM, n = 1 coefficient | K RFM, contour |")
+        md.append("|---|---|---|---|---|---|---|---|")
         for r in d["bilateral_curve"]:
             krw = r.get("rfm_edge_intensity_reciprocal_work")
             kco = r.get("rfm_edge_intensity_coefficient")
             md.append(f"| {r['half_width_ratio']:.2f} | {r['fem_force']/1e3:.3f} | {r['rfm_force']/1e3:.3f} | "
-                      f"{r['force_difference_relative']:.1e} | {r['rfm_edge_intensity']:.4g} | "
-                      f"{fmt(kco, '{:.4g}')} | {fmt(krw, '{:.4g}')} |")
+                      f"{r['force_difference_relative']:.1e} | {fmt(r.get('fem_edge_intensity'), '{:.5g}')} | "
+                      f"{r['rfm_edge_intensity']:.5g} | {fmt(kco, '{:.4g}')} | {fmt(krw, '{:.4g}')} |")
         md.append("")
+        kd = ag.get("bilateral_edge_intensity_max_difference_relative")
+        if kd is not None:
+            md.append(f"K of both solvers by the same interaction integral (the FEM's fields sampled at its points): "
+                      f"max |K_RFM - K_FEM| / max |K_FEM| = {kd:.1e}.")
+            md.append("")
         md.append("K from the axisymmetric interaction integral (a domain integral of Betti's theorem with the n = -1 "
                   "mode over the half disc of radius 0.9 min(c, a - c, R2 - R1), with the hoop terms), from the n = 1 "
                   "coefficient of the stress space, and from the plane-strain contour integral on the half circle "

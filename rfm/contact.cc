@@ -93,7 +93,21 @@ namespace rfm
     return 0.9 * std::min({c, g.half_length() - c, g.outer_radius - g.inner_radius});
   }
 
+  Quadrature2D interaction_quadrature(const Geometry &g, const double c, const double rho_1)
+  {
+    return half_disc_gauss(g.outer_radius, c, rho_1, 16, 24);
+  }
+
   double edge_intensity_interaction(const RfmModel &model, const Problem &problem,
+                                    const double c, const double rho_1)
+  {
+    return edge_intensity_interaction(
+      [&model](const Eigen::Ref<const Eigen::VectorXd> &r,
+               const Eigen::Ref<const Eigen::VectorXd> &z) { return model.evaluate(r, z); },
+      problem, c, rho_1);
+  }
+
+  double edge_intensity_interaction(const FieldEvaluator &field, const Problem &problem,
                                     const double c, const double rho_1)
   {
     const double r2 = problem.geometry.outer_radius;
@@ -126,10 +140,10 @@ namespace rfm
 
     // 2. The domain part, -int_A (q div W + W . grad q) dr dz on the half disc rho < rho_1,
     //    W = r (s_h u* - s* u~), u~ = u_h - (u_r*(c), u_z,h(c)).
-    const Quadrature2D qd = half_disc_gauss(r2, c, rho_1, 16, 24);
-    const FieldValues f = model.evaluate(qd.r, qd.z);
+    const Quadrature2D qd = interaction_quadrature(problem.geometry, c, rho_1);
+    const FieldValues f = field(qd.r, qd.z);
     const double u_z_edge =
-      model.evaluate(Eigen::VectorXd::Constant(1, r2), Eigen::VectorXd::Constant(1, c)).u(0, 1);
+      field(Eigen::VectorXd::Constant(1, r2), Eigen::VectorXd::Constant(1, c)).u(0, 1);
     double domain = 0.0;
     for (Eigen::Index k = 0; k < qd.weights.size(); ++k)
       {

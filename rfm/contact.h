@@ -178,6 +178,15 @@ namespace rfm
   double edge_intensity_interaction(const RfmModel &model, const axisym::Problem &problem,
                                     double c, double rho_1);
 
+  /// The same integral for any field (u and sigma; the strain is not used), e.g. the FEM's
+  /// sampled at the rule's points (the verification drivers): `field` is
+  /// called once at the points of interaction_quadrature(geometry, c, rho_1) and once at
+  /// the edge point (R2, c).
+  double edge_intensity_interaction(const FieldEvaluator &field, const axisym::Problem &problem,
+                                    double c, double rho_1);
+  /// The half-disc rule of edge_intensity_interaction (polar, rho = rho_1 s^2).
+  Quadrature2D interaction_quadrature(const axisym::Geometry &geometry, double c, double rho_1);
+
   /// The radius of the interaction integral's half disc used by check_contact:
   /// 0.9 min(c, a - c, R2 - R1) (the largest that keeps the other sides out; the root of K
   /// moves by 2.6e-4 c between 0.5 and 0.9 of that bound at p = 8).

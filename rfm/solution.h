@@ -15,6 +15,8 @@
 
 #include <Eigen/Core>
 
+#include <functional>
+
 namespace rfm
 {
   struct FieldValues
@@ -23,6 +25,11 @@ namespace rfm
     Eigen::MatrixXd sigma; ///< n x 4: (sigma_rr, sigma_zz, sigma_tt, sigma_rz) [Pa]
     Eigen::MatrixXd strain; ///< n x 4: e(u) of the displacement field [-]
   };
+
+  /// Fields at points (r, z), as RfmModel::evaluate: the RFM's, or another solver's sampled
+  /// at the same points (the verification drivers).
+  using FieldEvaluator = std::function<FieldValues(const Eigen::Ref<const Eigen::VectorXd> &,
+                                                   const Eigen::Ref<const Eigen::VectorXd> &)>;
 
   struct Functionals
   {

@@ -21,10 +21,6 @@ namespace rfm
     int n_r = 101, n_z = 201;
   };
 
-  /// Fields at points, as RfmModel::evaluate.
-  using FieldEvaluator = std::function<FieldValues(const Eigen::Ref<const Eigen::VectorXd> &,
-                                                   const Eigen::Ref<const Eigen::VectorXd> &)>;
-
   /// The VTU (XML, ASCII) text of the fields on the grid. With `inside`, only the cells whose
   /// four corners are inside are written, and the fields are evaluated at their points only
   /// (the others are written as 0 and belong to no cell).

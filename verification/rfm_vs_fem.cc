@@ -386,6 +386,14 @@ nlohmann::json run(const verification::DriverContext &context)
         d.contact.method = "fixed";
         d.contact.half_width = ca * a;
         d.rfm.degree = default_degree;
+        // The FEM's fields at the points of the interaction integral (and the edge point),
+        // for the FEM's K by the same integral: an independent value of K(c).
+        const double rho_1 = rfm::interaction_radius(d.geometry, ca * a);
+        const rfm::Quadrature2D qk = rfm::interaction_quadrature(d.geometry, ca * a, rho_1);
+        d.samples.clear();
+        for (Eigen::Index k = 0; k < qk.r.size(); ++k)
+          d.samples.push_back({qk.r[k], qk.z[k]});
+        d.samples.push_back({d.geometry.outer_radius, ca * a});
         fem::FemOptions o = fem::options_from_problem(d);
         o.refinements = full ? 5 : 4;
         o.progress = false;
@@ -393,18 +401,52 @@ nlohmann::json run(const verification::DriverContext &context)
         const rfm::ContactResult rr = rfm::solve_contact(d, d.rfm, rfm::ContactOptions{});
         if (!fr.success || !rr.success)
           throw std::runtime_error("bilateral P(c) failed at c = " + std::to_string(ca) + " a");
+        const rfm::FieldEvaluator fem_field = [&fr](const Eigen::Ref<const Eigen::VectorXd> &r,
+                                                    const Eigen::Ref<const Eigen::VectorXd> &z) {
+          // The samples in the order given: the rule's points, then the edge point.
+          const bool edge = r.size() == 1;
+          const std::size_t first = edge ? fr.samples.size() - 1 : 0;
+          rfm::FieldValues f;
+          f.u.resize(r.size(), 2), f.sigma.resize(r.size(), 4), f.strain.setZero(r.size(), 4);
+          for (Eigen::Index k = 0; k < r.size(); ++k)
+            {
+              const fem::FieldSample &s = fr.samples[first + k];
+              if (std::abs(s.r - r[k]) > 1e-12 || std::abs(s.z - z[k]) > 1e-12)
+                throw std::logic_error("FEM sample order differs from the interaction rule's");
+              f.u(k, 0) = s.u_r, f.u(k, 1) = s.u_z;
+              for (int m = 0; m < 4; ++m)
+                f.sigma(k, m) = s.sigma[m];
+            }
+          return f;
+        };
+        const double k_fem = rfm::edge_intensity_interaction(fem_field, d, ca * a, rho_1);
         const double diff = std::abs(rr.final.force - fr.contact->force) / fr.contact->force;
         (ca <= 0.6 ? worst_short : worst_long) = std::max(ca <= 0.6 ? worst_short : worst_long, diff);
         curve.push_back({{"half_width_ratio", ca}, {"fem_force", fr.contact->force},
                          {"rfm_force", rr.final.force}, {"rfm_edge_intensity", rr.final.edge_intensity},
+                         {"fem_edge_intensity", k_fem},
+                         {"edge_intensity_difference_relative",
+                          std::abs(rr.final.edge_intensity - k_fem) / std::abs(k_fem)},
                          {"rfm_edge_intensity_coefficient", rr.final.edge_intensity_coefficient},
                          {"rfm_edge_intensity_reciprocal_work", rr.final.edge_intensity_reciprocal_work},
                          {"force_difference_relative", diff}});
-        fmt::print("P({:.2f} a): FEM L={} {:.1f} N, RFM p={} {:.1f} N ({:.2e}); K = {:.4g} Pa m^1/2\n",
+        fmt::print("P({:.2f} a): FEM L={} {:.1f} N, RFM p={} {:.1f} N ({:.2e}); K: RFM {:.5g}, FEM "
+                   "{:.5g} Pa m^1/2\n",
                    ca, o.refinements, fr.contact->force, d.rfm.degree, rr.final.force, diff,
-                   rr.final.edge_intensity);
+                   rr.final.edge_intensity, k_fem);
       }
     results["die"]["bilateral_curve"] = curve;
+    // K(c) of both solvers by the same interaction integral, relative to the largest |K|
+    // on the curve (K passes zero near c*: a pointwise relative difference means nothing
+    // there).
+    double k_max = 0.0, k_diff = 0.0;
+    for (const auto &e : curve)
+      k_max = std::max(k_max, std::abs(e["fem_edge_intensity"].get<double>()));
+    for (const auto &e : curve)
+      k_diff = std::max(k_diff, std::abs(e["rfm_edge_intensity"].get<double>() -
+                                         e["fem_edge_intensity"].get<double>()));
+    results["die"]["agreement"]["bilateral_edge_intensity_max_difference_relative"] =
+      k_diff / k_max;
     results["die"]["agreement"]["bilateral_force_max_difference_relative_c_045_060"] = worst_short;
     results["die"]["agreement"]["bilateral_force_max_difference_relative_c_080_090"] = worst_long;
     // Where K changes sign, against the FEM's c: the root of K that edge-intensity found at
