@@ -1,5 +1,7 @@
 #include "rfm/outline_structures.h"
 
+#include <numeric>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -205,6 +207,43 @@ namespace rfm
           }
       }
 
+    // Smooth chains of S edges: consecutive edges (the outline is closed) whose outward
+    // normals agree at the shared vertex.
+    {
+      const int n_edges = static_cast<int>(edges.size());
+      std::vector<int> chain_of_edge(n_edges, -1);
+      for (std::size_t i = 0; i < stress_edges_.size(); ++i)
+        chain_of_edge[stress_edges_[i]] = static_cast<int>(i);
+      // Union-find over the S edges.
+      std::vector<int> parent(stress_edges_.size());
+      std::iota(parent.begin(), parent.end(), 0);
+      const auto root = [&parent](int i) {
+        while (parent[i] != i)
+          i = parent[i] = parent[parent[i]];
+        return i;
+      };
+      for (int e = 0; e < n_edges; ++e)
+        {
+          const int f = (e + 1) % n_edges;
+          if (chain_of_edge[e] < 0 || chain_of_edge[f] < 0 || e == f)
+            continue;
+          const axisym::Point n_e = edges[e].outward_normal_at(1.0),
+                              n_f = edges[f].outward_normal_at(0.0);
+          if (std::hypot(n_e.r - n_f.r, n_e.z - n_f.z) < 1e-9)
+            parent[root(chain_of_edge[e])] = root(chain_of_edge[f]);
+        }
+      std::vector<int> label(stress_edges_.size(), -1);
+      stress_chain_.assign(stress_edges_.size(), -1);
+      n_stress_chains_ = 0;
+      for (std::size_t i = 0; i < stress_edges_.size(); ++i)
+        {
+          const int r0 = root(static_cast<int>(i));
+          if (label[r0] < 0)
+            label[r0] = n_stress_chains_++;
+          stress_chain_[i] = label[r0];
+        }
+    }
+
     // Which Y edges each S edge needs the shear factor for: T_e or s0_e has an rz component
     // on that Y edge.
     shear_y_edges_.assign(edges.size(), {});
@@ -323,14 +362,25 @@ namespace rfm
     v.s0.setZero(n, n_stress_components);
     for (auto &b : v.boundary)
       b.setZero(n, n_boundary_columns());
-    std::vector<double> w(n_s), weight(n_s);
+    std::vector<double> w(n_s), weight(n_s), chain_omega;
     Eigen::VectorXd legendre(n_b);
     for (Eigen::Index k = 0; k < n; ++k)
       {
         const double rk = r[k], zk = z[k];
-        double omega_t = 1.0, omega_y = 1.0;
+        double omega_y = 1.0;
         for (Eigen::Index e = 0; e < n_s; ++e)
-          omega_t *= (w[e] = omegas_[stress_edges_[e]](rk, zk).value);
+          w[e] = omegas_[stress_edges_[e]](rk, zk).value;
+        // omega_T: the product over the smooth chains of the R0 conjunction of each chain's
+        // omegas (x + y - sqrt(x^2 + y^2), zero where either is).
+        chain_omega.assign(n_stress_chains_, -1.0);
+        for (Eigen::Index e = 0; e < n_s; ++e)
+          {
+            double &c = chain_omega[stress_chain_[e]];
+            c = c < 0.0 ? w[e] : c + w[e] - std::hypot(c, w[e]);
+          }
+        double omega_t = 1.0;
+        for (const double c : chain_omega)
+          omega_t *= c;
         for (const int y : symmetry_edges_)
           omega_y *= omegas_[y](rk, zk).value;
         v.omega(k, rr) = v.omega(k, zz) = omega_t;

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 namespace rfm
@@ -37,6 +38,20 @@ namespace rfm
           {"line_to": [0.0, 0.0], "part": "axis"}]},
         "boundary": {"mid": {"symmetry": true}, "taper": {"traction": [2.0e6, -1.0e6]},
                      "end": {"displacement": [1.0e-6, -2.0e-6]}, "surface": {"pressure": 3.0e6}},
+        "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
+    }
+
+    // A half disc split into two arcs of one circle at its top (a smooth join of two free
+    // edges), heated: the ring of verification/problems/heated_ring.json.
+    axisym::Problem ring()
+    {
+      return axisym::parse_problem(nlohmann::json::parse(R"({
+        "geometry": {"outline": [
+          {"start": [0.11, 0.0]},
+          {"line_to": [0.19, 0.0], "part": "equator"},
+          {"arc_to": [0.15, 0.04], "center": [0.15, 0.0], "part": "outer"},
+          {"arc_to": [0.11, 0.0], "center": [0.15, 0.0], "part": "inner"}]},
+        "boundary": {"equator": {"symmetry": true}, "inner": {"pressure": 1.0e6}},
         "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
     }
 
@@ -121,7 +136,7 @@ namespace rfm
     std::normal_distribution<double> coef(0.0, 1.0);
     for (const axisym::Problem &p :
          {sphere({{"traction", {1.0e6, -3.0e6}}}), sphere(nlohmann::json::object()),
-          grooved_shaft()})
+          grooved_shaft(), ring()})
       {
         const axisym::Body &body = *p.body;
         const OutlineStructures s(body, 6);
@@ -209,6 +224,34 @@ namespace rfm
     // The inner edge's columns vanish on the outer edge.
     for (int j = 4; j < 8; ++j)
       EXPECT_NEAR(v.boundary[rr](0, j), 0.0, 1e-14);
+  }
+
+  // Where two S edges join smoothly (the ring's arcs at (0.15, 0.04); the shaft's pressure
+  // and free lines at (0.05, 0.03)) omega_T vanishes to first order, as the distance to the
+  // boundary, not to second order as the product of the two edges' omegas would: the
+  // stress does not vanish there. At a right-angle corner of S edges (the shaft's groove lip
+  // at (0.05, 0.01)) it is the product, second order.
+  TEST(OutlineStructures, OmegaOfASmoothJoinIsFirstOrder)
+  {
+    struct Case
+    {
+      axisym::Problem problem;
+      axisym::Point join, inward;
+      double order;
+    };
+    for (const Case &c : {Case{ring(), {0.15, 0.04}, {0.0, -1.0}, 1.0},
+                          Case{grooved_shaft(), {0.05, 0.03}, {-1.0, 0.0}, 1.0},
+                          Case{grooved_shaft(), {0.05, 0.01}, {-std::sqrt(0.5), std::sqrt(0.5)}, 2.0}})
+      {
+        const OutlineStructures s(*c.problem.body, 4);
+        Eigen::VectorXd r(2), z(2);
+        const double h = 1e-5;
+        for (int k = 0; k < 2; ++k)
+          r[k] = c.join.r + (k + 1) * h * c.inward.r, z[k] = c.join.z + (k + 1) * h * c.inward.z;
+        const OutlineStressValues v = s.stress(r, z);
+        const double ratio = v.omega(1, rr) / v.omega(0, rr);
+        EXPECT_NEAR(std::log2(ratio), c.order, 0.05) << "join (" << c.join.r << ", " << c.join.z << ")";
+      }
   }
 
   TEST(OutlineStructures, RejectsAnInclinedSymmetryLine)
