@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <array>
+#include <exception>
+#include <thread>
 #include <vector>
 
 namespace rfm
@@ -211,98 +213,144 @@ namespace rfm
     products.push_back({false, rz * n, n, w12 + 7, w12 + 8, -1}); // rz . du_z/dr
     n_w += 9;
 
-    // 2. Chunks of points: weights, then every block product with the chunk's B in cache.
-    Eigen::MatrixXd w(chunk, n_w), g(chunk, n), v(chunk, 6), v_r(chunk, 2), v_z(chunk, 2);
-    Eigen::MatrixXd bv(n, 6), bv_r(n, 2), bv_z(n, 2);
-    for (Eigen::Index start = 0; start < n_q; start += chunk)
-      {
-        const Eigen::Index m = std::min(chunk, n_q - start);
-        const bool first = start == 0;
-        const auto mu_c = mu.segment(start, m);
-        const auto om = s.omega.middleRows(start, m);
-        const auto u = d.omega.middleRows(start, m);
-        const auto u_r = d.omega_r.middleRows(start, m);
-        const auto u_z = d.omega_z.middleRows(start, m);
-        const auto r_c = r.segment(start, m);
-        for (const std::array<int, 3> &kl : r11_weights)
-          w.col(kl[2]).head(m) =
-            -c(kl[0], kl[1]) * mu_c.cwiseProduct(om.col(kl[0])).cwiseProduct(om.col(kl[1]));
-        w.col(w12 + 0).head(m) = mu_c.cwiseProduct(om.col(rr)).cwiseProduct(u_r.col(0));
-        w.col(w12 + 1).head(m) = mu_c.cwiseProduct(om.col(rr)).cwiseProduct(u.col(0));
-        w.col(w12 + 2).head(m) = mu_c.cwiseProduct(om.col(tt)).cwiseProduct(u.col(0)).cwiseQuotient(r_c);
-        w.col(w12 + 3).head(m) = mu_c.cwiseProduct(om.col(rz)).cwiseProduct(u_z.col(0));
-        w.col(w12 + 4).head(m) = mu_c.cwiseProduct(om.col(rz)).cwiseProduct(u.col(0));
-        w.col(w12 + 5).head(m) = mu_c.cwiseProduct(om.col(zz)).cwiseProduct(u_z.col(1));
-        w.col(w12 + 6).head(m) = mu_c.cwiseProduct(om.col(zz)).cwiseProduct(u.col(1));
-        w.col(w12 + 7).head(m) = mu_c.cwiseProduct(om.col(rz)).cwiseProduct(u_r.col(1));
-        w.col(w12 + 8).head(m) = mu_c.cwiseProduct(om.col(rz)).cwiseProduct(u.col(1));
-
-        const auto b_c = b.value.middleRows(start, m);
-        const auto b_r = b.d_r.middleRows(start, m);
-        const auto b_z = b.d_z.middleRows(start, m);
+    // 2. The products split between threads, largest first to the least loaded (a
+    // triangle costs 1, a full block 2); thread 0 also takes p_s and p_u. Each thread
+    // owns its blocks and sums them over the chunks in order: the result does not depend
+    // on the thread count.
+    const int n_threads = std::max(1, std::min<int>(rfm::n_threads(), static_cast<int>(products.size())));
+    std::vector<std::vector<const BlockProduct *>> work(n_threads);
+    {
+      std::vector<int> load(n_threads, 0);
+      for (int cost : {2, 1})
         for (const BlockProduct &p : products)
-          {
-            auto g_c = g.topRows(m);
-            g_c = w.col(p.w).head(m).asDiagonal() * b_c;
-            if (p.w_r >= 0)
-              g_c += w.col(p.w_r).head(m).asDiagonal() * b_r;
-            if (p.w_z >= 0)
-              g_c += w.col(p.w_z).head(m).asDiagonal() * b_z;
-            if (p.symmetric)
-              {
-                auto block = sys.r11.block(p.row, p.col, n, n);
-                if (first)
-                  block.triangularView<Eigen::Lower>() = b_c.transpose() * g_c;
-                else
-                  block.triangularView<Eigen::Lower>() += b_c.transpose() * g_c;
-              }
-            else
-              {
-                auto block = sys.r12.block(p.row, p.col, n, n);
-                if (first)
-                  block.noalias() = b_c.transpose() * g_c;
-                else
-                  block.noalias() += b_c.transpose() * g_c;
-              }
-          }
+          if ((p.symmetric ? 1 : 2) == cost)
+            {
+              const int t = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+              work[t].push_back(&p);
+              load[t] += cost;
+            }
+    }
 
-        // p_s = int X . (e(u0) - C s0) and p_u = int s0 . e(Phi), with e(Phi) expanded
-        // as in the R12 products (the traction term is added by the caller).
-        const Eigen::MatrixXd residual = initial_strain_residual(
-          StressStructureValues{Eigen::MatrixXd(), s.s0.middleRows(start, m)},
-          DisplacementStructureValues{Eigen::MatrixXd(), Eigen::MatrixXd(), Eigen::MatrixXd(),
-                                      d.u0.middleRows(start, m), d.u0_r.middleRows(start, m),
-                                      d.u0_z.middleRows(start, m)},
-          r_c, c);
-        for (int k = 0; k < n_stress_components; ++k)
-          v.col(k).head(m) = mu_c.cwiseProduct(om.col(k)).cwiseProduct(residual.col(k));
-        const auto s0 = s.s0.middleRows(start, m);
-        const Eigen::VectorXd m_rr = mu_c.cwiseProduct(s0.col(rr));
-        const Eigen::VectorXd m_zz = mu_c.cwiseProduct(s0.col(zz));
-        const Eigen::VectorXd m_tt = mu_c.cwiseProduct(s0.col(tt)).cwiseQuotient(r_c);
-        const Eigen::VectorXd m_rz = mu_c.cwiseProduct(s0.col(rz));
-        v.col(4).head(m) = u_r.col(0).cwiseProduct(m_rr) + u.col(0).cwiseProduct(m_tt) +
-                           u_z.col(0).cwiseProduct(m_rz);
-        v.col(5).head(m) = u_z.col(1).cwiseProduct(m_zz) + u_r.col(1).cwiseProduct(m_rz);
-        v_r.col(0).head(m) = u.col(0).cwiseProduct(m_rr);
-        v_r.col(1).head(m) = u.col(1).cwiseProduct(m_rz);
-        v_z.col(0).head(m) = u.col(0).cwiseProduct(m_rz);
-        v_z.col(1).head(m) = u.col(1).cwiseProduct(m_zz);
-        if (first)
-          {
-            bv.noalias() = b_c.transpose() * v.topRows(m);
-            bv_r.noalias() = b_r.transpose() * v_r.topRows(m);
-            bv_z.noalias() = b_z.transpose() * v_z.topRows(m);
-          }
-        else
-          {
-            bv.noalias() += b_c.transpose() * v.topRows(m);
-            bv_r.noalias() += b_r.transpose() * v_r.topRows(m);
-            bv_z.noalias() += b_z.transpose() * v_z.topRows(m);
-          }
-      }
+    // 3. Chunks of points: weights, then the thread's block products with the chunk's B
+    // in cache.
+    Eigen::MatrixXd bv(n, 6), bv_r(n, 2), bv_z(n, 2);
+    auto run = [&](int thread) {
+      Eigen::MatrixXd w(chunk, n_w), g(chunk, n), v(chunk, 6), v_r(chunk, 2), v_z(chunk, 2);
+      for (Eigen::Index start = 0; start < n_q; start += chunk)
+        {
+          const Eigen::Index m = std::min(chunk, n_q - start);
+          const bool first = start == 0;
+          const auto mu_c = mu.segment(start, m);
+          const auto om = s.omega.middleRows(start, m);
+          const auto u = d.omega.middleRows(start, m);
+          const auto u_r = d.omega_r.middleRows(start, m);
+          const auto u_z = d.omega_z.middleRows(start, m);
+          const auto r_c = r.segment(start, m);
+          for (const std::array<int, 3> &kl : r11_weights)
+            w.col(kl[2]).head(m) =
+              -c(kl[0], kl[1]) * mu_c.cwiseProduct(om.col(kl[0])).cwiseProduct(om.col(kl[1]));
+          w.col(w12 + 0).head(m) = mu_c.cwiseProduct(om.col(rr)).cwiseProduct(u_r.col(0));
+          w.col(w12 + 1).head(m) = mu_c.cwiseProduct(om.col(rr)).cwiseProduct(u.col(0));
+          w.col(w12 + 2).head(m) = mu_c.cwiseProduct(om.col(tt)).cwiseProduct(u.col(0)).cwiseQuotient(r_c);
+          w.col(w12 + 3).head(m) = mu_c.cwiseProduct(om.col(rz)).cwiseProduct(u_z.col(0));
+          w.col(w12 + 4).head(m) = mu_c.cwiseProduct(om.col(rz)).cwiseProduct(u.col(0));
+          w.col(w12 + 5).head(m) = mu_c.cwiseProduct(om.col(zz)).cwiseProduct(u_z.col(1));
+          w.col(w12 + 6).head(m) = mu_c.cwiseProduct(om.col(zz)).cwiseProduct(u.col(1));
+          w.col(w12 + 7).head(m) = mu_c.cwiseProduct(om.col(rz)).cwiseProduct(u_r.col(1));
+          w.col(w12 + 8).head(m) = mu_c.cwiseProduct(om.col(rz)).cwiseProduct(u.col(1));
 
-    // 3. R11: mirror each symmetric block, copy the off-diagonal ones to their transposed
+          const auto b_c = b.value.middleRows(start, m);
+          const auto b_r = b.d_r.middleRows(start, m);
+          const auto b_z = b.d_z.middleRows(start, m);
+          for (const BlockProduct *p : work[thread])
+            {
+              auto g_c = g.topRows(m);
+              g_c = w.col(p->w).head(m).asDiagonal() * b_c;
+              if (p->w_r >= 0)
+                g_c += w.col(p->w_r).head(m).asDiagonal() * b_r;
+              if (p->w_z >= 0)
+                g_c += w.col(p->w_z).head(m).asDiagonal() * b_z;
+              if (p->symmetric)
+                {
+                  auto block = sys.r11.block(p->row, p->col, n, n);
+                  if (first)
+                    block.triangularView<Eigen::Lower>() = b_c.transpose() * g_c;
+                  else
+                    block.triangularView<Eigen::Lower>() += b_c.transpose() * g_c;
+                }
+              else
+                {
+                  auto block = sys.r12.block(p->row, p->col, n, n);
+                  if (first)
+                    block.noalias() = b_c.transpose() * g_c;
+                  else
+                    block.noalias() += b_c.transpose() * g_c;
+                }
+            }
+          if (thread != 0)
+            continue;
+
+          // p_s = int X . (e(u0) - C s0) and p_u = int s0 . e(Phi), with e(Phi) expanded
+          // as in the R12 products (the traction term is added by the caller).
+          const Eigen::MatrixXd residual = initial_strain_residual(
+            StressStructureValues{Eigen::MatrixXd(), s.s0.middleRows(start, m)},
+            DisplacementStructureValues{Eigen::MatrixXd(), Eigen::MatrixXd(), Eigen::MatrixXd(),
+                                        d.u0.middleRows(start, m), d.u0_r.middleRows(start, m),
+                                        d.u0_z.middleRows(start, m)},
+            r_c, c);
+          for (int k = 0; k < n_stress_components; ++k)
+            v.col(k).head(m) = mu_c.cwiseProduct(om.col(k)).cwiseProduct(residual.col(k));
+          const auto s0 = s.s0.middleRows(start, m);
+          const Eigen::VectorXd m_rr = mu_c.cwiseProduct(s0.col(rr));
+          const Eigen::VectorXd m_zz = mu_c.cwiseProduct(s0.col(zz));
+          const Eigen::VectorXd m_tt = mu_c.cwiseProduct(s0.col(tt)).cwiseQuotient(r_c);
+          const Eigen::VectorXd m_rz = mu_c.cwiseProduct(s0.col(rz));
+          v.col(4).head(m) = u_r.col(0).cwiseProduct(m_rr) + u.col(0).cwiseProduct(m_tt) +
+                             u_z.col(0).cwiseProduct(m_rz);
+          v.col(5).head(m) = u_z.col(1).cwiseProduct(m_zz) + u_r.col(1).cwiseProduct(m_rz);
+          v_r.col(0).head(m) = u.col(0).cwiseProduct(m_rr);
+          v_r.col(1).head(m) = u.col(1).cwiseProduct(m_rz);
+          v_z.col(0).head(m) = u.col(0).cwiseProduct(m_rz);
+          v_z.col(1).head(m) = u.col(1).cwiseProduct(m_zz);
+          if (first)
+            {
+              bv.noalias() = b_c.transpose() * v.topRows(m);
+              bv_r.noalias() = b_r.transpose() * v_r.topRows(m);
+              bv_z.noalias() = b_z.transpose() * v_z.topRows(m);
+            }
+          else
+            {
+              bv.noalias() += b_c.transpose() * v.topRows(m);
+              bv_r.noalias() += b_r.transpose() * v_r.topRows(m);
+              bv_z.noalias() += b_z.transpose() * v_z.topRows(m);
+            }
+        }
+    };
+    {
+      const BlasThreadsOff one_blas_thread; // the parallelism is ours here
+      std::vector<std::exception_ptr> errors(n_threads);
+      auto guarded = [&](int thread) {
+        try
+          {
+            run(thread);
+          }
+        catch (...)
+          {
+            errors[thread] = std::current_exception();
+          }
+      };
+      std::vector<std::thread> pool;
+      for (int t = 1; t < n_threads; ++t)
+        pool.emplace_back(guarded, t);
+      guarded(0);
+      for (std::thread &t : pool)
+        t.join();
+      for (const std::exception_ptr &e : errors)
+        if (e)
+          std::rethrow_exception(e);
+    }
+
+    // 4. R11: mirror each symmetric block, copy the off-diagonal ones to their transposed
     // place (a symmetric block is its own transpose), zero the blocks with C_kl = 0.
     for (int k = 0; k < n_stress_components; ++k)
       for (int l = k; l < n_stress_components; ++l)

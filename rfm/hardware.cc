@@ -2,24 +2,86 @@
 
 #include <Eigen/Core>
 
+#include <sched.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
+
+#if defined(RFM_OPENBLAS)
+extern "C"
+{
+  void openblas_set_num_threads(int);
+  int openblas_get_num_threads(void);
+}
+#endif
 
 namespace rfm
 {
-  int n_threads() { return Eigen::nbThreads(); }
+  namespace
+  {
+    // OPENBLAS_NUM_THREADS, else OMP_NUM_THREADS (OpenBLAS's own order), else the cores
+    // this process may run on (taskset), as OpenBLAS counts them.
+    int threads_from_environment()
+    {
+      for (const char *name : {"OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS"})
+        if (const char *v = std::getenv(name))
+          {
+            const int n = std::atoi(v);
+            if (n >= 1)
+              return n;
+          }
+      cpu_set_t set;
+      if (sched_getaffinity(0, sizeof(set), &set) == 0 && CPU_COUNT(&set) > 0)
+        return CPU_COUNT(&set);
+      const unsigned cores = std::thread::hardware_concurrency();
+      return cores > 0 ? static_cast<int>(cores) : 1;
+    }
+
+    int &thread_count()
+    {
+      static int n = threads_from_environment();
+      return n;
+    }
+  } // namespace
+
+  int n_threads() { return thread_count(); }
 
   void set_n_threads(int n)
   {
     if (n < 1)
       throw std::invalid_argument("thread count: " + std::to_string(n) + " (must be >= 1)");
-    Eigen::setNbThreads(n);
+    thread_count() = n;
+#if defined(RFM_OPENBLAS)
+    openblas_set_num_threads(n);
+#endif
   }
 
-  const char *threading_backend() { return "none"; }
+  const char *threading_backend()
+  {
+#if defined(RFM_OPENBLAS)
+    return "OpenBLAS (EIGEN_USE_BLAS) + assembly threads";
+#else
+    return "assembly threads only (Eigen kernels single-threaded)";
+#endif
+  }
+
+  BlasThreadsOff::BlasThreadsOff()
+  {
+#if defined(RFM_OPENBLAS)
+    openblas_set_num_threads(1);
+#endif
+  }
+
+  BlasThreadsOff::~BlasThreadsOff()
+  {
+#if defined(RFM_OPENBLAS)
+    openblas_set_num_threads(thread_count());
+#endif
+  }
 
   namespace
   {
