@@ -1,23 +1,37 @@
 // Google Benchmark: RFM assembly and solve against the basis size N = (p+1)^2, for the
 // Lame cylinder and the die problem at a fixed contact zone, beside a dense reference
-// (Eigen GEMM and Cholesky of comparable sizes) measured in the same run, so that
-// assembly and solve are reported as fractions of this machine's dense peak.
+// (Eigen GEMM and Cholesky) measured in the same run at the matching size, so that
+// assembly and solve are reported as fractions of this machine's dense speed.
 //
-// FLOP counts (counters "flops" as rates):
+// FLOP counts (counters "flops" as rates; nominal, the same before and after the symmetric
+// shortcuts of the assembly):
 //   assembly: 12 blocks of B^T diag(w) B', each 2 N^2 n_q (7 of R11, 5 of R12);
 //   solve: Cholesky of 4N ((4N)^3/3), L^-1 R12 ((4N)^2 2N), K = Y^T Y ((2N)^2 4N),
 //          Cholesky of 2N ((2N)^3/3): about 72 N^3.
+// Matching sizes: assembly against C = A^T B with A, B of n_q x N (one assembly block on
+// the same quadrature); solve against the Cholesky of n = 4N (the stress block M).
+//
+// Counters per point: fraction_of_gemm / fraction_of_cholesky (this point's rate over the
+// reference's rate, both measured in this process), working_set_bytes (the matrices the
+// kernel reads and writes), threads. Context: the host's cache sizes and the thread count.
 //
 //   build/bin/rfm_benchmark --benchmark_out=reports/data/benchmark_rfm.json
 //                           --benchmark_out_format=json     (or: cmake --build --preset benchmarks)
+//   build/bin/rfm_benchmark --threads=2    (or OMP_NUM_THREADS=2; default: all cores)
 #include "benchmarks/benchmark_problems.h"
+#include "benchmarks/dense_reference.h"
+#include "rfm/allocator.h"
 #include "rfm/assembly.h"
 #include "rfm/model.h"
+#include "rfm/hardware.h"
 #include "rfm/saddle_point_solver.h"
 
-#include <Eigen/Cholesky>
-
 #include <benchmark/benchmark.h>
+
+#include <cstring>
+#include <map>
+#include <string>
+#include <utility>
 
 namespace
 {
@@ -28,20 +42,51 @@ namespace
     return p.die ? p.contact.half_width : std::nullopt;
   }
 
+  // Reference rates, measured once per size in this process and shared by every point
+  // that matches it.
+  double gemm_rate(Eigen::Index n, Eigen::Index n_q)
+  {
+    static std::map<std::pair<Eigen::Index, Eigen::Index>, double> rates;
+    auto it = rates.find({n, n_q});
+    if (it == rates.end())
+      it = rates.emplace(std::make_pair(n, n_q), benchmarks::gemm_flops_per_second(n, n_q)).first;
+    return it->second;
+  }
+  double cholesky_rate(Eigen::Index n)
+  {
+    static std::map<Eigen::Index, double> rates;
+    auto it = rates.find(n);
+    if (it == rates.end())
+      it = rates.emplace(n, benchmarks::cholesky_flops_per_second(n)).first;
+    return it->second;
+  }
+
   void assembly(benchmark::State &state, bool die)
   {
     const axisym::Problem problem = make_problem(die);
     rfm::DiscretizationOptions o;
     o.degree = static_cast<int>(state.range(0));
     const rfm::DiscreteSpace space(rfm::Structures(rfm::build_section(problem, zone(problem))), o, problem.material);
-    const double n = static_cast<double>(space.n_basis_functions());
-    const double n_q = static_cast<double>(space.quadrature().n_points());
+    const Eigen::Index n = space.n_basis_functions(), n_q = space.quadrature().n_points();
+    const double flops = 24.0 * n * n * n_q;
+    // One untimed call: the heap then holds the system's memory, as in a driver's second
+    // solve (a single timed iteration of a large p would otherwise time the page faults).
+    benchmark::DoNotOptimize(rfm::assemble_reissner_system(space, problem.material));
     for (auto _ : state)
       benchmark::DoNotOptimize(rfm::assemble_reissner_system(space, problem.material));
-    state.counters["N"] = n;
-    state.counters["n_unknowns"] = 6 * n;
-    state.counters["n_quadrature_points"] = n_q;
-    state.counters["flops"] = benchmark::Counter(24.0 * n * n * n_q, benchmark::Counter::kIsIterationInvariantRate);
+    const double n_s = static_cast<double>(space.n_stress_unknowns());
+    const double n_u = static_cast<double>(space.n_displacement_unknowns());
+    state.counters["N"] = static_cast<double>(n);
+    state.counters["n_unknowns"] = 6.0 * n;
+    state.counters["n_quadrature_points"] = static_cast<double>(n_q);
+    state.counters["flops"] = benchmark::Counter(flops, benchmark::Counter::kIsIterationInvariantRate);
+    // basis values and derivatives at the points (3 n_q N) and the system written.
+    state.counters["working_set_bytes"] = 8.0 * (3.0 * n_q * n + n_s * n_s + n_s * n_u);
+    state.counters["threads"] = rfm::n_threads();
+    // Google Benchmark divides kIsIterationInvariantRate counters by the elapsed time; a
+    // kIsIterationInvariantRate counter of flops / reference rate gives the fraction.
+    state.counters["fraction_of_gemm"] =
+      benchmark::Counter(flops / gemm_rate(n, n_q), benchmark::Counter::kIsIterationInvariantRate);
     state.SetComplexityN(static_cast<benchmark::IterationCount>(n));
   }
 
@@ -54,12 +99,21 @@ namespace
     const rfm::ReissnerSystem system = rfm::assemble_reissner_system(space, problem.material);
     rfm::SolverOptions so;
     so.compute_diagnostics = false;
-    const double n = static_cast<double>(space.n_basis_functions());
+    const Eigen::Index n = space.n_basis_functions();
+    const double flops = 72.0 * n * n * n;
+    benchmark::DoNotOptimize(rfm::solve_saddle_point(system, so)); // untimed, as above
     for (auto _ : state)
       benchmark::DoNotOptimize(rfm::solve_saddle_point(system, so));
-    state.counters["N"] = n;
-    state.counters["n_unknowns"] = 6 * n;
-    state.counters["flops"] = benchmark::Counter(72.0 * n * n * n, benchmark::Counter::kIsIterationInvariantRate);
+    const double n_s = static_cast<double>(space.n_stress_unknowns());
+    const double n_u = static_cast<double>(space.n_displacement_unknowns());
+    state.counters["N"] = static_cast<double>(n);
+    state.counters["n_unknowns"] = 6.0 * n;
+    state.counters["flops"] = benchmark::Counter(flops, benchmark::Counter::kIsIterationInvariantRate);
+    // the system read (R11, R12), and the factors of M and K.
+    state.counters["working_set_bytes"] = 8.0 * (2.0 * n_s * n_s + n_s * n_u + n_u * n_u);
+    state.counters["threads"] = rfm::n_threads();
+    state.counters["fraction_of_cholesky"] =
+      benchmark::Counter(flops / cholesky_rate(4 * n), benchmark::Counter::kIsIterationInvariantRate);
     state.SetComplexityN(static_cast<benchmark::IterationCount>(n));
   }
 
@@ -71,7 +125,7 @@ namespace
   // Dense reference: C = A^T B with A, B of n_q x n (the shape of an assembly block).
   void BM_DenseGemm(benchmark::State &state)
   {
-    const Eigen::Index n = state.range(0), n_q = 4 * state.range(0);
+    const Eigen::Index n = state.range(0), n_q = state.range(1);
     const Eigen::MatrixXd a = Eigen::MatrixXd::Random(n_q, n), b = Eigen::MatrixXd::Random(n_q, n);
     Eigen::MatrixXd c(n, n);
     for (auto _ : state)
@@ -81,6 +135,7 @@ namespace
       }
     state.counters["n"] = static_cast<double>(n);
     state.counters["flops"] = benchmark::Counter(2.0 * n * n * n_q, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["threads"] = rfm::n_threads();
     state.SetComplexityN(n);
   }
 
@@ -88,8 +143,7 @@ namespace
   void BM_DenseCholesky(benchmark::State &state)
   {
     const Eigen::Index n = state.range(0);
-    const Eigen::MatrixXd r = Eigen::MatrixXd::Random(n, n);
-    const Eigen::MatrixXd a = r * r.transpose() + n * Eigen::MatrixXd::Identity(n, n);
+    const Eigen::MatrixXd a = benchmarks::spd_matrix(n);
     for (auto _ : state)
       {
         Eigen::LLT<Eigen::MatrixXd> llt(a);
@@ -97,6 +151,7 @@ namespace
       }
     state.counters["n"] = static_cast<double>(n);
     state.counters["flops"] = benchmark::Counter(n * n * n / 3.0, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["threads"] = rfm::n_threads();
     state.SetComplexityN(n);
   }
 
@@ -108,12 +163,36 @@ namespace
       b->Arg(p);
     b->Unit(benchmark::kMillisecond)->Complexity();
   }
-  void dense_sizes(benchmark::internal::Benchmark *b)
+  // The references at the sizes of the sweep: GEMM on the quadratures of both problems,
+  // Cholesky of n = 4N.
+  void gemm_sizes(benchmark::internal::Benchmark *b)
+  {
+    b->ArgNames({"n", "n_q"});
+    for (int p = 4; p <= 20; p += 2)
+      for (bool die : {false, true})
+        {
+          const axisym::Problem problem = make_problem(die);
+          rfm::DiscretizationOptions o;
+          o.degree = p;
+          const rfm::DiscreteSpace space(rfm::Structures(rfm::build_section(problem, zone(problem))), o, problem.material);
+          b->Args({space.n_basis_functions(), space.quadrature().n_points()});
+        }
+    b->Unit(benchmark::kMillisecond);
+  }
+  void cholesky_sizes(benchmark::internal::Benchmark *b)
   {
     b->ArgNames({"n"});
-    for (int n : {64, 128, 256, 512, 1024, 1764})
-      b->Arg(n);
+    for (int p = 4; p <= 20; p += 2)
+      b->Arg(4 * (p + 1) * (p + 1));
     b->Unit(benchmark::kMillisecond)->Complexity();
+  }
+
+  std::string cache_context()
+  {
+    std::string s;
+    for (const benchmarks::CacheLevel &c : benchmarks::host_caches())
+      s += (s.empty() ? "" : ", ") + c.name + " " + std::to_string(c.bytes / 1024) + " KiB";
+    return s;
   }
 } // namespace
 
@@ -121,7 +200,33 @@ BENCHMARK(BM_RfmAssemblyLame)->Apply(degrees);
 BENCHMARK(BM_RfmSolveLame)->Apply(degrees);
 BENCHMARK(BM_RfmAssemblyDie)->Apply(degrees);
 BENCHMARK(BM_RfmSolveDie)->Apply(degrees);
-BENCHMARK(BM_DenseGemm)->Apply(dense_sizes);
-BENCHMARK(BM_DenseCholesky)->Apply(dense_sizes);
+BENCHMARK(BM_DenseGemm)->Apply(gemm_sizes);
+BENCHMARK(BM_DenseCholesky)->Apply(cholesky_sizes);
 
-BENCHMARK_MAIN();
+// Our own main: --threads=N (before Google Benchmark's flags), the allocator setting of
+// the drivers, and the host description in the context.
+int main(int argc, char **argv)
+{
+  int threads = 0;
+  int kept = 1;
+  for (int i = 1; i < argc; ++i)
+    {
+      if (std::strncmp(argv[i], "--threads=", 10) == 0)
+        threads = std::stoi(argv[i] + 10);
+      else
+        argv[kept++] = argv[i];
+    }
+  argc = kept;
+  if (threads > 0)
+    rfm::set_n_threads(threads);
+  rfm::keep_freed_matrices_in_heap();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv))
+    return 1;
+  benchmark::AddCustomContext("rfm_threads", std::to_string(rfm::n_threads()));
+  benchmark::AddCustomContext("rfm_threading", rfm::threading_backend());
+  benchmark::AddCustomContext("host_caches", cache_context());
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,6 +1,12 @@
 #include "rfm/assembly.h"
 
+#include "rfm/hardware.h"
+
+#include <algorithm>
 #include <array>
+#include <exception>
+#include <thread>
+#include <vector>
 
 namespace rfm
 {
@@ -19,30 +25,11 @@ namespace rfm
     return v;
   }
 
-  AllColumns all_columns(const DiscreteSpace &space, const BasisValues &b,
-                         const StressStructureValues &s, const DisplacementStructureValues &d,
-                         const EdgeColumns *edge, const Eigen::Ref<const Eigen::VectorXd> &r)
+  Eigen::Index assembly_chunk_points(Eigen::Index n_basis_functions, long l2_bytes)
   {
-    const Eigen::Index n = space.n_basis_functions(), n_e = edge ? edge->stress[0].cols() : 0;
-    const Eigen::Index n_p = r.size();
-    AllColumns a;
-    for (int c = 0; c < n_stress_components; ++c)
-      {
-        a.stress[c].setZero(n_p, 4 * n + n_e);
-        a.stress[c].middleCols(c * n, n) = s.omega.col(c).asDiagonal() * b.value;
-        if (n_e > 0)
-          a.stress[c].rightCols(n_e) = edge->stress[c];
-        a.strain[c].setZero(n_p, 2 * n + n_e);
-        if (n_e > 0)
-          a.strain[c].rightCols(n_e) = edge->strain[c];
-      }
-    const DisplacementBasisValues v = displacement_basis(b, d);
-    a.strain[rr].middleCols(0, n) = v.d_r[0];
-    a.strain[tt].middleCols(0, n) = r.cwiseInverse().asDiagonal() * v.value[0];
-    a.strain[rz].middleCols(0, n) = v.d_z[0];
-    a.strain[zz].middleCols(n, n) = v.d_z[1];
-    a.strain[rz].middleCols(n, n) = v.d_r[1];
-    return a;
+    const Eigen::Index bytes_per_point = 4 * n_basis_functions * static_cast<Eigen::Index>(sizeof(double));
+    const Eigen::Index m = (l2_bytes / 2) / std::max<Eigen::Index>(bytes_per_point, 1) / 8 * 8;
+    return std::clamp(m, min_chunk_points, max_chunk_points);
   }
 
   namespace
@@ -68,65 +55,118 @@ namespace rfm
 
     // The products with the enrichment columns, on the near-edge rule: the borders of
     // R11 and R12 and the enrichment rows of p_s and p_u. The polynomial-polynomial blocks
-    // (tensor rule) are not touched.
+    // (tensor rule) are not touched. The polynomial stress column (c, j) is omega_c phi_j
+    // e_c and the polynomial strains expand into B, B_r and B_z, so every border is B^T,
+    // B_r^T or B_z^T times a pointwise-weighted copy of the n_e enrichment columns.
     void add_edge_terms(const DiscreteSpace &space, const Material &material, ReissnerSystem &sys)
     {
       const Eigen::Index n = space.n_basis_functions(), n_e = space.n_edge_columns();
-      const Eigen::Index n_s = sys.r11.rows();
+      const Eigen::Index n_p = space.edge_quadrature().n_points();
       const Eigen::Matrix4d c = material.compliance();
-      const Quadrature2D &q = space.edge_quadrature();
+      const Eigen::VectorXd &r = space.edge_quadrature().r;
       const Eigen::VectorXd &mu = space.edge_measure();
+      const BasisValues &b = space.edge_basis_values();
       const StressStructureValues &s = space.edge_stress_structure();
       const DisplacementStructureValues &d = space.edge_displacement_structure();
-      const AllColumns a = all_columns(space, space.edge_basis_values(), s, d,
-                                       &space.edge_columns(), q.r);
+      const EdgeColumns &e = space.edge_columns();
 
-      // C X_e for the enrichment stress columns (n_points x n_e per component), weighted.
-      Eigen::MatrixXd cx[n_stress_components];
+      // Per component k: weighted enrichment stresses mu X_e,k and mu C X_e (row k).
+      Eigen::MatrixXd wx[n_stress_components], cx[n_stress_components];
+      for (int k = 0; k < n_stress_components; ++k)
+        wx[k] = mu.asDiagonal() * e.stress[k];
       for (int k = 0; k < n_stress_components; ++k)
         {
-          cx[k].setZero(q.n_points(), n_e);
+          cx[k].setZero(n_p, n_e);
           for (int l = 0; l < n_stress_components; ++l)
             if (c(k, l) != 0.0)
-              cx[k] += c(k, l) * a.stress[l].rightCols(n_e);
-          cx[k] = mu.asDiagonal() * cx[k];
+              cx[k] += c(k, l) * wx[l];
         }
-      // 1. R11 border: - int X_all . C X_e, mirrored.
-      Eigen::MatrixXd border = Eigen::MatrixXd::Zero(n_s, n_e);
-      for (int k = 0; k < n_stress_components; ++k)
-        border.noalias() -= a.stress[k].transpose() * cx[k];
-      sys.r11.rightCols(n_e) = border;
-      sys.r11.bottomRows(n_e) = border.transpose();
 
-      // 2. R12 borders: int X_all . e(Phi_e) and int X_e . e(Phi_poly).
-      Eigen::MatrixXd wx_e[n_stress_components];
-      for (int k = 0; k < n_stress_components; ++k)
-        wx_e[k] = mu.asDiagonal() * a.stress[k].rightCols(n_e);
-      Eigen::MatrixXd col_border = Eigen::MatrixXd::Zero(n_s, n_e);
-      Eigen::MatrixXd row_border = Eigen::MatrixXd::Zero(n_e, 2 * n);
+      // Right factors of B^T: R11 border (4 n_e), R12 column border (4 n_e), R12 row
+      // border for u_r and u_z (2 n_e); of B_r^T and B_z^T: the R12 row border (2 n_e each).
+      Eigen::MatrixXd g(n_p, 10 * n_e), g_r(n_p, 2 * n_e), g_z(n_p, 2 * n_e);
       for (int k = 0; k < n_stress_components; ++k)
         {
-          col_border.noalias() +=
-            a.stress[k].transpose() * (mu.asDiagonal() * a.strain[k].rightCols(n_e));
-          row_border.noalias() += wx_e[k].transpose() * a.strain[k].leftCols(2 * n);
+          g.middleCols(k * n_e, n_e) = -(s.omega.col(k).asDiagonal() * cx[k]);
+          g.middleCols((4 + k) * n_e, n_e) = (mu.cwiseProduct(s.omega.col(k))).asDiagonal() * e.strain[k];
         }
-      sys.r12.rightCols(n_e) = col_border;
-      sys.r12.bottomLeftCorner(n_e, 2 * n) = row_border;
+      const Eigen::VectorXd omega_r_over_r = d.omega.col(0).cwiseQuotient(r);
+      g.middleCols(8 * n_e, n_e) = d.omega_r.col(0).asDiagonal() * wx[rr] +
+                                   omega_r_over_r.asDiagonal() * wx[tt] +
+                                   d.omega_z.col(0).asDiagonal() * wx[rz];
+      g.middleCols(9 * n_e, n_e) =
+        d.omega_z.col(1).asDiagonal() * wx[zz] + d.omega_r.col(1).asDiagonal() * wx[rz];
+      g_r.leftCols(n_e) = d.omega.col(0).asDiagonal() * wx[rr];
+      g_r.rightCols(n_e) = d.omega.col(1).asDiagonal() * wx[rz];
+      g_z.leftCols(n_e) = d.omega.col(0).asDiagonal() * wx[rz];
+      g_z.rightCols(n_e) = d.omega.col(1).asDiagonal() * wx[zz];
+      Eigen::MatrixXd bg(n, 10 * n_e), bg_r(n, 2 * n_e), bg_z(n, 2 * n_e);
+      bg.noalias() = b.value.transpose() * g;
+      bg_r.noalias() = b.d_r.transpose() * g_r;
+      bg_z.noalias() = b.d_z.transpose() * g_z;
+
+      // 1. R11 border: - int X_all . C X_e, mirrored.
+      Eigen::MatrixXd corner = Eigen::MatrixXd::Zero(n_e, n_e);
+      for (int k = 0; k < n_stress_components; ++k)
+        {
+          sys.r11.block(k * n, 4 * n, n, n_e) = bg.middleCols(k * n_e, n_e);
+          corner.noalias() -= e.stress[k].transpose() * cx[k];
+        }
+      sys.r11.bottomRightCorner(n_e, n_e) = corner;
+      sys.r11.bottomLeftCorner(n_e, 4 * n) = sys.r11.topRightCorner(4 * n, n_e).transpose();
+
+      // 2. R12 borders: int X_all . e(Phi_e) and int X_e . e(Phi_poly).
+      corner.setZero();
+      for (int k = 0; k < n_stress_components; ++k)
+        {
+          sys.r12.block(k * n, 2 * n, n, n_e) = bg.middleCols((4 + k) * n_e, n_e);
+          corner.noalias() += wx[k].transpose() * e.strain[k];
+        }
+      sys.r12.bottomRightCorner(n_e, n_e) = corner;
+      sys.r12.block(4 * n, 0, n_e, n) =
+        (bg.middleCols(8 * n_e, n_e) + bg_r.leftCols(n_e) + bg_z.leftCols(n_e)).transpose();
+      sys.r12.block(4 * n, n, n_e, n) =
+        (bg.middleCols(9 * n_e, n_e) + bg_r.rightCols(n_e) + bg_z.rightCols(n_e)).transpose();
 
       // 3. p_s rows: int X_e . (e(u0) - C s0).
-      const Eigen::MatrixXd residual = initial_strain_residual(s, d, q.r, c);
+      const Eigen::MatrixXd residual = initial_strain_residual(s, d, r, c);
       for (int k = 0; k < n_stress_components; ++k)
-        sys.p_s.tail(n_e).noalias() += wx_e[k].transpose() * residual.col(k);
+        sys.p_s.tail(n_e).noalias() += wx[k].transpose() * residual.col(k);
 
       // 4. p_u rows: int s0 . e(Phi_e) - int_{S_t} t . Phi_e.
       for (int k = 0; k < n_stress_components; ++k)
-        sys.p_u.tail(n_e).noalias() +=
-          a.strain[k].rightCols(n_e).transpose() * mu.cwiseProduct(s.s0.col(k));
+        sys.p_u.tail(n_e).noalias() += e.strain[k].transpose() * mu.cwiseProduct(s.s0.col(k));
       const BoundaryQuadrature &bq = space.boundary_quadrature();
       const EdgeColumns be = space.enrichment()->evaluate(bq.r, bq.z);
       const std::array<Eigen::VectorXd, 2> wt = weighted_tractions(space);
       sys.p_u.tail(n_e) -= be.u[0].transpose() * wt[0] + be.u[1].transpose() * wt[1];
     }
+
+    // Upper triangle of the square block a from its lower triangle, tile by tile so that
+    // the transposed reads stay in L1.
+    void mirror_lower(Eigen::Block<Eigen::MatrixXd> a)
+    {
+      constexpr Eigen::Index tile = 32;
+      const Eigen::Index n = a.rows();
+      for (Eigen::Index j0 = 0; j0 < n; j0 += tile)
+        for (Eigen::Index i0 = j0; i0 < n; i0 += tile)
+          {
+            const Eigen::Index i1 = std::min(i0 + tile, n), j1 = std::min(j0 + tile, n);
+            for (Eigen::Index i = i0; i < i1; ++i)
+              for (Eigen::Index j = j0; j < std::min(j1, i); ++j)
+                a(j, i) = a(i, j);
+          }
+    }
+
+    // One block product of the chunked assembly: the block at (row, col) of R11 (lower
+    // triangle; symmetric) or R12 (full) gets B_c^T (diag(w) B_c + diag(w_r) B_r,c +
+    // diag(w_z) B_z,c), the w's being columns of the chunk's weight matrix (-1: none).
+    struct BlockProduct
+    {
+      bool symmetric;
+      Eigen::Index row, col;
+      int w, w_r, w_z;
+    };
   } // namespace
 
   Eigen::MatrixXd initial_strain_residual(const StressStructureValues &s,
@@ -145,64 +185,211 @@ namespace rfm
   void add_polynomial_blocks(const Eigen::Ref<const Eigen::VectorXd> &mu,
                              const Eigen::Ref<const Eigen::VectorXd> &r, const BasisValues &b,
                              const StressStructureValues &s, const DisplacementStructureValues &d,
-                             const Eigen::Matrix4d &c, ReissnerSystem &sys)
+                             const Eigen::Matrix4d &c, ReissnerSystem &sys,
+                             Eigen::Index chunk_points)
   {
-    const Eigen::Index n = b.value.cols();
+    const Eigen::Index n = b.value.cols(), n_q = b.value.rows();
+    const Eigen::Index chunk =
+      chunk_points > 0 ? chunk_points : assembly_chunk_points(n, l2_cache_bytes());
 
-    // Weighted stress bases: WX_c = diag(mu omega_c) B. Products with them give every block.
-    Eigen::MatrixXd wx[n_stress_components];
+    // 1. The block products and the columns of the pointwise weight matrix they use.
+    // R11 block (k, l) = - int C_kl omega_k omega_l B^T B: lower triangle at (l, k), l >= k.
+    // R12 blocks: X_c against the strains e_c(Phi_m) (assembly.h), expanded into B, B_r, B_z.
+    std::vector<BlockProduct> products;
+    std::vector<std::array<int, 3>> r11_weights; // (k, l, column)
+    int n_w = 0;
     for (int k = 0; k < n_stress_components; ++k)
-      wx[k] = (mu.cwiseProduct(s.omega.col(k))).asDiagonal() * b.value;
+      for (int l = k; l < n_stress_components; ++l)
+        if (c(k, l) != 0.0)
+          {
+            r11_weights.push_back({k, l, n_w});
+            products.push_back({true, l * n, k * n, n_w++, -1, -1});
+          }
+    const int w12 = n_w; // 8 columns: the R12 weights, in the order below
+    products.push_back({false, rr * n, 0, w12 + 0, w12 + 1, -1}); // rr . du_r/dr
+    products.push_back({false, tt * n, 0, w12 + 2, -1, -1});      // tt . u_r / r
+    products.push_back({false, rz * n, 0, w12 + 3, -1, w12 + 4}); // rz . du_r/dz
+    products.push_back({false, zz * n, n, w12 + 5, -1, w12 + 6}); // zz . du_z/dz
+    products.push_back({false, rz * n, n, w12 + 7, w12 + 8, -1}); // rz . du_z/dr
+    n_w += 9;
 
-    // 1. R11 = - int X . C X: blocks (k, l) = -C_kl (WX_k)^T (omega_l B).
+    // 2. The products split between threads, largest first to the least loaded (a
+    // triangle costs 1, a full block 2); thread 0 also takes p_s and p_u. Each thread
+    // owns its blocks and sums them over the chunks in order: the result does not depend
+    // on the thread count.
+    const int n_threads = std::max(1, std::min<int>(rfm::n_threads(), static_cast<int>(products.size())));
+    std::vector<std::vector<const BlockProduct *>> work(n_threads);
+    {
+      std::vector<int> load(n_threads, 0);
+      for (int cost : {2, 1})
+        for (const BlockProduct &p : products)
+          if ((p.symmetric ? 1 : 2) == cost)
+            {
+              const int t = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+              work[t].push_back(&p);
+              load[t] += cost;
+            }
+    }
+
+    // 3. Chunks of points: weights, then the thread's block products with the chunk's B
+    // in cache.
+    Eigen::MatrixXd bv(n, 6), bv_r(n, 2), bv_z(n, 2);
+    auto run = [&](int thread) {
+      Eigen::MatrixXd w(chunk, n_w), g(chunk, n), v(chunk, 6), v_r(chunk, 2), v_z(chunk, 2);
+      for (Eigen::Index start = 0; start < n_q; start += chunk)
+        {
+          const Eigen::Index m = std::min(chunk, n_q - start);
+          const bool first = start == 0;
+          const auto mu_c = mu.segment(start, m);
+          const auto om = s.omega.middleRows(start, m);
+          const auto u = d.omega.middleRows(start, m);
+          const auto u_r = d.omega_r.middleRows(start, m);
+          const auto u_z = d.omega_z.middleRows(start, m);
+          const auto r_c = r.segment(start, m);
+          for (const std::array<int, 3> &kl : r11_weights)
+            w.col(kl[2]).head(m) =
+              -c(kl[0], kl[1]) * mu_c.cwiseProduct(om.col(kl[0])).cwiseProduct(om.col(kl[1]));
+          w.col(w12 + 0).head(m) = mu_c.cwiseProduct(om.col(rr)).cwiseProduct(u_r.col(0));
+          w.col(w12 + 1).head(m) = mu_c.cwiseProduct(om.col(rr)).cwiseProduct(u.col(0));
+          w.col(w12 + 2).head(m) = mu_c.cwiseProduct(om.col(tt)).cwiseProduct(u.col(0)).cwiseQuotient(r_c);
+          w.col(w12 + 3).head(m) = mu_c.cwiseProduct(om.col(rz)).cwiseProduct(u_z.col(0));
+          w.col(w12 + 4).head(m) = mu_c.cwiseProduct(om.col(rz)).cwiseProduct(u.col(0));
+          w.col(w12 + 5).head(m) = mu_c.cwiseProduct(om.col(zz)).cwiseProduct(u_z.col(1));
+          w.col(w12 + 6).head(m) = mu_c.cwiseProduct(om.col(zz)).cwiseProduct(u.col(1));
+          w.col(w12 + 7).head(m) = mu_c.cwiseProduct(om.col(rz)).cwiseProduct(u_r.col(1));
+          w.col(w12 + 8).head(m) = mu_c.cwiseProduct(om.col(rz)).cwiseProduct(u.col(1));
+
+          const auto b_c = b.value.middleRows(start, m);
+          const auto b_r = b.d_r.middleRows(start, m);
+          const auto b_z = b.d_z.middleRows(start, m);
+          for (const BlockProduct *p : work[thread])
+            {
+              auto g_c = g.topRows(m);
+              g_c = w.col(p->w).head(m).asDiagonal() * b_c;
+              if (p->w_r >= 0)
+                g_c += w.col(p->w_r).head(m).asDiagonal() * b_r;
+              if (p->w_z >= 0)
+                g_c += w.col(p->w_z).head(m).asDiagonal() * b_z;
+              if (p->symmetric)
+                {
+                  auto block = sys.r11.block(p->row, p->col, n, n);
+                  if (first)
+                    block.triangularView<Eigen::Lower>() = b_c.transpose() * g_c;
+                  else
+                    block.triangularView<Eigen::Lower>() += b_c.transpose() * g_c;
+                }
+              else
+                {
+                  auto block = sys.r12.block(p->row, p->col, n, n);
+                  if (first)
+                    block.noalias() = b_c.transpose() * g_c;
+                  else
+                    block.noalias() += b_c.transpose() * g_c;
+                }
+            }
+          if (thread != 0)
+            continue;
+
+          // p_s = int X . (e(u0) - C s0) and p_u = int s0 . e(Phi), with e(Phi) expanded
+          // as in the R12 products (the traction term is added by the caller).
+          const Eigen::MatrixXd residual = initial_strain_residual(
+            StressStructureValues{Eigen::MatrixXd(), s.s0.middleRows(start, m)},
+            DisplacementStructureValues{Eigen::MatrixXd(), Eigen::MatrixXd(), Eigen::MatrixXd(),
+                                        d.u0.middleRows(start, m), d.u0_r.middleRows(start, m),
+                                        d.u0_z.middleRows(start, m)},
+            r_c, c);
+          for (int k = 0; k < n_stress_components; ++k)
+            v.col(k).head(m) = mu_c.cwiseProduct(om.col(k)).cwiseProduct(residual.col(k));
+          const auto s0 = s.s0.middleRows(start, m);
+          const Eigen::VectorXd m_rr = mu_c.cwiseProduct(s0.col(rr));
+          const Eigen::VectorXd m_zz = mu_c.cwiseProduct(s0.col(zz));
+          const Eigen::VectorXd m_tt = mu_c.cwiseProduct(s0.col(tt)).cwiseQuotient(r_c);
+          const Eigen::VectorXd m_rz = mu_c.cwiseProduct(s0.col(rz));
+          v.col(4).head(m) = u_r.col(0).cwiseProduct(m_rr) + u.col(0).cwiseProduct(m_tt) +
+                             u_z.col(0).cwiseProduct(m_rz);
+          v.col(5).head(m) = u_z.col(1).cwiseProduct(m_zz) + u_r.col(1).cwiseProduct(m_rz);
+          v_r.col(0).head(m) = u.col(0).cwiseProduct(m_rr);
+          v_r.col(1).head(m) = u.col(1).cwiseProduct(m_rz);
+          v_z.col(0).head(m) = u.col(0).cwiseProduct(m_rz);
+          v_z.col(1).head(m) = u.col(1).cwiseProduct(m_zz);
+          if (first)
+            {
+              bv.noalias() = b_c.transpose() * v.topRows(m);
+              bv_r.noalias() = b_r.transpose() * v_r.topRows(m);
+              bv_z.noalias() = b_z.transpose() * v_z.topRows(m);
+            }
+          else
+            {
+              bv.noalias() += b_c.transpose() * v.topRows(m);
+              bv_r.noalias() += b_r.transpose() * v_r.topRows(m);
+              bv_z.noalias() += b_z.transpose() * v_z.topRows(m);
+            }
+        }
+    };
+    {
+      const BlasThreadsOff one_blas_thread; // the parallelism is ours here
+      std::vector<std::exception_ptr> errors(n_threads);
+      auto guarded = [&](int thread) {
+        try
+          {
+            run(thread);
+          }
+        catch (...)
+          {
+            errors[thread] = std::current_exception();
+          }
+      };
+      std::vector<std::thread> pool;
+      for (int t = 1; t < n_threads; ++t)
+        pool.emplace_back(guarded, t);
+      guarded(0);
+      for (std::thread &t : pool)
+        t.join();
+      for (const std::exception_ptr &e : errors)
+        if (e)
+          std::rethrow_exception(e);
+    }
+
+    // 4. R11: mirror each symmetric block, copy the off-diagonal ones to their transposed
+    // place (a symmetric block is its own transpose), zero the blocks with C_kl = 0.
     for (int k = 0; k < n_stress_components; ++k)
       for (int l = k; l < n_stress_components; ++l)
         {
           if (c(k, l) == 0.0)
-            continue;
-          const Eigen::MatrixXd omega_b = s.omega.col(l).asDiagonal() * b.value;
-          sys.r11.block(k * n, l * n, n, n).noalias() = -c(k, l) * (wx[k].transpose() * omega_b);
+            {
+              sys.r11.block(k * n, l * n, n, n).setZero();
+              sys.r11.block(l * n, k * n, n, n).setZero();
+              continue;
+            }
+          mirror_lower(sys.r11.block(l * n, k * n, n, n));
           if (l != k)
-            sys.r11.block(l * n, k * n, n, n) = sys.r11.block(k * n, l * n, n, n).transpose();
+            sys.r11.block(k * n, l * n, n, n) = sys.r11.block(l * n, k * n, n, n);
         }
-
-    // 2. R12 = int X . e(Phi).
-    const DisplacementBasisValues v = displacement_basis(b, d);
-    const Eigen::VectorXd inv_r = r.cwiseInverse();
-    sys.r12.block(rr * n, 0, n, n).noalias() = wx[rr].transpose() * v.d_r[0];
-    sys.r12.block(tt * n, 0, n, n).noalias() =
-      wx[tt].transpose() * (inv_r.asDiagonal() * v.value[0]);
-    sys.r12.block(rz * n, 0, n, n).noalias() = wx[rz].transpose() * v.d_z[0];
-    sys.r12.block(zz * n, n, n, n).noalias() = wx[zz].transpose() * v.d_z[1];
-    sys.r12.block(rz * n, n, n, n).noalias() = wx[rz].transpose() * v.d_r[1];
-
-    // 3. p_s = int X . (e(u0) - C s0).
-    const Eigen::MatrixXd residual = initial_strain_residual(s, d, r, c);
+    // R12: u_r does no work on sigma_zz, u_z none on sigma_rr and sigma_tt.
+    sys.r12.block(zz * n, 0, n, n).setZero();
+    sys.r12.block(rr * n, n, n, n).setZero();
+    sys.r12.block(tt * n, n, n, n).setZero();
     for (int k = 0; k < n_stress_components; ++k)
-      sys.p_s.segment(k * n, n).noalias() = wx[k].transpose() * residual.col(k);
-
-    // 4. p_u = int s0 . e(Phi) (the traction term is added by the caller).
-    const Eigen::VectorXd m_rr = mu.cwiseProduct(s.s0.col(rr));
-    const Eigen::VectorXd m_zz = mu.cwiseProduct(s.s0.col(zz));
-    const Eigen::VectorXd m_tt = mu.cwiseProduct(s.s0.col(tt)).cwiseProduct(inv_r);
-    const Eigen::VectorXd m_rz = mu.cwiseProduct(s.s0.col(rz));
-    sys.p_u.segment(0, n).noalias() = v.d_r[0].transpose() * m_rr + v.value[0].transpose() * m_tt +
-                                      v.d_z[0].transpose() * m_rz;
-    sys.p_u.segment(n, n).noalias() = v.d_z[1].transpose() * m_zz + v.d_r[1].transpose() * m_rz;
+      sys.p_s.segment(k * n, n) = bv.col(k);
+    sys.p_u.segment(0, n) = bv.col(4) + bv_r.col(0) + bv_z.col(0);
+    sys.p_u.segment(n, n) = bv.col(5) + bv_r.col(1) + bv_z.col(1);
   }
 
-  ReissnerSystem assemble_reissner_system(const DiscreteSpace &space, const Material &material)
+  ReissnerSystem assemble_reissner_system(const DiscreteSpace &space, const Material &material,
+                                          const AssemblyOptions &options)
   {
     const Eigen::Index n = space.n_basis_functions();
     const Eigen::Index n_s = space.n_stress_unknowns(), n_u = space.n_displacement_unknowns();
+    // Every entry is written below: the polynomial blocks by add_polynomial_blocks, the
+    // borders by add_edge_terms; no zero fill of the large matrices.
     ReissnerSystem sys;
-    sys.r11.setZero(n_s, n_s);
-    sys.r12.setZero(n_s, n_u);
+    sys.r11.resize(n_s, n_s);
+    sys.r12.resize(n_s, n_u);
     sys.p_s.setZero(n_s);
     sys.p_u.setZero(n_u);
     add_polynomial_blocks(space.measure(), space.quadrature().r, space.basis_values(),
                           space.stress_structure(), space.displacement_structure(),
-                          material.compliance(), sys);
+                          material.compliance(), sys, options.chunk_points);
 
     const BoundaryQuadrature &bq = space.boundary_quadrature();
     const BasisValues bb = space.basis().evaluate(bq.r, bq.z);

@@ -13,8 +13,13 @@
 // (DESIGN.md section 1): e(u) = (du_r/dr, du_z/dz, u_r/r, du_r/dz + du_z/dr).
 //
 // Unknown ordering: q_s = (q_rr, q_zz, q_tt, q_rz), q_u = (q_r, q_z), N each.
-// Every block is one dense product B^T diag(weights) B' over the quadrature points
-// with pointwise weights mu * omega_c * C_cl, so assembly runs at GEMM speed.
+// Every polynomial block is a dense product B^T G over the quadrature points, with B the
+// basis values and G = diag(w) B + diag(w_r) B_r + diag(w_z) B_z formed pointwise (w:
+// mu * omega_c * C_cl for R11, mu * omega_c times the strain's omega factors for R12).
+// The points are taken in chunks (AssemblyOptions::chunk_points) so that the chunk's B,
+// B_r, B_z and G stay in L2 while the block GEMMs of the chunk run: assembly then runs
+// at GEMM speed instead of streaming n_q x N temporaries through memory. Each R11 block
+// B^T diag(w) B is symmetric: only its lower triangle is computed, then mirrored.
 #pragma once
 
 #include "rfm/discrete_space.h"
@@ -34,7 +39,21 @@ namespace rfm
     Eigen::VectorXd p_u; ///< n_u
   };
 
-  ReissnerSystem assemble_reissner_system(const DiscreteSpace &space, const Material &material);
+  struct AssemblyOptions
+  {
+    /// Quadrature points per chunk; 0: assembly_chunk_points(N, l2_cache_bytes()).
+    Eigen::Index chunk_points = 0;
+  };
+
+  ReissnerSystem assemble_reissner_system(const DiscreteSpace &space, const Material &material,
+                                          const AssemblyOptions &options = {});
+
+  /// Points per chunk for N basis functions and an L2 cache of l2_bytes: the chunk's
+  /// B, B_r, B_z and one weighted product (4 N doubles per point) fill half of L2 (the
+  /// other half holds the GEMM's packed panels), rounded down to a multiple of 8 and
+  /// clamped to [min_chunk_points, max_chunk_points].
+  Eigen::Index assembly_chunk_points(Eigen::Index n_basis_functions, long l2_bytes);
+  inline constexpr Eigen::Index min_chunk_points = 64, max_chunk_points = 4096;
 
   /// Displacement basis at points: for m = r, z the matrices omega_m phi_j and its r and
   /// z derivatives (n_points x N each). Shared by assembly and post-processing.
@@ -45,25 +64,15 @@ namespace rfm
   DisplacementBasisValues displacement_basis(const BasisValues &b,
                                              const DisplacementStructureValues &d);
 
-  /// Every column of both spaces at points, as dense component matrices: stress[c] is
-  /// n_points x n_s (component c of every stress column), strain[c] is n_points x n_u
-  /// (component c of e(Phi) for every displacement column). The polynomial columns are block-sparse here (zeros elsewhere): used
-  /// on the near-edge rule only, where all products with the enrichment are taken.
-  struct AllColumns
-  {
-    Eigen::MatrixXd stress[4], strain[4];
-  };
-  AllColumns all_columns(const DiscreteSpace &space, const BasisValues &b,
-                         const StressStructureValues &s, const DisplacementStructureValues &d,
-                         const EdgeColumns *edge, const Eigen::Ref<const Eigen::VectorXd> &r);
-
   /// The blocks of the polynomial columns (N per component, first in q_s and q_u) at
   /// quadrature points with per-radian measure mu: R11 and R12 blocks, p_s and the s0 part
-  /// of p_u, written into the leading rows and columns of `sys` (sized by the caller).
+  /// of p_u, written into the leading rows and columns of `sys` (sized by the caller;
+  /// nothing else is touched). chunk_points as in AssemblyOptions.
   void add_polynomial_blocks(const Eigen::Ref<const Eigen::VectorXd> &mu,
                              const Eigen::Ref<const Eigen::VectorXd> &r, const BasisValues &b,
                              const StressStructureValues &s, const DisplacementStructureValues &d,
-                             const Eigen::Matrix4d &c, ReissnerSystem &sys);
+                             const Eigen::Matrix4d &c, ReissnerSystem &sys,
+                             Eigen::Index chunk_points = 0);
 
   /// e(u0) - C s0 at points (n_points x 4): the data of p_s.
   Eigen::MatrixXd initial_strain_residual(const StressStructureValues &s,

@@ -1,5 +1,7 @@
 #include "rfm/assembly.h"
 
+#include "rfm/hardware.h"
+
 #include "rfm/test_sections.h"
 
 #include <Eigen/Eigenvalues>
@@ -31,6 +33,42 @@ namespace rfm
               1e-14 * sys.r11.cwiseAbs().maxCoeff());
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(sys.r11);
     EXPECT_LT(es.eigenvalues().maxCoeff(), 0.0);
+  }
+
+  // Chunks sum the same integrals in another order: rounding only. Threads own whole
+  // blocks, so the thread count changes nothing, bit for bit.
+  TEST(Assembly, ChunksChangeRoundingOnlyAndThreadsNothing)
+  {
+    const DiscreteSpace space = make_space(4);
+    const Eigen::Index n_q = space.quadrature().n_points();
+    ASSERT_GT(n_q, 2 * min_chunk_points);
+    const ReissnerSystem one = assemble_reissner_system(space, Material{}, AssemblyOptions{n_q});
+    const ReissnerSystem many =
+      assemble_reissner_system(space, Material{}, AssemblyOptions{min_chunk_points});
+    EXPECT_LT((one.r11 - many.r11).cwiseAbs().maxCoeff(), 1e-14 * one.r11.cwiseAbs().maxCoeff());
+    EXPECT_LT((one.r12 - many.r12).cwiseAbs().maxCoeff(), 1e-14 * one.r12.cwiseAbs().maxCoeff());
+    EXPECT_LT((one.p_s - many.p_s).cwiseAbs().maxCoeff(), 1e-14 * one.p_s.cwiseAbs().maxCoeff());
+
+    const int threads = n_threads();
+    set_n_threads(1);
+    const ReissnerSystem serial =
+      assemble_reissner_system(space, Material{}, AssemblyOptions{min_chunk_points});
+    set_n_threads(3);
+    const ReissnerSystem parallel =
+      assemble_reissner_system(space, Material{}, AssemblyOptions{min_chunk_points});
+    set_n_threads(threads);
+    EXPECT_TRUE(serial.r11 == parallel.r11);
+    EXPECT_TRUE(serial.r12 == parallel.r12);
+    EXPECT_TRUE(serial.p_s == parallel.p_s);
+    EXPECT_TRUE(serial.p_u == parallel.p_u);
+  }
+
+  TEST(Assembly, ChunkFillsHalfOfL2)
+  {
+    // 4 N doubles per point in half of L2, a multiple of 8, clamped.
+    EXPECT_EQ(assembly_chunk_points(121, 1 << 20), 128); // 524288 / 3872 = 135
+    EXPECT_EQ(assembly_chunk_points(441, 1 << 20), min_chunk_points);
+    EXPECT_EQ(assembly_chunk_points(1, 1L << 30), max_chunk_points);
   }
 
   // One entry of each R12 block and of p_u by a plain loop over quadrature points with

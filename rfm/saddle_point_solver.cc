@@ -11,6 +11,7 @@ namespace rfm
 {
   namespace
   {
+    // From the lower triangle of a (SelfAdjointEigenSolver reads nothing else).
     double eigen_condition(const Eigen::MatrixXd &a)
     {
       const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(a, Eigen::EigenvaluesOnly);
@@ -26,8 +27,11 @@ namespace rfm
     SolveSummary &summary = out.summary;
     const double nan = std::numeric_limits<double>::quiet_NaN();
     summary.cond_stress = summary.cond_schur = summary.inf_sup = nan;
+    const Eigen::Index n_s = sys.r11.rows(), n_u = sys.r12.cols();
 
-    // 1. M = -R11, scaled.
+    // Three n x n-sized buffers in all (M, Y, K): each factorization overwrites its
+    // matrix (LLT<Ref>), only lower triangles are formed, nothing large is copied twice.
+    // 1. M = -R11, scaled (lower triangle), Cholesky in place.
     const Eigen::VectorXd d = (-sys.r11.diagonal()).cwiseMax(0.0).cwiseSqrt().cwiseInverse();
     if (!d.allFinite())
       {
@@ -35,8 +39,11 @@ namespace rfm
                           "coordinate function that vanishes identically";
         return out;
       }
-    const Eigen::MatrixXd m = -(d.asDiagonal() * sys.r11 * d.asDiagonal());
-    const Eigen::LLT<Eigen::MatrixXd> llt_m(m);
+    Eigen::MatrixXd m(n_s, n_s);
+    m.triangularView<Eigen::Lower>() = -(d.asDiagonal() * sys.r11 * d.asDiagonal());
+    // The eigenvalue diagnostics read the lower triangle before it is factorized.
+    const double cond_stress = options.compute_diagnostics ? eigen_condition(m) : nan;
+    const Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt_m(m);
     summary.rcond_stress = llt_m.info() == Eigen::Success ? llt_m.rcond() : 0.0;
     if (llt_m.info() != Eigen::Success || !(summary.rcond_stress >= options.min_rcond))
       {
@@ -47,15 +54,13 @@ namespace rfm
         return out;
       }
 
-    // 2. Y = L^-1 D R12, K = Y^T Y, scaled by E.
+    // 2. Y = L^-1 D R12, K = Y^T Y (lower triangle), scaled by E in place.
     Eigen::MatrixXd y = d.asDiagonal() * sys.r12;
     llt_m.matrixL().solveInPlace(y);
     Eigen::VectorXd y_s = d.cwiseProduct(sys.p_s);
     llt_m.matrixL().solveInPlace(y_s);
-    Eigen::MatrixXd k(y.cols(), y.cols());
-    k.setZero();
-    k.selfadjointView<Eigen::Lower>().rankUpdate(y.transpose());
-    k.triangularView<Eigen::StrictlyUpper>() = k.transpose();
+    Eigen::MatrixXd k(n_u, n_u);
+    k.triangularView<Eigen::Lower>() = y.transpose() * y;
     const Eigen::VectorXd e = k.diagonal().cwiseMax(0.0).cwiseSqrt().cwiseInverse();
     if (!e.allFinite())
       {
@@ -63,15 +68,15 @@ namespace rfm
                           "no work on any stress (rank loss, inf-sup failure)";
         return out;
       }
-    const Eigen::MatrixXd ks = e.asDiagonal() * k * e.asDiagonal();
-    const Eigen::LLT<Eigen::MatrixXd> llt_k(ks);
-    summary.rcond_schur = llt_k.info() == Eigen::Success ? llt_k.rcond() : 0.0;
+    k.triangularView<Eigen::Lower>() = e.asDiagonal() * k * e.asDiagonal();
     if (options.compute_diagnostics)
       {
-        summary.cond_stress = eigen_condition(m);
-        summary.cond_schur = eigen_condition(ks);
+        summary.cond_stress = cond_stress;
+        summary.cond_schur = eigen_condition(k);
         summary.inf_sup = 1.0 / std::sqrt(summary.cond_schur);
       }
+    const Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt_k(k);
+    summary.rcond_schur = llt_k.info() == Eigen::Success ? llt_k.rcond() : 0.0;
     if (llt_k.info() != Eigen::Success || !(summary.rcond_schur >= options.min_rcond))
       {
         std::ostringstream msg;
