@@ -340,9 +340,19 @@ namespace rfm
         const double a_1 = it.edge_intensity / std::sqrt(2.0 * M_PI);
         const Eigen::VectorXd &q_s = model.solution().stress_coefficients(),
                               &q_u = model.solution().displacement_coefficients();
-        const EdgeColumns cols = e->evaluate(r, z);
-        f.sigma.col(rr) += (a_1 - q_s[q_s.size() - n_e + j]) * cols.stress[rr].col(j);
-        f.u.col(0) += (a_1 - q_u[q_u.size() - n_e + j]) * cols.u[0].col(j);
+        // Only the points in the columns' support |z - c| < rho_0 (z is sorted).
+        const double rho_0 = e->cutoff_radius();
+        const auto first = std::lower_bound(zs.begin(), zs.end(), c - rho_0) - zs.begin();
+        const auto last = std::upper_bound(zs.begin(), zs.end(), c + rho_0) - zs.begin();
+        if (last > first)
+          {
+            const Eigen::Index n_near = last - first;
+            const EdgeColumns cols = e->evaluate(r.segment(first, n_near), z.segment(first, n_near));
+            f.sigma.col(rr).segment(first, n_near) +=
+              (a_1 - q_s[q_s.size() - n_e + j]) * cols.stress[rr].col(j);
+            f.u.col(0).segment(first, n_near) +=
+              (a_1 - q_u[q_u.size() - n_e + j]) * cols.u[0].col(j);
+          }
       }
 
     // Condition 1.2 inside the zone: p = -sigma_rr >= 0.
