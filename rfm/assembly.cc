@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <exception>
 #include <thread>
@@ -190,6 +191,26 @@ namespace rfm
         if (e)
           std::rethrow_exception(e);
     }
+
+    // All n_threads threads wait here until all have arrived (once; C++17 has no
+    // std::barrier). Spins with yield: the wait is short, the products are balanced.
+    class SpinBarrier
+    {
+    public:
+      explicit SpinBarrier(int n_threads)
+        : n_threads_(n_threads)
+      {}
+      void arrive_and_wait()
+      {
+        arrived_.fetch_add(1, std::memory_order_acq_rel);
+        while (arrived_.load(std::memory_order_acquire) < n_threads_)
+          std::this_thread::yield();
+      }
+
+    private:
+      const int n_threads_;
+      std::atomic<int> arrived_{0};
+    };
 
     // Column ranges [split[t], split[t + 1]) of an n x n block for the threads, of equal
     // work: equal widths for a full block; for a lower triangle, equal areas (columns
@@ -382,15 +403,13 @@ namespace rfm
             }
         }
     };
-    // The parallelism is ours here (BlasThreadsOff is also held by the caller).
-    const BlasThreadsOff one_blas_thread;
-    on_threads(n_threads, run);
-
     // 4. R11: mirror each symmetric block, copy the off-diagonal ones to their transposed
     // place (a symmetric block is its own transpose), zero the blocks with C_kl = 0; R12:
     // u_r does no work on sigma_zz, u_z none on sigma_rr and sigma_tt. Column tiles are
-    // dealt out to the threads in turn (each writes only its own columns).
-    on_threads(n_threads, [&](int thread) {
+    // dealt out to the threads in turn (each writes only its own columns), after all
+    // products are done, on the same threads: on two freshly started threads this pass
+    // took 0.41 ms at Lame p = 14, on one thread 0.28 ms.
+    auto mirror = [&](int thread) {
       for (Eigen::Index j0 = thread * mirror_tile; j0 < n; j0 += n_threads * mirror_tile)
         {
           const Eigen::Index j1 = std::min(j0 + mirror_tile, n);
@@ -413,6 +432,23 @@ namespace rfm
           sys.r12.block(rr * n, n + j0, n, j1 - j0).setZero();
           sys.r12.block(tt * n, n + j0, n, j1 - j0).setZero();
         }
+    };
+    SpinBarrier products_done(n_threads);
+    const BlasThreadsOff one_blas_thread; // the parallelism is ours here (nested)
+    on_threads(n_threads, [&](int thread) {
+      std::exception_ptr error; // still arrive at the barrier, then rethrow
+      try
+        {
+          run(thread);
+        }
+      catch (...)
+        {
+          error = std::current_exception();
+        }
+      products_done.arrive_and_wait();
+      if (error)
+        std::rethrow_exception(error);
+      mirror(thread);
     });
     for (int k = 0; k < n_stress_components; ++k)
       sys.p_s.segment(k * n, n) = bv.col(k);
