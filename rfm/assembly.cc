@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <cmath>
 #include <exception>
 #include <thread>
 #include <vector>
@@ -142,20 +144,87 @@ namespace rfm
       sys.p_u.tail(n_e) -= be.u[0].transpose() * wt[0] + be.u[1].transpose() * wt[1];
     }
 
-    // Upper triangle of the square block a from its lower triangle, tile by tile so that
-    // the transposed reads stay in L1.
-    void mirror_lower(Eigen::Block<Eigen::MatrixXd> a)
+    // Columns [j0, j1) of the symmetric matrix whose lower triangle is `lower`, written
+    // into dst. dst may be `lower` itself (then only its strict upper triangle changes,
+    // and it reads nothing it writes), else it is written in full. The transposed reads
+    // go tile by tile so that they stay in L1.
+    constexpr Eigen::Index mirror_tile = 32;
+    void symmetric_columns(Eigen::Block<Eigen::MatrixXd> lower, Eigen::Block<Eigen::MatrixXd> dst,
+                           Eigen::Index j0, Eigen::Index j1)
     {
-      constexpr Eigen::Index tile = 32;
-      const Eigen::Index n = a.rows();
-      for (Eigen::Index j0 = 0; j0 < n; j0 += tile)
-        for (Eigen::Index i0 = j0; i0 < n; i0 += tile)
+      const bool in_place = dst.data() == lower.data();
+      for (Eigen::Index i0 = 0; i0 < j1; i0 += mirror_tile)
+        {
+          const Eigen::Index i1 = std::min(i0 + mirror_tile, j1);
+          for (Eigen::Index j = std::max(j0, i0 + 1); j < j1; ++j)
+            for (Eigen::Index i = i0; i < std::min(i1, j); ++i)
+              dst(i, j) = lower(j, i);
+        }
+      if (!in_place)
+        for (Eigen::Index j = j0; j < j1; ++j)
+          dst.col(j).tail(dst.rows() - j) = lower.col(j).tail(dst.rows() - j);
+    }
+
+    // f(thread) on n_threads threads (thread 0 is the caller); the first exception is
+    // rethrown once all have finished.
+    template <typename F>
+    void on_threads(int n_threads, const F &f)
+    {
+      std::vector<std::exception_ptr> errors(n_threads);
+      auto guarded = [&](int thread) {
+        try
           {
-            const Eigen::Index i1 = std::min(i0 + tile, n), j1 = std::min(j0 + tile, n);
-            for (Eigen::Index i = i0; i < i1; ++i)
-              for (Eigen::Index j = j0; j < std::min(j1, i); ++j)
-                a(j, i) = a(i, j);
+            f(thread);
           }
+        catch (...)
+          {
+            errors[thread] = std::current_exception();
+          }
+      };
+      std::vector<std::thread> pool;
+      for (int t = 1; t < n_threads; ++t)
+        pool.emplace_back(guarded, t);
+      guarded(0);
+      for (std::thread &t : pool)
+        t.join();
+      for (const std::exception_ptr &e : errors)
+        if (e)
+          std::rethrow_exception(e);
+    }
+
+    // All n_threads threads wait here until all have arrived (once; C++17 has no
+    // std::barrier). Spins with yield: the wait is short, the products are balanced.
+    class SpinBarrier
+    {
+    public:
+      explicit SpinBarrier(int n_threads)
+        : n_threads_(n_threads)
+      {}
+      void arrive_and_wait()
+      {
+        arrived_.fetch_add(1, std::memory_order_acq_rel);
+        while (arrived_.load(std::memory_order_acquire) < n_threads_)
+          std::this_thread::yield();
+      }
+
+    private:
+      const int n_threads_;
+      std::atomic<int> arrived_{0};
+    };
+
+    // Column ranges [split[t], split[t + 1]) of an n x n block for the threads, of equal
+    // work: equal widths for a full block; for a lower triangle, equal areas (columns
+    // [0, c) hold n c - c^2 / 2 entries, so c_t = n (1 - sqrt(1 - t / n_threads))).
+    std::vector<Eigen::Index> column_split(Eigen::Index n, int n_threads, bool lower_triangle)
+    {
+      std::vector<Eigen::Index> split(n_threads + 1);
+      for (int t = 0; t <= n_threads; ++t)
+        {
+          const double f = static_cast<double>(t) / n_threads;
+          split[t] = lower_triangle ? n - std::llround(static_cast<double>(n) * std::sqrt(1.0 - f))
+                                    : std::llround(static_cast<double>(n) * f);
+        }
+      return split;
     }
 
     // One block product of the chunked assembly: the block at (row, col) of R11 (lower
@@ -213,23 +282,16 @@ namespace rfm
     products.push_back({false, rz * n, n, w12 + 7, w12 + 8, -1}); // rz . du_z/dr
     n_w += 9;
 
-    // 2. The products split between threads, largest first to the least loaded (a
-    // triangle costs 1, a full block 2); thread 0 also takes p_s and p_u. Each thread
-    // owns its blocks and sums them over the chunks in order: the result does not depend
-    // on the thread count.
-    const int n_threads = std::max(1, std::min<int>(rfm::n_threads(), static_cast<int>(products.size())));
-    std::vector<std::vector<const BlockProduct *>> work(n_threads);
-    {
-      std::vector<int> load(n_threads, 0);
-      for (int cost : {2, 1})
-        for (const BlockProduct &p : products)
-          if ((p.symmetric ? 1 : 2) == cost)
-            {
-              const int t = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
-              work[t].push_back(&p);
-              load[t] += cost;
-            }
-    }
+    // 2. Every block product is split by columns between the threads, each taking the
+    // same share of work of every product (column_split), so the threads stay balanced
+    // whatever the products cost (whole blocks per thread left one thread 30 % longer
+    // busy). Thread t's part of a lower triangle is a small triangle on the diagonal and
+    // the rectangle below it (one GEMM). Thread 0 also takes p_s and p_u (10 columns).
+    // Each entry is summed over the chunks in order by one thread: runs with the same
+    // thread count give identical bits.
+    const int n_threads = static_cast<int>(std::max<Eigen::Index>(1, std::min<Eigen::Index>(rfm::n_threads(), n / 8)));
+    const std::vector<Eigen::Index> full_split = column_split(n, n_threads, false);
+    const std::vector<Eigen::Index> lower_split = column_split(n, n_threads, true);
 
     // 3. Chunks of points: weights, then the thread's block products with the chunk's B
     // in cache.
@@ -262,25 +324,40 @@ namespace rfm
           const auto b_c = b.value.middleRows(start, m);
           const auto b_r = b.d_r.middleRows(start, m);
           const auto b_z = b.d_z.middleRows(start, m);
-          for (const BlockProduct *p : work[thread])
+          for (const BlockProduct &p : products)
             {
-              auto g_c = g.topRows(m);
-              g_c = w.col(p->w).head(m).asDiagonal() * b_c;
-              if (p->w_r >= 0)
-                g_c += w.col(p->w_r).head(m).asDiagonal() * b_r;
-              if (p->w_z >= 0)
-                g_c += w.col(p->w_z).head(m).asDiagonal() * b_z;
-              if (p->symmetric)
+              const std::vector<Eigen::Index> &split = p.symmetric ? lower_split : full_split;
+              const Eigen::Index c0 = split[thread], c1 = split[thread + 1], width = c1 - c0;
+              if (width == 0)
+                continue;
+              auto g_c = g.topLeftCorner(m, width);
+              g_c = w.col(p.w).head(m).asDiagonal() * b_c.middleCols(c0, width);
+              if (p.w_r >= 0)
+                g_c += w.col(p.w_r).head(m).asDiagonal() * b_r.middleCols(c0, width);
+              if (p.w_z >= 0)
+                g_c += w.col(p.w_z).head(m).asDiagonal() * b_z.middleCols(c0, width);
+              if (p.symmetric)
                 {
-                  auto block = sys.r11.block(p->row, p->col, n, n);
+                  auto diagonal = sys.r11.block(p.row + c0, p.col + c0, width, width);
+                  auto below = sys.r11.block(p.row + c1, p.col + c0, n - c1, width);
+                  const auto b_diagonal = b_c.middleCols(c0, width);
+                  const auto b_below = b_c.rightCols(n - c1);
                   if (first)
-                    block.triangularView<Eigen::Lower>() = b_c.transpose() * g_c;
+                    {
+                      diagonal.triangularView<Eigen::Lower>() = b_diagonal.transpose() * g_c;
+                      if (c1 < n)
+                        below.noalias() = b_below.transpose() * g_c;
+                    }
                   else
-                    block.triangularView<Eigen::Lower>() += b_c.transpose() * g_c;
+                    {
+                      diagonal.triangularView<Eigen::Lower>() += b_diagonal.transpose() * g_c;
+                      if (c1 < n)
+                        below.noalias() += b_below.transpose() * g_c;
+                    }
                 }
               else
                 {
-                  auto block = sys.r12.block(p->row, p->col, n, n);
+                  auto block = sys.r12.block(p.row, p.col + c0, n, width);
                   if (first)
                     block.noalias() = b_c.transpose() * g_c;
                   else
@@ -326,49 +403,53 @@ namespace rfm
             }
         }
     };
-    {
-      const BlasThreadsOff one_blas_thread; // the parallelism is ours here
-      std::vector<std::exception_ptr> errors(n_threads);
-      auto guarded = [&](int thread) {
-        try
-          {
-            run(thread);
-          }
-        catch (...)
-          {
-            errors[thread] = std::current_exception();
-          }
-      };
-      std::vector<std::thread> pool;
-      for (int t = 1; t < n_threads; ++t)
-        pool.emplace_back(guarded, t);
-      guarded(0);
-      for (std::thread &t : pool)
-        t.join();
-      for (const std::exception_ptr &e : errors)
-        if (e)
-          std::rethrow_exception(e);
-    }
-
     // 4. R11: mirror each symmetric block, copy the off-diagonal ones to their transposed
-    // place (a symmetric block is its own transpose), zero the blocks with C_kl = 0.
-    for (int k = 0; k < n_stress_components; ++k)
-      for (int l = k; l < n_stress_components; ++l)
+    // place (a symmetric block is its own transpose), zero the blocks with C_kl = 0; R12:
+    // u_r does no work on sigma_zz, u_z none on sigma_rr and sigma_tt. Column tiles are
+    // dealt out to the threads in turn (each writes only its own columns), after all
+    // products are done, on the same threads: on two freshly started threads this pass
+    // took 0.41 ms at Lame p = 14, on one thread 0.28 ms.
+    auto mirror = [&](int thread) {
+      for (Eigen::Index j0 = thread * mirror_tile; j0 < n; j0 += n_threads * mirror_tile)
         {
-          if (c(k, l) == 0.0)
-            {
-              sys.r11.block(k * n, l * n, n, n).setZero();
-              sys.r11.block(l * n, k * n, n, n).setZero();
-              continue;
-            }
-          mirror_lower(sys.r11.block(l * n, k * n, n, n));
-          if (l != k)
-            sys.r11.block(k * n, l * n, n, n) = sys.r11.block(l * n, k * n, n, n);
+          const Eigen::Index j1 = std::min(j0 + mirror_tile, n);
+          for (int k = 0; k < n_stress_components; ++k)
+            for (int l = k; l < n_stress_components; ++l)
+              {
+                auto lower = sys.r11.block(l * n, k * n, n, n);
+                auto upper = sys.r11.block(k * n, l * n, n, n);
+                if (c(k, l) == 0.0)
+                  {
+                    lower.middleCols(j0, j1 - j0).setZero();
+                    upper.middleCols(j0, j1 - j0).setZero();
+                    continue;
+                  }
+                symmetric_columns(lower, lower, j0, j1);
+                if (l != k)
+                  symmetric_columns(lower, upper, j0, j1);
+              }
+          sys.r12.block(zz * n, j0, n, j1 - j0).setZero();
+          sys.r12.block(rr * n, n + j0, n, j1 - j0).setZero();
+          sys.r12.block(tt * n, n + j0, n, j1 - j0).setZero();
         }
-    // R12: u_r does no work on sigma_zz, u_z none on sigma_rr and sigma_tt.
-    sys.r12.block(zz * n, 0, n, n).setZero();
-    sys.r12.block(rr * n, n, n, n).setZero();
-    sys.r12.block(tt * n, n, n, n).setZero();
+    };
+    SpinBarrier products_done(n_threads);
+    const BlasThreadsOff one_blas_thread; // the parallelism is ours here (nested)
+    on_threads(n_threads, [&](int thread) {
+      std::exception_ptr error; // still arrive at the barrier, then rethrow
+      try
+        {
+          run(thread);
+        }
+      catch (...)
+        {
+          error = std::current_exception();
+        }
+      products_done.arrive_and_wait();
+      if (error)
+        std::rethrow_exception(error);
+      mirror(thread);
+    });
     for (int k = 0; k < n_stress_components; ++k)
       sys.p_s.segment(k * n, n) = bv.col(k);
     sys.p_u.segment(0, n) = bv.col(4) + bv_r.col(0) + bv_z.col(0);
@@ -382,6 +463,10 @@ namespace rfm
     const Eigen::Index n_s = space.n_stress_unknowns(), n_u = space.n_displacement_unknowns();
     // Every entry is written below: the polynomial blocks by add_polynomial_blocks, the
     // borders by add_edge_terms; no zero fill of the large matrices.
+    // OpenBLAS on one thread for the whole assembly: the remaining products are small
+    // (boundary, enrichment borders), and an OpenBLAS call on two threads leaves its
+    // worker spinning for about 0.1 s, taking a core from the next assembly's threads.
+    const BlasThreadsOff one_blas_thread;
     ReissnerSystem sys;
     sys.r11.resize(n_s, n_s);
     sys.r12.resize(n_s, n_u);

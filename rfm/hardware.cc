@@ -5,6 +5,7 @@
 #include <sched.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cstdlib>
 #include <fstream>
 #include <stdexcept>
@@ -69,18 +70,30 @@ namespace rfm
 #endif
   }
 
+  namespace
+  {
+    // BlasThreadsOff objects alive (they nest: add_polynomial_blocks inside assemble_reissner_system).
+    std::atomic<int> blas_threads_off_depth{0};
+  } // namespace
+
   BlasThreadsOff::BlasThreadsOff()
   {
+    if (blas_threads_off_depth++ == 0)
+      {
 #if defined(RFM_OPENBLAS)
-    openblas_set_num_threads(1);
+        openblas_set_num_threads(1);
 #endif
+      }
   }
 
   BlasThreadsOff::~BlasThreadsOff()
   {
+    if (--blas_threads_off_depth == 0)
+      {
 #if defined(RFM_OPENBLAS)
-    openblas_set_num_threads(thread_count());
+        openblas_set_num_threads(thread_count());
 #endif
+      }
   }
 
   namespace

@@ -6,9 +6,9 @@
 // n_threads() threads of its own and runs OpenBLAS single-threaded meanwhile. Default:
 // OPENBLAS_NUM_THREADS, else OMP_NUM_THREADS, else all cores; set_n_threads overrides it
 // (rfm_benchmark --threads=N). Results are bitwise identical
-// between runs with the same thread count (each output block is computed by one thread
-// in a fixed order; OpenBLAS partitions by the thread count only). Different thread
-// counts differ by rounding.
+// between runs with the same thread count (each output entry is computed by one thread
+// in a fixed order; the assembly's column ranges and OpenBLAS's partitions depend on the
+// thread count only). Different thread counts differ by rounding.
 #pragma once
 
 namespace rfm
@@ -21,7 +21,7 @@ namespace rfm
   const char *threading_backend();
 
   /// While alive, OpenBLAS runs on the calling thread only (inside the assembly's own
-  /// threads); restores n_threads() at the end.
+  /// threads); the last one alive restores n_threads() at its end (they nest).
   class BlasThreadsOff
   {
   public:

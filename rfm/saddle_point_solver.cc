@@ -1,6 +1,7 @@
 #include "rfm/saddle_point_solver.h"
 
-#include <Eigen/Cholesky>
+#include "rfm/dense_cholesky.h"
+
 #include <Eigen/Eigenvalues>
 
 #include <cmath>
@@ -30,8 +31,8 @@ namespace rfm
     const Eigen::Index n_s = sys.r11.rows(), n_u = sys.r12.cols();
 
     // Three n x n-sized buffers in all (M, Y, K): each factorization overwrites its
-    // matrix (LLT<Ref>), only lower triangles are formed, nothing large is copied twice.
-    // 1. M = -R11, scaled (lower triangle), Cholesky in place.
+    // matrix (DenseCholesky), only lower triangles are formed, nothing large is copied twice.
+    // 1. M = -R11, scaled (lower triangle), Cholesky in place (DenseCholesky).
     const Eigen::VectorXd d = (-sys.r11.diagonal()).cwiseMax(0.0).cwiseSqrt().cwiseInverse();
     if (!d.allFinite())
       {
@@ -43,9 +44,9 @@ namespace rfm
     m.triangularView<Eigen::Lower>() = -(d.asDiagonal() * sys.r11 * d.asDiagonal());
     // The eigenvalue diagnostics read the lower triangle before it is factorized.
     const double cond_stress = options.compute_diagnostics ? eigen_condition(m) : nan;
-    const Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt_m(m);
-    summary.rcond_stress = llt_m.info() == Eigen::Success ? llt_m.rcond() : 0.0;
-    if (llt_m.info() != Eigen::Success || !(summary.rcond_stress >= options.min_rcond))
+    const DenseCholesky llt_m(m);
+    summary.rcond_stress = llt_m.rcond();
+    if (!llt_m.success() || !(summary.rcond_stress >= options.min_rcond))
       {
         std::ostringstream msg;
         msg << "-R11 (stress block) is not numerically positive definite (rcond estimate "
@@ -56,9 +57,9 @@ namespace rfm
 
     // 2. Y = L^-1 D R12, K = Y^T Y (lower triangle), scaled by E in place.
     Eigen::MatrixXd y = d.asDiagonal() * sys.r12;
-    llt_m.matrixL().solveInPlace(y);
+    llt_m.solve_l_in_place(y);
     Eigen::VectorXd y_s = d.cwiseProduct(sys.p_s);
-    llt_m.matrixL().solveInPlace(y_s);
+    llt_m.solve_l_in_place(y_s);
     Eigen::MatrixXd k(n_u, n_u);
     k.triangularView<Eigen::Lower>() = y.transpose() * y;
     const Eigen::VectorXd e = k.diagonal().cwiseMax(0.0).cwiseSqrt().cwiseInverse();
@@ -75,9 +76,9 @@ namespace rfm
         summary.cond_schur = eigen_condition(k);
         summary.inf_sup = 1.0 / std::sqrt(summary.cond_schur);
       }
-    const Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt_k(k);
-    summary.rcond_schur = llt_k.info() == Eigen::Success ? llt_k.rcond() : 0.0;
-    if (llt_k.info() != Eigen::Success || !(summary.rcond_schur >= options.min_rcond))
+    const DenseCholesky llt_k(k);
+    summary.rcond_schur = llt_k.rcond();
+    if (!llt_k.success() || !(summary.rcond_schur >= options.min_rcond))
       {
         std::ostringstream msg;
         msg << "Schur complement K = R12^T (-R11)^-1 R12 is singular or badly conditioned "
@@ -92,7 +93,7 @@ namespace rfm
     const Eigen::VectorXd rhs = -(sys.p_u + y.transpose() * y_s);
     out.q_u = e.cwiseProduct(llt_k.solve(e.cwiseProduct(rhs)));
     Eigen::VectorXd t = y * out.q_u + y_s;
-    llt_m.matrixU().solveInPlace(t);
+    llt_m.solve_lt_in_place(t);
     out.q_s = d.cwiseProduct(t);
     if (!out.q_u.allFinite() || !out.q_s.allFinite())
       {
