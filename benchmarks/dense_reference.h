@@ -2,6 +2,8 @@
 // compared with in the same run (rfm_benchmark.cc).
 #pragma once
 
+#include "rfm/hardware.h"
+
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 
@@ -44,6 +46,7 @@ namespace benchmarks
   /// GEMM C = A^T B with A, B of n_q x n: the shape of one assembly block.
   inline double gemm_flops_per_second(Eigen::Index n, Eigen::Index n_q)
   {
+    const rfm::BlasThreadsOn all_threads; // the reference: what n_threads() cores can do
     const Eigen::MatrixXd a = Eigen::MatrixXd::Random(n_q, n), b = Eigen::MatrixXd::Random(n_q, n);
     Eigen::MatrixXd c(n, n);
     return best_rate(2.0 * n * n * n_q, [&] { c.noalias() = a.transpose() * b; });
@@ -52,6 +55,7 @@ namespace benchmarks
   /// LLT of an SPD n x n matrix (a fresh factor each time, as the benchmark does).
   inline double cholesky_flops_per_second(Eigen::Index n)
   {
+    const rfm::BlasThreadsOn all_threads;
     const Eigen::MatrixXd a = spd_matrix(n);
     return best_rate(n * n * n / 3.0, [&] {
       const Eigen::LLT<Eigen::MatrixXd> llt(a);

@@ -126,6 +126,7 @@ namespace
   void BM_DenseGemm(benchmark::State &state)
   {
     const Eigen::Index n = state.range(0), n_q = state.range(1);
+    const rfm::BlasThreadsOn all_threads;
     const Eigen::MatrixXd a = Eigen::MatrixXd::Random(n_q, n), b = Eigen::MatrixXd::Random(n_q, n);
     Eigen::MatrixXd c(n, n);
     for (auto _ : state)
@@ -143,6 +144,7 @@ namespace
   void BM_DenseCholesky(benchmark::State &state)
   {
     const Eigen::Index n = state.range(0);
+    const rfm::BlasThreadsOn all_threads;
     const Eigen::MatrixXd a = benchmarks::spd_matrix(n);
     for (auto _ : state)
       {

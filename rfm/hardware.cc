@@ -51,14 +51,31 @@ namespace rfm
 
   int n_threads() { return thread_count(); }
 
+  namespace
+  {
+    // Scopes alive: OpenBLAS runs on n_threads() threads when some BlasThreadsOn scope is
+    // and no BlasThreadsOff scope is, else on one.
+    std::atomic<int> blas_on_depth{0}, blas_off_depth{0};
+
+    void apply_blas_threads()
+    {
+#if defined(RFM_OPENBLAS)
+      const int n = blas_on_depth > 0 && blas_off_depth == 0 ? thread_count() : 1;
+      if (openblas_get_num_threads() != n)
+        openblas_set_num_threads(n);
+#endif
+    }
+
+    // OpenBLAS starts on all cores: one thread until a BlasThreadsOn scope asks for more.
+    [[maybe_unused]] const bool blas_single_at_start = (apply_blas_threads(), true);
+  } // namespace
+
   void set_n_threads(int n)
   {
     if (n < 1)
       throw std::invalid_argument("thread count: " + std::to_string(n) + " (must be >= 1)");
     thread_count() = n;
-#if defined(RFM_OPENBLAS)
-    openblas_set_num_threads(n);
-#endif
+    apply_blas_threads();
   }
 
   const char *threading_backend()
@@ -70,31 +87,21 @@ namespace rfm
 #endif
   }
 
-  namespace
+  BlasThreadsOn::BlasThreadsOn(const bool enable) : enabled_(enable)
   {
-    // BlasThreadsOff objects alive (they nest: add_polynomial_blocks inside assemble_reissner_system).
-    std::atomic<int> blas_threads_off_depth{0};
-  } // namespace
-
-  BlasThreadsOff::BlasThreadsOff()
-  {
-    if (blas_threads_off_depth++ == 0)
-      {
-#if defined(RFM_OPENBLAS)
-        openblas_set_num_threads(1);
-#endif
-      }
+    if (enabled_)
+      ++blas_on_depth, apply_blas_threads();
   }
 
-  BlasThreadsOff::~BlasThreadsOff()
+  BlasThreadsOn::~BlasThreadsOn()
   {
-    if (--blas_threads_off_depth == 0)
-      {
-#if defined(RFM_OPENBLAS)
-        openblas_set_num_threads(thread_count());
-#endif
-      }
+    if (enabled_)
+      --blas_on_depth, apply_blas_threads();
   }
+
+  BlasThreadsOff::BlasThreadsOff() { ++blas_off_depth, apply_blas_threads(); }
+
+  BlasThreadsOff::~BlasThreadsOff() { --blas_off_depth, apply_blas_threads(); }
 
   namespace
   {

@@ -2,8 +2,9 @@
 // size that the assembly's chunks of quadrature points are fitted to.
 //
 // Threads: Eigen's products go to OpenBLAS (RFM_OPENBLAS=ON, EIGEN_USE_BLAS), which runs
-// them on n_threads() threads; the assembly splits its block products between
-// n_threads() threads of its own and runs OpenBLAS single-threaded meanwhile. Default:
+// the large saddle-point solves on n_threads() threads (BlasThreadsOn) and everything else
+// on one; the assembly splits its block products between n_threads() threads of its own
+// and runs OpenBLAS single-threaded meanwhile. Default:
 // OPENBLAS_NUM_THREADS, else OMP_NUM_THREADS, else all cores; set_n_threads overrides it
 // (rfm_benchmark --threads=N). Results are bitwise identical
 // between runs with the same thread count (each output entry is computed by one thread
@@ -20,8 +21,28 @@ namespace rfm
   /// The parallel route compiled in.
   const char *threading_backend();
 
+  /// OpenBLAS runs on one thread except inside a BlasThreadsOn scope (and outside every
+  /// BlasThreadsOff scope): most of the program's BLAS calls are small products (field
+  /// evaluation, functionals, the contact check) that a second thread only slows down
+  /// (measured: die_contact --mode full 58 s on one thread, 80 s with OpenBLAS on two
+  /// threads everywhere). Both scopes nest.
+  ///
+  /// While alive (and enabled), OpenBLAS runs on n_threads() threads: the large dense
+  /// factorizations and solves (solve_saddle_point above parallel_solve_unknowns).
+  class BlasThreadsOn
+  {
+  public:
+    explicit BlasThreadsOn(bool enable = true);
+    ~BlasThreadsOn();
+    BlasThreadsOn(const BlasThreadsOn &) = delete;
+    BlasThreadsOn &operator=(const BlasThreadsOn &) = delete;
+
+  private:
+    bool enabled_;
+  };
+
   /// While alive, OpenBLAS runs on the calling thread only (inside the assembly's own
-  /// threads); the last one alive restores n_threads() at its end (they nest).
+  /// threads), whatever BlasThreadsOn scopes enclose it.
   class BlasThreadsOff
   {
   public:
@@ -30,6 +51,11 @@ namespace rfm
     BlasThreadsOff(const BlasThreadsOff &) = delete;
     BlasThreadsOff &operator=(const BlasThreadsOff &) = delete;
   };
+
+  /// Saddle-point systems with at least this many unknowns (stress + displacement) are
+  /// factorized on n_threads() threads, smaller ones on one: measured two-thread over
+  /// one-thread solve times 1.16x at 726 unknowns (Lame p = 10), 1.38x at 1014 (p = 12).
+  inline constexpr long parallel_solve_unknowns = 1000;
 
   /// Per-core L2 data cache of cpu0 in bytes: sysconf, else
   /// /sys/devices/system/cpu/cpu0/cache, else default_l2_bytes.

@@ -1,5 +1,7 @@
 #include "rfm/saddle_point_solver.h"
 
+#include "rfm/hardware.h"
+
 #include "rfm/dense_cholesky.h"
 
 #include <Eigen/Eigenvalues>
@@ -29,6 +31,8 @@ namespace rfm
     const double nan = std::numeric_limits<double>::quiet_NaN();
     summary.cond_stress = summary.cond_schur = summary.inf_sup = nan;
     const Eigen::Index n_s = sys.r11.rows(), n_u = sys.r12.cols();
+    // Large systems: the factorizations and solves on n_threads() threads (hardware.h).
+    const BlasThreadsOn parallel(n_s + n_u >= parallel_solve_unknowns);
 
     // Three n x n-sized buffers in all (M, Y, K): each factorization overwrites its
     // matrix (DenseCholesky), only lower triangles are formed, nothing large is copied twice.
