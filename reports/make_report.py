@@ -927,8 +927,12 @@ def main():
     for d in (lame, die, cmp, load(args.data, "bodies_of_revolution.json"),
               load(args.data, "body_loads.json")):
         if d:
-            md.append(f"* driver `{d['driver']}` in mode `{d['mode']}`; the problem files it read are "
+            threads = f" on {d['threads']} thread{'s' if d['threads'] != 1 else ''}" if "threads" in d else ""
+            md.append(f"* driver `{d['driver']}` in mode `{d['mode']}`{threads}; the problem files it read are "
                       "echoed in `reports/data/*.json`")
+    md.append("* README command (1) runs the drivers two at a time, one per core, each on one thread "
+              "(`reports/CMakeLists.txt`): the wall times in this report are one-thread times taken "
+              "while the other core ran another driver.")
     md.append("")
     if lame:
         md += lame_section(lame, cmp, args.out)

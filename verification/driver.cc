@@ -3,6 +3,7 @@
 #include "problem/input_error.h"
 #include "problem/json_io.h"
 #include "rfm/allocator.h"
+#include "rfm/hardware.h"
 #include "verification/tolerances.h"
 
 #include <CLI/CLI.hpp>
@@ -48,7 +49,10 @@ namespace verification
         std::filesystem::create_directories(context.output_dir);
 
         // 2. The driver's own work.
-        const nlohmann::json results = body(context);
+        nlohmann::json results = body(context);
+        // The thread count of the RFM's dense kernels and assembly (rfm/hardware.h): the
+        // report states it beside the wall times.
+        results["threads"] = rfm::n_threads();
 
         // 3. Write, then gate.
         const std::string out_file = context.output_dir + "/" + name + ".json";
