@@ -742,9 +742,10 @@ def bodies_section(bor, out_dir):
     md.append("### 5.1 Thick spherical shell (a = 0.1 m, b = 0.2 m, p_i = 10 MPa, p_o = 2 MPa), "
               "against Lame's closed form")
     md.append("")
-    md.append("RFM: outline structures, the box's Legendre basis orthonormalized on the section, "
-              "curved-triangle quadrature. Max stress error over a 41 x 41 polar grid, relative to "
-              "max |sigma|; the functional against -U.")
+    md.append("RFM: outline structures, polynomials orthonormal on the section (Arnoldi on sample "
+              "points, rfm/section_basis.h; long-double recurrence from p = 18), curved-triangle "
+              "quadrature. Max stress error over a 41 x 41 polar grid, relative to max |sigma|; the "
+              "functional against -U.")
     md.append("")
     md.append("| p | N | max stress err | indicator | Phi_R error (rel. to U) | time [s] |")
     md.append("|---|---|---|---|---|---|")
@@ -766,10 +767,16 @@ def bodies_section(bor, out_dir):
                 label="RFM indicator |Phi_L - Phi_C| / |Phi_R|")
     decorate(ax, "p (N = (p + 1)^2)", "relative error", "Thick sphere: RFM against p")
     md += [f"![sphere]({save(fig, out_dir, 'sphere_rfm_convergence.png')})", ""]
-    md.append("The rate is exponential up to p = 12-14 and then flattens near 5e-5: the box basis is "
-              "nearly dependent on the quarter annulus, and the orthonormalization drops the "
-              "directions below 1e-14 of the largest Gram eigenvalue (issue 13 asks 1e-6 at "
-              "N <= 400: not reached yet).")
+    best = min((k for k in ps if sph["rfm"][k]["N"] <= 400),
+               key=lambda k: sph["rfm"][k]["max_error_relative"])
+    md.append("The box's Legendre basis is nearly dependent on the quarter annulus (condition number "
+              "of its r-weighted values 1.3e12 at p = 16, 1.5e15 at p = 20); with it the error "
+              "flattened near 5e-5 from p = 14 on, because the orthonormalization had to drop the "
+              "small directions. The section-orthonormal basis keeps them all. Its recurrence "
+              "amplifies its own rounding (noise 7e-6 at p = 18, 2e-4 at p = 20 in double), so it "
+              "runs in long double from p = 18. Issue 13 asks a max stress error below 1e-6 at "
+              f"N <= 400: here {sph['rfm'][best]['max_error_relative']:.2e} at N = "
+              f"{sph['rfm'][best]['N']} (p = {best[1:]}).")
     md.append("")
     cyl = bor["solid_cylinder"]
     md.append("### 5.2 Solid cylinder (R1 = 0, the axis) under end pressure: uniform sigma_zz = -p")
@@ -873,8 +880,10 @@ def body_loads_section(bl, out_dir):
                       "the mesh again with more cells when it finds one; before, that cell's singular Jacobian put 0.16 "
                       "of max |s| into the Gauss-Lobatto max at L = 3).")
         else:
-            md.append("The sphere's RFM converges slowly along the axis near the poles (p = 12 and 16 differ by 2e-2 of "
-                      "max |s| at (0, 0.2)): the weakness of section 5.1, not of the loads.")
+            md.append("The RFM's indicator falls slowly here (about 0.6 per step at p = 12-16), while the same "
+                      "section under pressure alone converges exponentially to 1e-14 (section 5.1, with the "
+                      "section-orthonormal basis): the slow part comes with the thermal load, and its cause is "
+                      "not found yet.")
         md.append("")
     sw = bl.get("self_weight")
     if sw:

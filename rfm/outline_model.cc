@@ -4,6 +4,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -16,10 +17,22 @@ namespace rfm
       return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
 
-    TensorLegendreBasis basis_of(const axisym::Outline &outline, const int degree)
+    // Sample points of the polynomial basis (section_basis.h): the section's Gauss rule
+    // with p + 2 points per direction and triangle, weights w r (the measure of the
+    // functional): about 15 N points at p = 18 on the thick sphere.
+    Quadrature2D basis_samples(const axisym::Outline &outline, const int degree)
+    {
+      SectionQuadratureOptions qo;
+      qo.n_points = degree + 2;
+      return section_gauss(outline, qo);
+    }
+    SectionPolynomialBasis basis_of(const axisym::Outline &outline, const int degree_r,
+                                    const int degree_z)
     {
       const axisym::BoundingBox b = outline.bounding_box();
-      return TensorLegendreBasis(degree, b.r_min, b.r_max, b.z_min, b.z_max);
+      const Quadrature2D q = basis_samples(outline, std::max(degree_r, degree_z));
+      return SectionPolynomialBasis(degree_r, degree_z, b.r_min, b.r_max, b.z_min, b.z_max, q.r,
+                                    q.z, q.weights.cwiseProduct(q.r));
     }
 
     // Gauss points along every edge (arcs in angle), with r ds weights. Points never fall on
@@ -63,7 +76,7 @@ namespace rfm
     : material_(problem.material)
     , loads_(problem.body_loads)
     , structures_(*problem.body, (options.validate(), options.degree))
-    , basis_(basis_of(problem.body->outline, options.degree))
+    , basis_(basis_of(problem.body->outline, options.degree, options.degree))
   {
     const auto t0 = std::chrono::steady_clock::now();
     // Products of two coordinate functions reach total degree 4p in (r, z), times the
@@ -97,28 +110,33 @@ namespace rfm
     // Stresses: all columns at once (R11 couples the components and the boundary columns
     // through C, and a boundary column can come close to the polynomial ones inside).
     const Eigen::MatrixXd s_map = orthonormal(-sys.r11);
-    // Displacements per component, on the columns phi_ij with i <= p - k_r, j <= p - k_z
-    // (displacement_degree_reduction: no reduction unless u_m is constrained on two
-    // parallel lines or on arcs).
+    // Displacements per component, on the polynomials of degree <= p - k_r in r and
+    // <= p - k_z in z (displacement_degree_reduction: no reduction unless u_m is
+    // constrained on two parallel lines or on arcs). That space is spanned by the
+    // orthonormal basis of those degrees on the same samples, whose coefficients in the
+    // full basis are its inner products with it there (both orthonormal, one space inside
+    // the other): a well-conditioned N x N_m matrix.
     const int p = options.degree;
     std::array<Eigen::MatrixXd, 2> tu;
-    std::array<std::vector<Eigen::Index>, 2> kept_columns;
     for (int m = 0; m < 2; ++m)
       {
         const auto k = structures_.displacement_degree_reduction(m);
-        for (int j = 0; j <= p; ++j)
-          for (int i = 0; i <= p; ++i)
-            if (i <= p - k[0] && j <= p - k[1])
-              kept_columns[m].push_back(static_cast<Eigen::Index>(j) * (p + 1) + i);
-        if (kept_columns[m].empty())
-          kept_columns[m].push_back(0);
-        tu[m] = orthonormal(gram_u[m](kept_columns[m], kept_columns[m]));
+        if (k[0] == 0 && k[1] == 0)
+          {
+            tu[m] = orthonormal(gram_u[m]);
+            continue;
+          }
+        const int p_r = std::max(0, p - k[0]), p_z = std::max(0, p - k[1]);
+        const Quadrature2D samples = basis_samples(problem.body->outline, p);
+        const Eigen::VectorXd w = samples.weights.cwiseProduct(samples.r);
+        const SectionPolynomialBasis reduced = basis_of(problem.body->outline, p_r, p_z);
+        const Eigen::MatrixXd inclusion = basis_.evaluate(samples.r, samples.z).value.transpose() *
+                                          (w.asDiagonal() * reduced.evaluate(samples.r, samples.z).value);
+        tu[m] = inclusion * orthonormal(inclusion.transpose() * gram_u[m] * inclusion);
       }
     Eigen::MatrixXd u_map = Eigen::MatrixXd::Zero(2 * n, tu[0].cols() + tu[1].cols());
-    for (int m = 0; m < 2; ++m)
-      for (std::size_t i = 0; i < kept_columns[m].size(); ++i)
-        u_map.row(m * n + kept_columns[m][i]).segment(m == 0 ? 0 : tu[0].cols(), tu[m].cols()) =
-          tu[m].row(static_cast<Eigen::Index>(i));
+    u_map.topLeftCorner(n, tu[0].cols()) = tu[0];
+    u_map.bottomRightCorner(n, tu[1].cols()) = tu[1];
     n_kept_ = {s_map.cols(), u_map.cols()};
 
     ReissnerSystem reduced;
