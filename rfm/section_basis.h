@@ -9,7 +9,7 @@
 // 1.1e9 at p = 12, 1.3e12 at p = 16 and 1.5e15 at p = 20 (measured). Every combination a
 // solution needs from the small directions then has Legendre coefficients of that size, and
 // the orthonormalization of the system (outline_model.h) has to drop them: the thick
-// sphere's stress error stalled near 6e-6 of max |sigma| from p = 14 on. No change of basis
+// sphere's max stress error stayed between 2e-5 and 8e-5 of max |sigma| from p = 14 on. No change of basis
 // computed from Legendre values can fix that (its matrix has the same condition number).
 // The functions here are never expanded in another basis: each is evaluated by the
 // recurrence that built it, which multiplies an orthonormal function by a bounded one.
@@ -34,12 +34,13 @@
 // thick sphere (r-weighted rms of the noise, relative): 3.6e-10 at p = 12, 2.5e-7 at 16,
 // 7.4e-6 at 18, 2.0e-4 at 20; at p = 20 it made the RFM's stress error 1.1e-3 instead of
 // 4e-7 and the solution depend on the sample points. The constructor therefore evaluates
-// the recurrence at its own samples and measures max |G - I| (G the Gram matrix there,
-// which is I without rounding); above extended_precision_threshold, evaluate() runs the
-// recurrence in long double (64-bit significand, 2^11 times less noise; about 2.5 times
-// slower). That covers p <= 20 on the thick sphere (p = 18: stress error 2.3e-5 -> 1.1e-6;
-// p = 20: 1.1e-3 -> 4.2e-7); at p = 22 the long-double noise is back near 1e-5, and a
-// double-double recurrence would be the next step.
+// the recurrence in double at its own samples and measures max |G - I| (G the Gram matrix
+// there, I up to rounding: the Arnoldi vectors are orthonormal); above
+// extended_precision_threshold, evaluate() runs the recurrence in long double (64-bit
+// significand, 2^11 times less noise; the sphere at p = 20 took 50 s instead of 21 s on one
+// core). That covers p <= 20 on the thick sphere (p = 18: stress error 2.3e-5 -> 1.1e-6;
+// p = 20: 1.1e-3 -> 4.2e-7); at p = 22 the long-double noise is back near 1e-5 (stress
+// error 1.1e-5), and a double-double recurrence would be the next step.
 //
 // Evaluation costs about 3 n N^2 flops for n points (values and both derivatives), in
 // chunks of points that stay in cache.
