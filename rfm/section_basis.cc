@@ -61,7 +61,7 @@ namespace rfm
     // the orthonormal columns. Its rounding errors grow with p where the section fills its
     // box only in part (thick sphere, max |G - I|: 5.6e-10 at p = 12, 2.3e-7 at 16, 6.4e-6
     // at 18, 1.8e-4 at 20); above extended_precision_threshold the evaluation runs in long
-    // double (evaluate_extended).
+    // double (evaluate_in<long double>).
     {
       const Eigen::MatrixXd val = evaluate(r, z, false, Precision::double_precision).value;
       const Eigen::MatrixXd g = val.transpose() * (w.array().max(0.0).matrix().asDiagonal() * val);
@@ -75,114 +75,68 @@ namespace rfm
                                                const bool derivatives,
                                                const Precision precision) const
   {
-    const Eigen::Index n = r.size(), n_f = n_basis_functions();
-    if (precision == Precision::long_double ||
-        (precision == Precision::automatic && extended_))
-      return evaluate_extended(r, z, derivatives);
-    BasisValues b;
-    b.value.resize(n, n_f);
-    if (derivatives)
-      {
-        b.d_r.resize(n, n_f);
-        b.d_z.resize(n, n_f);
-      }
-    // Chunks of points: a chunk's n_f columns of one quantity (128 x 441 doubles at p = 20:
-    // 0.45 MB) stay in L2 while the recurrence runs over them.
-    constexpr Eigen::Index chunk = 128;
-    Eigen::ArrayXd xi(chunk), eta(chunk);
-    for (Eigen::Index start = 0; start < n; start += chunk)
-      {
-        const Eigen::Index m = std::min(chunk, n - start);
-        xi.head(m) = (r.segment(start, m).array() - r_mid_) * r_scale_;
-        eta.head(m) = (z.segment(start, m).array() - z_mid_) * z_scale_;
-        auto q = b.value.middleRows(start, m);
-        q.col(0).setConstant(q0_);
-        for (Eigen::Index k = 1; k < n_f; ++k)
-          {
-            const bool along_r = k <= degree_r_; // j = 0
-            const Eigen::Index parent = along_r ? k - 1 : k - (degree_r_ + 1);
-            const auto x = along_r ? xi.head(m) : eta.head(m);
-            const auto hk = h_.col(k).head(k);
-            const double inv = 1.0 / h_(k, k);
-            if (derivatives)
-              {
-                // (x q)' = x' q + x q'
-                auto q_r = b.d_r.middleRows(start, m);
-                auto q_z = b.d_z.middleRows(start, m);
-                if (k == 1)
-                  q_r.col(0).setZero(), q_z.col(0).setZero();
-                q_r.col(k) = (x * q_r.col(parent).array()).matrix();
-                q_z.col(k) = (x * q_z.col(parent).array()).matrix();
-                if (along_r)
-                  q_r.col(k) += r_scale_ * q.col(parent);
-                else
-                  q_z.col(k) += z_scale_ * q.col(parent);
-                q_r.col(k).noalias() -= q_r.leftCols(k) * hk;
-                q_r.col(k) *= inv;
-                q_z.col(k).noalias() -= q_z.leftCols(k) * hk;
-                q_z.col(k) *= inv;
-              }
-            q.col(k) = (x * q.col(parent).array()).matrix();
-            q.col(k).noalias() -= q.leftCols(k) * hk;
-            q.col(k) *= inv;
-          }
-        if (derivatives && n_f == 1)
-          b.d_r.middleRows(start, m).setZero(), b.d_z.middleRows(start, m).setZero();
-      }
-    return b;
+    // Chunks of points: a chunk's N columns of one quantity (128 x 441 doubles at p = 20:
+    // 0.45 MB) stay in L2 while the recurrence runs over them (64 in long double).
+    if (precision == Precision::long_double || (precision == Precision::automatic && extended_))
+      return evaluate_in<long double>(r, z, derivatives, 64);
+    return evaluate_in<double>(r, z, derivatives, 128);
   }
-} // namespace rfm
 
-namespace rfm
-{
-  // The same recurrence in long double (64-bit significand: the rounding noise that the
-  // recurrence amplifies is 2^-11 of the double one), in chunks of points like evaluate().
-  BasisValues SectionPolynomialBasis::evaluate_extended(const Eigen::Ref<const Eigen::VectorXd> &r,
-                                                        const Eigen::Ref<const Eigen::VectorXd> &z,
-                                                        const bool derivatives) const
+  // The recurrence in arithmetic T (double, or long double: 64-bit significand, so the
+  // rounding noise that the recurrence amplifies is 2^-11 of the double one), chunk points
+  // at a time, values and (with derivatives) (x q)' = x' q + x q'.
+  template <typename T>
+  BasisValues SectionPolynomialBasis::evaluate_in(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                                  const Eigen::Ref<const Eigen::VectorXd> &z,
+                                                  const bool derivatives,
+                                                  const Eigen::Index chunk) const
   {
-    using LD = long double;
-    using ML = Eigen::Matrix<LD, Eigen::Dynamic, Eigen::Dynamic>;
-    using AL = Eigen::Array<LD, Eigen::Dynamic, 1>;
+    using Matrix = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>;
+    using Array = Eigen::Array<T, Eigen::Dynamic, 1>;
     const Eigen::Index n = r.size(), n_f = n_basis_functions();
-    const ML h = h_.cast<LD>();
+    const Matrix h = h_.cast<T>();
     BasisValues b;
     b.value.resize(n, n_f);
     if (derivatives)
       b.d_r.resize(n, n_f), b.d_z.resize(n, n_f);
-    constexpr Eigen::Index chunk = 64;
-    ML q(chunk, n_f), qr(chunk, n_f), qz(chunk, n_f);
+    Matrix q(chunk, n_f), q_r, q_z;
+    if (derivatives)
+      q_r.resize(chunk, n_f), q_z.resize(chunk, n_f);
     for (Eigen::Index start = 0; start < n; start += chunk)
       {
         const Eigen::Index m = std::min(chunk, n - start);
-        const AL xi = (r.segment(start, m).cast<LD>().array() - LD(r_mid_)) * LD(r_scale_),
-                 eta = (z.segment(start, m).cast<LD>().array() - LD(z_mid_)) * LD(z_scale_);
-        auto v = q.topRows(m), vr = qr.topRows(m), vz = qz.topRows(m);
-        v.col(0).setConstant(q0_), vr.col(0).setZero(), vz.col(0).setZero();
+        const Array xi = (r.segment(start, m).cast<T>().array() - T(r_mid_)) * T(r_scale_),
+                    eta = (z.segment(start, m).cast<T>().array() - T(z_mid_)) * T(z_scale_);
+        auto v = q.topRows(m);
+        v.col(0).setConstant(T(q0_));
+        if (derivatives)
+          q_r.topRows(m).col(0).setZero(), q_z.topRows(m).col(0).setZero();
         for (Eigen::Index k = 1; k < n_f; ++k)
           {
-            const bool along_r = k <= degree_r_;
+            const bool along_r = k <= degree_r_; // j = 0
             const Eigen::Index parent = along_r ? k - 1 : k - (degree_r_ + 1);
-            const AL &x = along_r ? xi : eta;
-            const LD inv = 1.0L / h(k, k);
+            const Array &x = along_r ? xi : eta;
+            const auto hk = h.col(k).head(k);
+            const T inv = T(1) / h(k, k);
             if (derivatives)
               {
+                auto vr = q_r.topRows(m), vz = q_z.topRows(m);
                 vr.col(k) = (x * vr.col(parent).array()).matrix();
                 vz.col(k) = (x * vz.col(parent).array()).matrix();
                 if (along_r)
-                  vr.col(k) += LD(r_scale_) * v.col(parent);
+                  vr.col(k) += T(r_scale_) * v.col(parent);
                 else
-                  vz.col(k) += LD(z_scale_) * v.col(parent);
-                vr.col(k) = (vr.col(k) - vr.leftCols(k) * h.col(k).head(k)) * inv;
-                vz.col(k) = (vz.col(k) - vz.leftCols(k) * h.col(k).head(k)) * inv;
+                  vz.col(k) += T(z_scale_) * v.col(parent);
+                vr.col(k) = (vr.col(k) - vr.leftCols(k) * hk) * inv;
+                vz.col(k) = (vz.col(k) - vz.leftCols(k) * hk) * inv;
               }
-            v.col(k) = ((x * v.col(parent).array()).matrix() - v.leftCols(k) * h.col(k).head(k)) * inv;
+            v.col(k) = ((x * v.col(parent).array()).matrix() - v.leftCols(k) * hk) * inv;
           }
         b.value.middleRows(start, m) = v.template cast<double>();
         if (derivatives)
           {
-            b.d_r.middleRows(start, m) = vr.template cast<double>();
-            b.d_z.middleRows(start, m) = vz.template cast<double>();
+            b.d_r.middleRows(start, m) = q_r.topRows(m).template cast<double>();
+            b.d_z.middleRows(start, m) = q_z.topRows(m).template cast<double>();
           }
       }
     return b;

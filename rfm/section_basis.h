@@ -93,14 +93,16 @@ namespace rfm
     bool extended_precision() const { return extended_; }
 
   private:
-    BasisValues evaluate_extended(const Eigen::Ref<const Eigen::VectorXd> &r,
-                                  const Eigen::Ref<const Eigen::VectorXd> &z, bool derivatives) const;
+    template <typename T>
+    BasisValues evaluate_in(const Eigen::Ref<const Eigen::VectorXd> &r,
+                            const Eigen::Ref<const Eigen::VectorXd> &z, bool derivatives,
+                            Eigen::Index chunk) const;
     int degree_r_, degree_z_;
     double r_mid_, r_scale_, z_mid_, z_scale_; ///< xi = (r - r_mid) r_scale, eta likewise
     double q0_;                                ///< the constant q_0
     /// Column k: h_ik for i < k above the diagonal, h_kk on it.
     Eigen::MatrixXd h_;
     double orthonormality_error_ = 0; ///< max |G - I| of the double recurrence at the samples
-    bool extended_ = false;           ///< evaluate in long double (evaluate_extended)
+    bool extended_ = false;           ///< evaluate in long double (evaluate_in<long double>)
   };
 } // namespace rfm
