@@ -118,6 +118,8 @@ namespace rfm
     // the other): a well-conditioned N x N_m matrix.
     const int p = options.degree;
     std::array<Eigen::MatrixXd, 2> tu;
+    Quadrature2D samples;     // the full basis's samples, and
+    Eigen::MatrixXd weighted; // its values there times w, once for both components
     for (int m = 0; m < 2; ++m)
       {
         const auto k = structures_.displacement_degree_reduction(m);
@@ -126,12 +128,16 @@ namespace rfm
             tu[m] = orthonormal(gram_u[m]);
             continue;
           }
+        if (weighted.size() == 0)
+          {
+            samples = basis_samples(problem.body->outline, p);
+            weighted = samples.weights.cwiseProduct(samples.r).asDiagonal() *
+                       basis_.evaluate(samples.r, samples.z, false).value;
+          }
         const int p_r = std::max(0, p - k[0]), p_z = std::max(0, p - k[1]);
-        const Quadrature2D samples = basis_samples(problem.body->outline, p);
-        const Eigen::VectorXd w = samples.weights.cwiseProduct(samples.r);
         const SectionPolynomialBasis reduced = basis_of(problem.body->outline, p_r, p_z);
-        const Eigen::MatrixXd inclusion = basis_.evaluate(samples.r, samples.z).value.transpose() *
-                                          (w.asDiagonal() * reduced.evaluate(samples.r, samples.z).value);
+        const Eigen::MatrixXd inclusion =
+          weighted.transpose() * reduced.evaluate(samples.r, samples.z, false).value;
         tu[m] = inclusion * orthonormal(inclusion.transpose() * gram_u[m] * inclusion);
       }
     Eigen::MatrixXd u_map = Eigen::MatrixXd::Zero(2 * n, tu[0].cols() + tu[1].cols());
