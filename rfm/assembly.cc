@@ -165,33 +165,6 @@ namespace rfm
           dst.col(j).tail(dst.rows() - j) = lower.col(j).tail(dst.rows() - j);
     }
 
-    // f(thread) on n_threads threads (thread 0 is the caller); the first exception is
-    // rethrown once all have finished.
-    template <typename F>
-    void on_threads(int n_threads, const F &f)
-    {
-      std::vector<std::exception_ptr> errors(n_threads);
-      auto guarded = [&](int thread) {
-        try
-          {
-            f(thread);
-          }
-        catch (...)
-          {
-            errors[thread] = std::current_exception();
-          }
-      };
-      std::vector<std::thread> pool;
-      for (int t = 1; t < n_threads; ++t)
-        pool.emplace_back(guarded, t);
-      guarded(0);
-      for (std::thread &t : pool)
-        t.join();
-      for (const std::exception_ptr &e : errors)
-        if (e)
-          std::rethrow_exception(e);
-    }
-
     // All n_threads threads wait here until all have arrived (once; C++17 has no
     // std::barrier). Spins with yield: the wait is short, the products are balanced.
     class SpinBarrier
@@ -255,7 +228,7 @@ namespace rfm
                              const Eigen::Ref<const Eigen::VectorXd> &r, const BasisValues &b,
                              const StressStructureValues &s, const DisplacementStructureValues &d,
                              const Eigen::Matrix4d &c, ReissnerSystem &sys,
-                             Eigen::Index chunk_points)
+                             Eigen::Index chunk_points, const bool full_r11)
   {
     const Eigen::Index n = b.value.cols(), n_q = b.value.rows();
     const Eigen::Index chunk =
@@ -403,8 +376,10 @@ namespace rfm
             }
         }
     };
-    // 4. R11: mirror each symmetric block, copy the off-diagonal ones to their transposed
-    // place (a symmetric block is its own transpose), zero the blocks with C_kl = 0; R12:
+    // 4. R11: mirror each symmetric block below the diagonal (its product gave its lower
+    // triangle), zero the blocks with C_kl = 0; with full_r11 also the diagonal blocks, and
+    // copy the off-diagonal ones to their transposed place (a symmetric block is its own
+    // transpose; memory-bound: no faster on two threads than on one); R12:
     // u_r does no work on sigma_zz, u_z none on sigma_rr and sigma_tt. Column tiles are
     // dealt out to the threads in turn (each writes only its own columns), after all
     // products are done, on the same threads: on two freshly started threads this pass
@@ -421,11 +396,15 @@ namespace rfm
                 if (c(k, l) == 0.0)
                   {
                     lower.middleCols(j0, j1 - j0).setZero();
-                    upper.middleCols(j0, j1 - j0).setZero();
+                    if (full_r11)
+                      upper.middleCols(j0, j1 - j0).setZero();
                     continue;
                   }
-                symmetric_columns(lower, lower, j0, j1);
-                if (l != k)
+                // Each block is computed as its lower triangle: the blocks below the
+                // diagonal need their upper halves in any case.
+                if (full_r11 || l != k)
+                  symmetric_columns(lower, lower, j0, j1);
+                if (full_r11 && l != k)
                   symmetric_columns(lower, upper, j0, j1);
               }
           sys.r12.block(zz * n, j0, n, j1 - j0).setZero();
@@ -435,7 +414,7 @@ namespace rfm
     };
     SpinBarrier products_done(n_threads);
     const BlasThreadsOff one_blas_thread; // the parallelism is ours here (nested)
-    on_threads(n_threads, [&](int thread) {
+    run_on_threads(n_threads, [&](int thread) {
       std::exception_ptr error; // still arrive at the barrier, then rethrow
       try
         {
@@ -474,7 +453,7 @@ namespace rfm
     sys.p_u.setZero(n_u);
     add_polynomial_blocks(space.measure(), space.quadrature().r, space.basis_values(),
                           space.stress_structure(), space.displacement_structure(),
-                          material.compliance(), sys, options.chunk_points);
+                          material.compliance(), sys, options.chunk_points, options.full_r11);
 
     const BoundaryQuadrature &bq = space.boundary_quadrature();
     const BasisValues bb = space.basis().evaluate(bq.r, bq.z);

@@ -129,4 +129,21 @@ namespace rfm
     EXPECT_GT(std::abs(m_rr_tt), 1e-6 * s11); // the compared entries are not trivially 0
     EXPECT_EQ(sys.r11(rr * n + j, rz * n + l), 0.0);
   }
+
+  // full_r11 = false writes the same lower triangle (bitwise) and leaves the strict upper
+  // alone; R12 and the loads are the same.
+  TEST(Assembly, LowerTriangleOnlyMatchesTheFullAssembly)
+  {
+    const DiscreteSpace space = make_space(6);
+    AssemblyOptions lower_only;
+    lower_only.full_r11 = false;
+    const ReissnerSystem full = assemble_reissner_system(space, Material{});
+    const ReissnerSystem lower = assemble_reissner_system(space, Material{}, lower_only);
+    const Eigen::MatrixXd a = full.r11.triangularView<Eigen::Lower>();
+    const Eigen::MatrixXd b = lower.r11.triangularView<Eigen::Lower>();
+    EXPECT_TRUE(a == b);
+    EXPECT_TRUE(full.r12 == lower.r12);
+    EXPECT_TRUE(full.p_s == lower.p_s);
+    EXPECT_TRUE(full.p_u == lower.p_u);
+  }
 } // namespace rfm

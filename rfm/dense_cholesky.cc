@@ -27,20 +27,28 @@ namespace rfm
       return factorize_recursive(a.bottomRightCorner(n - n1, n - n1));
     }
 
-    // |A|_1 (largest column sum of |a_ij|) of the symmetric A from its lower triangle.
-    double symmetric_l1_norm(const Eigen::Ref<const Eigen::MatrixXd> &a)
-    {
-      const Eigen::Index n = a.rows();
-      Eigen::VectorXd sums = Eigen::VectorXd::Zero(n);
-      for (Eigen::Index j = 0; j < n; ++j)
-        {
-          const Eigen::Index below = n - j - 1;
-          sums[j] += std::abs(a(j, j)) + a.col(j).tail(below).cwiseAbs().sum();
-          sums.tail(below) += a.col(j).tail(below).cwiseAbs(); // the mirrored row j
-        }
-      return n > 0 ? sums.maxCoeff() : 0.0;
-    }
   } // namespace
+
+  double symmetric_l1_norm(const Eigen::Ref<const Eigen::MatrixXd> &a)
+  {
+    const Eigen::Index n = a.rows();
+    Eigen::VectorXd sums = Eigen::VectorXd::Zero(n);
+    for (Eigen::Index j = 0; j < n; ++j)
+      {
+        const Eigen::Index below = n - j - 1;
+        sums[j] += std::abs(a(j, j)) + a.col(j).tail(below).cwiseAbs().sum();
+        sums.tail(below) += a.col(j).tail(below).cwiseAbs(); // the mirrored row j
+      }
+    return n > 0 ? sums.maxCoeff() : 0.0;
+  }
+
+  DenseCholesky::DenseCholesky(Eigen::Ref<Eigen::MatrixXd> factor, const double l1_norm)
+    : a_(factor)
+    , success_(true)
+  {
+    eigen_assert(factor.rows() == factor.cols());
+    rcond_ = Eigen::internal::rcond_estimate_helper(l1_norm, *this);
+  }
 
   DenseCholesky::DenseCholesky(Eigen::Ref<Eigen::MatrixXd> a)
     : a_(a)

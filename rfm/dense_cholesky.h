@@ -20,6 +20,9 @@
 
 namespace rfm
 {
+  /// |A|_1 (largest column sum of |a_ij|) of the symmetric A from its lower triangle.
+  double symmetric_l1_norm(const Eigen::Ref<const Eigen::MatrixXd> &a);
+
   class DenseCholesky
   {
   public:
@@ -33,6 +36,9 @@ namespace rfm
 
     /// Factorizes a in place; a must outlive this object.
     explicit DenseCholesky(Eigen::Ref<Eigen::MatrixXd> a);
+    /// A factor computed elsewhere (rfm/bordered_cholesky.h): the lower triangle of
+    /// `factor` holds L; rcond() estimates from `l1_norm`, |A|_1 of the matrix factored.
+    DenseCholesky(Eigen::Ref<Eigen::MatrixXd> factor, double l1_norm);
 
     /// False if a is not numerically positive definite (a pivot <= 0).
     bool success() const { return success_; }

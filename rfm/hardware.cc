@@ -6,6 +6,11 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <vector>
 #include <cstdlib>
 #include <fstream>
 #include <stdexcept>
@@ -81,9 +86,11 @@ namespace rfm
   const char *threading_backend()
   {
 #if defined(RFM_OPENBLAS)
-    return "OpenBLAS (EIGEN_USE_BLAS) + assembly threads";
+    return "OpenBLAS kernels (EIGEN_USE_BLAS), one thread each, on the solver's own threads "
+           "(assembly by columns, solve by tiles)";
 #else
-    return "assembly threads only (Eigen kernels single-threaded)";
+    return "Eigen kernels, one thread each, on the solver's own threads (assembly by columns, "
+           "solve by tiles)";
 #endif
   }
 
@@ -137,5 +144,145 @@ namespace rfm
       return f > 0 ? f : default_l2_bytes;
     }();
     return bytes;
+  }
+
+  namespace
+  {
+    // f(t) on threads started for this call (the fallback of run_on_threads).
+    void run_on_new_threads(const int n, const std::function<void(int)> &f)
+    {
+      std::vector<std::exception_ptr> errors(n);
+      auto guarded = [&](int t) {
+        try
+          {
+            f(t);
+          }
+        catch (...)
+          {
+            errors[t] = std::current_exception();
+          }
+      };
+      std::vector<std::thread> threads;
+      for (int t = 1; t < n; ++t)
+        threads.emplace_back(guarded, t);
+      guarded(0);
+      for (std::thread &t : threads)
+        t.join();
+      for (const std::exception_ptr &e : errors)
+        if (e)
+          std::rethrow_exception(e);
+    }
+
+    class WorkerPool
+    {
+    public:
+      ~WorkerPool()
+      {
+        {
+          const std::lock_guard<std::mutex> lock(mutex_);
+          shutdown_ = true;
+          generation_.fetch_add(1);
+        }
+        wake_.notify_all();
+        for (std::thread &t : workers_)
+          t.join();
+      }
+
+      // False if the pool is busy (nested or concurrent use): the caller falls back.
+      bool try_run(const int n, const std::function<void(int)> &f)
+      {
+        if (busy_.exchange(true))
+          return false;
+        {
+          const std::lock_guard<std::mutex> lock(mutex_);
+          while (static_cast<int>(workers_.size()) < n - 1)
+            {
+              const int index = static_cast<int>(workers_.size()) + 1;
+              workers_.emplace_back([this, index] { work(index); });
+            }
+          job_ = &f;
+          job_threads_ = n;
+          errors_.assign(n, nullptr);
+          remaining_.store(n - 1);
+          generation_.fetch_add(1);
+        }
+        wake_.notify_all();
+        try
+          {
+            f(0);
+          }
+        catch (...)
+          {
+            errors_[0] = std::current_exception();
+          }
+        while (remaining_.load(std::memory_order_acquire) > 0)
+          std::this_thread::yield();
+        std::exception_ptr first;
+        for (const std::exception_ptr &e : errors_)
+          if (e && !first)
+            first = e;
+        busy_.store(false);
+        if (first)
+          std::rethrow_exception(first);
+        return true;
+      }
+
+    private:
+      void work(const int index)
+      {
+        unsigned seen = 0;
+        while (true)
+          {
+            const auto spin_until = std::chrono::steady_clock::now() + std::chrono::microseconds(200);
+            while (generation_.load(std::memory_order_acquire) == seen &&
+                   std::chrono::steady_clock::now() < spin_until)
+              std::this_thread::yield();
+            const std::function<void(int)> *job = nullptr;
+            {
+              std::unique_lock<std::mutex> lock(mutex_);
+              wake_.wait(lock, [&] { return generation_.load() != seen; });
+              if (shutdown_)
+                return;
+              seen = generation_.load();
+              if (index < job_threads_)
+                job = job_;
+            }
+            if (!job)
+              continue;
+            try
+              {
+                (*job)(index);
+              }
+            catch (...)
+              {
+                errors_[index] = std::current_exception();
+              }
+            remaining_.fetch_sub(1, std::memory_order_release);
+          }
+      }
+
+      std::vector<std::thread> workers_;
+      std::mutex mutex_;
+      std::condition_variable wake_;
+      std::atomic<unsigned> generation_{0};
+      std::atomic<int> remaining_{0};
+      std::atomic<bool> busy_{false};
+      const std::function<void(int)> *job_ = nullptr;
+      int job_threads_ = 0;
+      std::vector<std::exception_ptr> errors_;
+      bool shutdown_ = false;
+    };
+  } // namespace
+
+  void run_on_threads(const int n, const std::function<void(int)> &f)
+  {
+    if (n <= 1)
+      {
+        f(0);
+        return;
+      }
+    static WorkerPool pool;
+    if (!pool.try_run(n, f))
+      run_on_new_threads(n, f);
   }
 } // namespace rfm

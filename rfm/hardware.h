@@ -2,15 +2,18 @@
 // size that the assembly's chunks of quadrature points are fitted to.
 //
 // Threads: Eigen's products go to OpenBLAS (RFM_OPENBLAS=ON, EIGEN_USE_BLAS), which runs
-// the large saddle-point solves on n_threads() threads (BlasThreadsOn) and everything else
-// on one; the assembly splits its block products between n_threads() threads of its own
-// and runs OpenBLAS single-threaded meanwhile. Default:
+// on one thread in the solver. The parallelism is the solver's own, on n_threads()
+// threads of one persistent pool (run_on_threads): the assembly splits its block
+// products between them, and the large saddle-point solves run as a task graph of tiles
+// (rfm/bordered_cholesky.h), each task a single-threaded OpenBLAS call. Default:
 // OPENBLAS_NUM_THREADS, else OMP_NUM_THREADS, else all cores; set_n_threads overrides it
-// (rfm_benchmark --threads=N). Results are bitwise identical
-// between runs with the same thread count (each output entry is computed by one thread
-// in a fixed order; the assembly's column ranges and OpenBLAS's partitions depend on the
-// thread count only). Different thread counts differ by rounding.
+// (rfm_benchmark --threads=N). Results are bitwise identical between runs with the same
+// thread count (each output entry is computed by one thread in a fixed order; the
+// assembly's column ranges depend on the thread count only). The solve's factors are
+// bitwise the same for every thread count; the assembly's differ by rounding.
 #pragma once
+
+#include <functional>
 
 namespace rfm
 {
@@ -27,8 +30,8 @@ namespace rfm
   /// (measured: die_contact --mode full 58 s on one thread, 80 s with OpenBLAS on two
   /// threads everywhere). Both scopes nest.
   ///
-  /// While alive (and enabled), OpenBLAS runs on n_threads() threads: the large dense
-  /// factorizations and solves (solve_saddle_point above parallel_solve_unknowns).
+  /// While alive (and enabled), OpenBLAS runs on n_threads() threads (the benchmark's
+  /// dense references).
   class BlasThreadsOn
   {
   public:
@@ -54,8 +57,19 @@ namespace rfm
 
   /// Saddle-point systems with at least this many unknowns (stress + displacement) are
   /// factorized on n_threads() threads, smaller ones on one: measured two-thread over
-  /// one-thread solve times 1.16x at 726 unknowns (Lame p = 10), 1.38x at 1014 (p = 12).
-  inline constexpr long parallel_solve_unknowns = 1000;
+  /// one-thread solve times (rfm/bordered_cholesky.h) 1.25x at 510 unknowns (die p = 8),
+  /// 1.45x at 726 (Lame p = 10), 1.65x at 1014 (p = 12); none at 486 (Lame p = 8).
+  inline constexpr long parallel_solve_unknowns = 500;
+
+  /// Runs f(0), ..., f(n - 1) at the same time on n threads: f(0) on the caller, the rest on
+  /// workers kept for the whole process (started on first use), so that a parallel
+  /// section costs no thread start (measured 0.15-0.3 ms per std::thread here, against
+  /// a 4.5 ms two-thread assembly at Lame p = 14). The f(t) may wait for each other (a
+  /// barrier). Returns when all have returned; the first exception (by t) is rethrown
+  /// then. A worker spins for 0.2 ms after its part, then sleeps: back-to-back sections
+  /// (assembly, then the solve) find it awake. A call from inside a section, or while
+  /// another thread's section runs, gets threads of its own instead.
+  void run_on_threads(int n, const std::function<void(int)> &f);
 
   /// Per-core L2 data cache of cpu0 in bytes: sysconf, else
   /// /sys/devices/system/cpu/cpu0/cache, else default_l2_bytes.

@@ -81,7 +81,9 @@ namespace rfm
     const auto t0 = clock::now();
     const Structures structures(build_section(problem, half_width));
     space_ = std::make_unique<DiscreteSpace>(structures, options, problem.material);
-    const ReissnerSystem system = assemble_reissner_system(*space_, problem.material);
+    AssemblyOptions assembly;
+    assembly.full_r11 = false; // the solver reads R11's lower triangle only
+    const ReissnerSystem system = assemble_reissner_system(*space_, problem.material, assembly);
     const auto t1 = clock::now();
     SaddlePointSolution s = solve_saddle_point(system, solver_options);
     const auto t2 = clock::now();

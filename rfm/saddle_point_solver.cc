@@ -2,20 +2,24 @@
 
 #include "rfm/hardware.h"
 
+#include "rfm/bordered_cholesky.h"
 #include "rfm/dense_cholesky.h"
 
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <vector>
+#include <vector>
 
 namespace rfm
 {
   namespace
   {
     // From the lower triangle of a (SelfAdjointEigenSolver reads nothing else).
-    double eigen_condition(const Eigen::MatrixXd &a)
+    double eigen_condition(const Eigen::Ref<const Eigen::MatrixXd> &a)
     {
       const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(a, Eigen::EigenvaluesOnly);
       const Eigen::VectorXd &l = es.eigenvalues();
@@ -31,12 +35,16 @@ namespace rfm
     const double nan = std::numeric_limits<double>::quiet_NaN();
     summary.cond_stress = summary.cond_schur = summary.inf_sup = nan;
     const Eigen::Index n_s = sys.r11.rows(), n_u = sys.r12.cols();
-    // Large systems: the factorizations and solves on n_threads() threads (hardware.h).
-    const BlasThreadsOn parallel(n_s + n_u >= parallel_solve_unknowns);
+    // Large systems on n_threads() threads (hardware.h); the factors are bitwise the same
+    // for every thread count (rfm/bordered_cholesky.h).
+    const int threads = n_s + n_u >= parallel_solve_unknowns ? n_threads() : 1;
+    // Every BLAS call below is single-threaded, whatever scope encloses this: the
+    // parallelism is the factorization's own, and the results do not depend on it.
+    const BlasThreadsOff one_blas_thread;
 
-    // Three n x n-sized buffers in all (M, Y, K): each factorization overwrites its
-    // matrix (DenseCholesky), only lower triangles are formed, nothing large is copied twice.
-    // 1. M = -R11, scaled (lower triangle), Cholesky in place (DenseCholesky).
+    // 1. The bordered matrix A = [M, B; B^T, 0] in one (n_s + n_u)^2 buffer (lower triangle),
+    // M = D (-R11) D and B = D R12 with D the Jacobi scaling of -R11, written by the
+    // factorization's threads column tile by column tile.
     const Eigen::VectorXd d = (-sys.r11.diagonal()).cwiseMax(0.0).cwiseSqrt().cwiseInverse();
     if (!d.allFinite())
       {
@@ -44,13 +52,60 @@ namespace rfm
                           "coordinate function that vanishes identically";
         return out;
       }
-    Eigen::MatrixXd m(n_s, n_s);
-    m.triangularView<Eigen::Lower>() = -(d.asDiagonal() * sys.r11 * d.asDiagonal());
-    // The eigenvalue diagnostics read the lower triangle before it is factorized.
-    const double cond_stress = options.compute_diagnostics ? eigen_condition(m) : nan;
-    const DenseCholesky llt_m(m);
-    summary.rcond_stress = llt_m.rcond();
-    if (!llt_m.success() || !(summary.rcond_stress >= options.min_rcond))
+    // Kept from solve to solve (per thread): above glibc's largest mmap threshold (32 MiB,
+    // Lame p >= 18) a fresh matrix is mapped and faulted in again by every solve, which
+    // doubled the solve time at p = 18 (rfm/allocator.h).
+    thread_local std::vector<double> buffer;
+    const Eigen::Index n_a = n_s + n_u;
+    if (buffer.size() < static_cast<std::size_t>(n_a * n_a))
+      {
+        buffer.clear();
+        buffer.shrink_to_fit();
+        buffer.resize(static_cast<std::size_t>(n_a * n_a));
+      }
+    Eigen::Map<Eigen::MatrixXd> a(buffer.data(), n_a, n_a);
+    BorderedCholeskyJobs jobs;
+    jobs.load = [&](Eigen::Index c0, Eigen::Index c1) {
+      const Eigen::Index w = c1 - c0;
+      const auto dc = d.segment(c0, w);
+      a.block(c0, c0, w, w).triangularView<Eigen::Lower>() =
+        -(dc.asDiagonal() * sys.r11.block(c0, c0, w, w) * dc.asDiagonal());
+      a.block(c1, c0, n_s - c1, w) =
+        -(d.tail(n_s - c1).asDiagonal() * sys.r11.block(c1, c0, n_s - c1, w) * dc.asDiagonal());
+      a.block(n_s, c0, n_u, w) = (dc.asDiagonal() * sys.r12.middleRows(c0, w)).transpose();
+    };
+    // The eigenvalue diagnostics need M before it is factorized.
+    Eigen::MatrixXd m_copy;
+    // 2. A = L diag(I, -I) L^T: L11 L11^T = M, L21 = (L11^-1 B)^T, L22 L22^T = E K E with
+    // K = R12^T (-R11)^-1 R12 the Schur complement and E its Jacobi scaling. M's condition
+    // estimate runs on a worker as soon as L11 is final.
+    // The same worker also starts the back substitution, which needs only L11 and L21:
+    // y_s = L11^-1 D p_s and the right-hand side of K q_u = -(p_u + L21 y_s).
+    const auto l11 = a.topLeftCorner(n_s, n_s).triangularView<Eigen::Lower>();
+    const auto l21 = a.bottomLeftCorner(n_u, n_s);
+    const auto l22 = a.bottomRightCorner(n_u, n_u).triangularView<Eigen::Lower>();
+    Eigen::VectorXd y_s, w;
+    bool first_block_done = false;
+    jobs.after_first_block = [&](double m_norm) {
+      summary.rcond_stress = DenseCholesky(a.topLeftCorner(n_s, n_s), m_norm).rcond();
+      y_s = d.cwiseProduct(sys.p_s);
+      l11.solveInPlace(y_s);
+      w = sys.p_u + l21 * y_s;
+      first_block_done = true;
+    };
+    if (options.compute_diagnostics)
+      {
+        m_copy.resize(n_s, n_s);
+        for (Eigen::Index c = 0; c < n_s; c += 64)
+          jobs.load(c, std::min(c + 64, n_s));
+        m_copy.triangularView<Eigen::Lower>() = a.topLeftCorner(n_s, n_s);
+      }
+    const BorderedCholesky f = factorize_bordered(a, n_s, threads, jobs);
+    using Status = BorderedCholesky::Status;
+    if (f.status != Status::stress_block_not_positive && !first_block_done) // stopped early
+      summary.rcond_stress = DenseCholesky(a.topLeftCorner(n_s, n_s), f.m_l1_norm).rcond();
+    if (f.status == Status::stress_block_not_positive ||
+        !(summary.rcond_stress >= options.min_rcond))
       {
         std::ostringstream msg;
         msg << "-R11 (stress block) is not numerically positive definite (rcond estimate "
@@ -58,33 +113,36 @@ namespace rfm
         summary.message = msg.str();
         return out;
       }
-
-    // 2. Y = L^-1 D R12, K = Y^T Y (lower triangle), scaled by E in place.
-    Eigen::MatrixXd y = d.asDiagonal() * sys.r12;
-    llt_m.solve_l_in_place(y);
-    Eigen::VectorXd y_s = d.cwiseProduct(sys.p_s);
-    llt_m.solve_l_in_place(y_s);
-    Eigen::MatrixXd k(n_u, n_u);
-    k.triangularView<Eigen::Lower>() = y.transpose() * y;
-    const Eigen::VectorXd e = k.diagonal().cwiseMax(0.0).cwiseSqrt().cwiseInverse();
-    if (!e.allFinite())
+    if (f.status == Status::zero_schur_column)
       {
         summary.message = "R12 has a zero column: a displacement coordinate function does "
                           "no work on any stress (rank loss, inf-sup failure)";
         return out;
       }
-    k.triangularView<Eigen::Lower>() = e.asDiagonal() * k * e.asDiagonal();
-    if (options.compute_diagnostics)
+    // K's condition estimate, and the rest of the back substitution (discarded if the
+    // estimate fails the test): 0.3-0.4 ms at Lame p = 14; on two threads beside each
+    // other they took as long.
+    if (f.status == Status::ok)
       {
-        summary.cond_stress = cond_stress;
-        summary.cond_schur = eigen_condition(k);
-        summary.inf_sup = 1.0 / std::sqrt(summary.cond_schur);
+        auto solve_k = [&]() {
+          w = -f.e.cwiseProduct(w);
+          l22.solveInPlace(w);
+          l22.transpose().solveInPlace(w);
+          out.q_u = f.e.cwiseProduct(w);
+          Eigen::VectorXd t = l21.transpose() * out.q_u + y_s;
+          l11.transpose().solveInPlace(t);
+          out.q_s = d.cwiseProduct(t);
+        };
+        auto estimate = [&]() {
+          summary.rcond_schur = DenseCholesky(a.bottomRightCorner(n_u, n_u), f.k_l1_norm).rcond();
+        };
+        estimate();
+        solve_k();
       }
-    const DenseCholesky llt_k(k);
-    summary.rcond_schur = llt_k.rcond();
-    if (!llt_k.success() || !(summary.rcond_schur >= options.min_rcond))
+    if (f.status == Status::schur_not_positive || !(summary.rcond_schur >= options.min_rcond))
       {
         std::ostringstream msg;
+        out.q_s.resize(0), out.q_u.resize(0);
         msg << "Schur complement K = R12^T (-R11)^-1 R12 is singular or badly conditioned "
             << "(rcond estimate " << summary.rcond_schur << " < " << options.min_rcond
             << "): R12 lost column rank (discrete inf-sup failure, or a rigid-body mode "
@@ -92,13 +150,15 @@ namespace rfm
         summary.message = msg.str();
         return out;
       }
+    if (options.compute_diagnostics)
+      {
+        const Eigen::MatrixXd l22 = a.bottomRightCorner(n_u, n_u).triangularView<Eigen::Lower>();
+        const Eigen::MatrixXd k = l22 * l22.transpose(); // E K E
+        summary.cond_stress = eigen_condition(m_copy);
+        summary.cond_schur = eigen_condition(k);
+        summary.inf_sup = 1.0 / std::sqrt(summary.cond_schur);
+      }
 
-    // 3. Back substitution.
-    const Eigen::VectorXd rhs = -(sys.p_u + y.transpose() * y_s);
-    out.q_u = e.cwiseProduct(llt_k.solve(e.cwiseProduct(rhs)));
-    Eigen::VectorXd t = y * out.q_u + y_s;
-    llt_m.solve_lt_in_place(t);
-    out.q_s = d.cwiseProduct(t);
     if (!out.q_u.allFinite() || !out.q_s.allFinite())
       {
         summary.message = "solution has non-finite coefficients";

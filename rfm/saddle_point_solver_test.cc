@@ -1,7 +1,11 @@
 #include "rfm/saddle_point_solver.h"
 
+#include "rfm/hardware.h"
+
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
+
+#include <limits>
 
 namespace rfm
 {
@@ -55,5 +59,28 @@ namespace rfm
     const SaddlePointSolution sol = solve_saddle_point(s);
     EXPECT_FALSE(sol.summary.success);
     EXPECT_NE(sol.summary.message.find("R11"), std::string::npos) << sol.summary.message;
+  }
+
+  // The solver reads R11's lower triangle only (AssemblyOptions::full_r11 = false), and a
+  // system large enough for the tiled factorization on two threads (1000 unknowns and
+  // more) gives the same bits as on one.
+  TEST(SaddlePointSolver, ReadsTheLowerTriangleAndIsTheSameOnEveryThreadCount)
+  {
+    const ReissnerSystem s = random_system(720, 330, 5);
+    ReissnerSystem lower = s;
+    lower.r11.triangularView<Eigen::StrictlyUpper>().setConstant(
+      std::numeric_limits<double>::quiet_NaN());
+    const int before = n_threads();
+    set_n_threads(1);
+    const SaddlePointSolution one = solve_saddle_point(s);
+    set_n_threads(2);
+    const SaddlePointSolution two = solve_saddle_point(lower);
+    set_n_threads(before);
+    ASSERT_TRUE(one.summary.success) << one.summary.message;
+    ASSERT_TRUE(two.summary.success) << two.summary.message;
+    EXPECT_TRUE(one.q_s == two.q_s);
+    EXPECT_TRUE(one.q_u == two.q_u);
+    EXPECT_EQ(one.summary.rcond_stress, two.summary.rcond_stress);
+    EXPECT_EQ(one.summary.rcond_schur, two.summary.rcond_schur);
   }
 } // namespace rfm
