@@ -60,7 +60,7 @@ namespace rfm
         applied_.assign(nt_ * nt_, 0);
         final_.assign(nt_ * nt_, 0);
         scaled_.assign(nt_ * nt_, 0);
-        e_.resize(a.rows() - n1);
+        e_.setConstant(a.rows() - n1, std::numeric_limits<double>::quiet_NaN());
         column_sums_.resize(nt_ * nt_);
         row_sums_.resize(nt_ * nt_);
         loaded_.assign(nt_, 0);
@@ -161,8 +161,9 @@ namespace rfm
               return true;
             case Task::after_first_block:
               return n_first_block_final_ == first_block_tiles_;
-            case Task::potrf:
-              return loaded_[t.k] && updated(t.k, t.k, t.k);
+            case Task::potrf: // the trailing block's first pivot after all its scales
+              return loaded_[t.k] && updated(t.k, t.k, t.k) &&
+                     (!trailing(t.k) || n_diagonal_scaled_ == nt_ - n1_tiles_);
             case Task::trsm:
               return loaded_[t.k] && final_[at(t.k, t.k)] && updated(t.i, t.k, t.k);
             case Task::update:
@@ -310,8 +311,9 @@ namespace rfm
             lock.lock();
             if (status != Status::ok)
               {
-                // The first failure in the sequential order is not guaranteed here, but
-                // any failure stops the factorization; report the earliest block's.
+                // Any failure stops the factorization. A failure in M stops it before any
+                // trailing task, and every K_jj is checked before a trailing pivot, so
+                // the status is the same on every thread count.
                 if (status_ == Status::ok || status < status_)
                   status_ = status;
                 stop_ = true;
@@ -333,6 +335,7 @@ namespace rfm
                   break;
                 case Task::scale:
                   scaled_[at(t.i, t.j)] = 1;
+                  n_diagonal_scaled_ += t.i == t.j;
                   break;
               }
             ++n_done_;
@@ -361,6 +364,9 @@ namespace rfm
       std::vector<char> loaded_;
       std::vector<Eigen::VectorXd> m_columns_, m_rows_;
       int first_block_tiles_ = 0, n_first_block_final_ = 0;
+      // Every diagonal scale has checked its K_jj before a trailing pivot can fail: a zero
+      // column is then reported as such on every thread count.
+      int n_diagonal_scaled_ = 0;
       std::vector<Index> offsets_;
       int n1_tiles_ = 0, nt_ = 0;
       std::vector<Task> tasks_;

@@ -148,11 +148,19 @@ namespace rfm
 
   namespace
   {
-    // f(t) on threads started for this call (the fallback of run_on_threads).
+    // f(t) on threads started for this call (the fallback of run_on_threads). The parts
+    // start together once every thread exists: if starting one fails, none has run (a
+    // part may wait at a barrier for the others), the started ones are released and
+    // joined, and the error is rethrown.
     void run_on_new_threads(const int n, const std::function<void(int)> &f)
     {
       std::vector<std::exception_ptr> errors(n);
+      std::atomic<int> gate{0}; // 0: wait, 1: run, 2: abandon
       auto guarded = [&](int t) {
+        while (gate.load(std::memory_order_acquire) == 0)
+          std::this_thread::yield();
+        if (gate.load(std::memory_order_acquire) != 1)
+          return;
         try
           {
             f(t);
@@ -163,8 +171,19 @@ namespace rfm
           }
       };
       std::vector<std::thread> threads;
-      for (int t = 1; t < n; ++t)
-        threads.emplace_back(guarded, t);
+      try
+        {
+          for (int t = 1; t < n; ++t)
+            threads.emplace_back(guarded, t);
+        }
+      catch (...)
+        {
+          gate.store(2, std::memory_order_release);
+          for (std::thread &t : threads)
+            t.join();
+          throw;
+        }
+      gate.store(1, std::memory_order_release);
       guarded(0);
       for (std::thread &t : threads)
         t.join();
@@ -173,39 +192,36 @@ namespace rfm
           std::rethrow_exception(e);
     }
 
+    // Never destroyed (see run_on_threads): its workers stay parked until the process ends.
     class WorkerPool
     {
     public:
-      ~WorkerPool()
-      {
-        {
-          const std::lock_guard<std::mutex> lock(mutex_);
-          shutdown_ = true;
-          generation_.fetch_add(1);
-        }
-        wake_.notify_all();
-        for (std::thread &t : workers_)
-          t.join();
-      }
-
-      // False if the pool is busy (nested or concurrent use): the caller falls back.
+      // False if the pool is busy (nested or concurrent use) or cannot start a worker:
+      // the caller falls back to threads of its own.
       bool try_run(const int n, const std::function<void(int)> &f)
       {
         if (busy_.exchange(true))
           return false;
-        {
-          const std::lock_guard<std::mutex> lock(mutex_);
-          while (static_cast<int>(workers_.size()) < n - 1)
-            {
-              const int index = static_cast<int>(workers_.size()) + 1;
-              workers_.emplace_back([this, index] { work(index); });
-            }
-          job_ = &f;
-          job_threads_ = n;
-          errors_.assign(n, nullptr);
-          remaining_.store(n - 1);
-          generation_.fetch_add(1);
-        }
+        try
+          {
+            const std::lock_guard<std::mutex> lock(mutex_);
+            while (static_cast<int>(workers_.size()) < n - 1)
+              {
+                const int index = static_cast<int>(workers_.size()) + 1;
+                const unsigned now = generation_.load();
+                workers_.emplace_back([this, index, now] { work(index, now); });
+              }
+            errors_.assign(n, nullptr);
+            job_ = &f;
+            job_threads_ = n;
+            remaining_.store(n - 1);
+            generation_.fetch_add(1);
+          }
+        catch (...)
+          {
+            busy_.store(false);
+            return false;
+          }
         wake_.notify_all();
         try
           {
@@ -228,12 +244,17 @@ namespace rfm
       }
 
     private:
-      void work(const int index)
+      // `seen`: the generation when the worker was created (its first job is the next).
+      void work(const int index, unsigned seen)
       {
-        unsigned seen = 0;
+        bool spin = true;
         while (true)
           {
-            const auto spin_until = std::chrono::steady_clock::now() + std::chrono::microseconds(200);
+            // After a part, spin a little: the next section usually follows at once. A
+            // worker the last section did not need sleeps at once (it would only take a
+            // core from the threads that work).
+            const auto spin_until =
+              std::chrono::steady_clock::now() + std::chrono::microseconds(spin ? 200 : 0);
             while (generation_.load(std::memory_order_acquire) == seen &&
                    std::chrono::steady_clock::now() < spin_until)
               std::this_thread::yield();
@@ -241,12 +262,11 @@ namespace rfm
             {
               std::unique_lock<std::mutex> lock(mutex_);
               wake_.wait(lock, [&] { return generation_.load() != seen; });
-              if (shutdown_)
-                return;
               seen = generation_.load();
               if (index < job_threads_)
                 job = job_;
             }
+            spin = job != nullptr;
             if (!job)
               continue;
             try
@@ -270,7 +290,6 @@ namespace rfm
       const std::function<void(int)> *job_ = nullptr;
       int job_threads_ = 0;
       std::vector<std::exception_ptr> errors_;
-      bool shutdown_ = false;
     };
   } // namespace
 
@@ -281,7 +300,9 @@ namespace rfm
         f(0);
         return;
       }
-    static WorkerPool pool;
+    // Deliberately never destroyed: joining the workers at exit would hang if exit() ran
+    // inside a section (a worker parked at a barrier), and throw if called from a worker.
+    static WorkerPool &pool = *new WorkerPool;
     if (!pool.try_run(n, f))
       run_on_new_threads(n, f);
   }

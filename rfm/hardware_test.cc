@@ -57,6 +57,7 @@ namespace rfm
         EXPECT_EQ(ids[0], std::this_thread::get_id()); // part 0 on the caller
         EXPECT_NE(ids[1], ids[0]);
         EXPECT_NE(ids[2], ids[1]);
+        EXPECT_NE(ids[2], ids[0]);
       }
   }
 
