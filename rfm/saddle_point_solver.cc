@@ -119,25 +119,19 @@ namespace rfm
                           "no work on any stress (rank loss, inf-sup failure)";
         return out;
       }
-    // K's condition estimate, and the rest of the back substitution (discarded if the
+    // K's condition estimate, then the rest of the back substitution (discarded if the
     // estimate fails the test): 0.3-0.4 ms at Lame p = 14; on two threads beside each
     // other they took as long.
     if (f.status == Status::ok)
       {
-        auto solve_k = [&]() {
-          w = -f.e.cwiseProduct(w);
-          l22.solveInPlace(w);
-          l22.transpose().solveInPlace(w);
-          out.q_u = f.e.cwiseProduct(w);
-          Eigen::VectorXd t = l21.transpose() * out.q_u + y_s;
-          l11.transpose().solveInPlace(t);
-          out.q_s = d.cwiseProduct(t);
-        };
-        auto estimate = [&]() {
-          summary.rcond_schur = DenseCholesky(a.bottomRightCorner(n_u, n_u), f.k_l1_norm).rcond();
-        };
-        estimate();
-        solve_k();
+        summary.rcond_schur = DenseCholesky(a.bottomRightCorner(n_u, n_u), f.k_l1_norm).rcond();
+        w = -f.e.cwiseProduct(w);
+        l22.solveInPlace(w);
+        l22.transpose().solveInPlace(w);
+        out.q_u = f.e.cwiseProduct(w);
+        Eigen::VectorXd t = l21.transpose() * out.q_u + y_s;
+        l11.transpose().solveInPlace(t);
+        out.q_s = d.cwiseProduct(t);
       }
     if (f.status == Status::schur_not_positive || !(summary.rcond_schur >= options.min_rcond))
       {
@@ -152,8 +146,8 @@ namespace rfm
       }
     if (options.compute_diagnostics)
       {
-        const Eigen::MatrixXd l22 = a.bottomRightCorner(n_u, n_u).triangularView<Eigen::Lower>();
-        const Eigen::MatrixXd k = l22 * l22.transpose(); // E K E
+        const Eigen::MatrixXd l = l22;
+        const Eigen::MatrixXd k = l * l.transpose(); // E K E
         summary.cond_stress = eigen_condition(m_copy);
         summary.cond_schur = eigen_condition(k);
         summary.inf_sup = 1.0 / std::sqrt(summary.cond_schur);
