@@ -147,7 +147,8 @@ namespace rfm
     if (options.compute_diagnostics)
       {
         const Eigen::MatrixXd l = l22;
-        const Eigen::MatrixXd k = l * l.transpose(); // E K E
+        Eigen::MatrixXd k = Eigen::MatrixXd::Zero(n_u, n_u); // E K E = L22 L22^T, lower
+        k.selfadjointView<Eigen::Lower>().rankUpdate(l);
         summary.cond_stress = eigen_condition(m_copy);
         summary.cond_schur = eigen_condition(k);
         summary.inf_sup = 1.0 / std::sqrt(summary.cond_schur);
