@@ -836,6 +836,12 @@ def bodies_section(bor, out_dir):
              "and the trimmed arcs are not smooth at the joins).")
     md.append(text)
     md.append("")
+    md.append("The sharp-lipped variant (`grooved_shaft_tension.json`: a quarter-circle groove of radius "
+              "0.01 m meeting the free surface at 90 degrees, half-length 0.15 m) is not run here: the RFM does "
+              "not converge on it (a corner between two traction edges, where the transfinite blending is 0/0 "
+              "and the corner field is not smooth; the groove is 1/15 of the section's height). `rfm_solve` on "
+              "that file says so and exits 3.")
+    md.append("")
     if "sharp_groove_shaft" in bor:
         sg = bor["sharp_groove_shaft"]
         md.append("**The same shaft with a sharp lip** (`grooved_shaft_tension.json`: a quarter-circle groove "

@@ -8,8 +8,7 @@
 //   2. Solid cylinder (R1 = 0, the axis) under end pressure: uniform sigma_zz = -p.
 //   3. A shaft with a filleted circumferential groove under tension (no closed form): the
 //      stress concentration factor K_t = sigma_zz(notch root) / (t R^2 / (R - depth)^2) from
-//      both solvers against p and L, the FEM's Richardson limit, and their agreement. Full
-//      mode adds the sharp-lipped groove (grooved_shaft_tension.json) for contrast.
+//      both solvers against p and L, the FEM's Richardson limit, and their agreement.
 //   4. The tolerance gate (verification/tolerances.json, entry "bodies_of_revolution").
 //
 // Sample run:
@@ -166,8 +165,9 @@ nlohmann::json run(const verification::DriverContext &context)
 
   // 3. Shaft with a filleted circumferential groove under tension: K_t from both solvers,
   // each against its own refinement, and their agreement (issue 13: within 0.5 %, both
-  // converged). Full mode adds the sharp-lipped groove of grooved_shaft_tension.json, where
-  // the RFM does not converge (a 90-degree corner between two traction edges).
+  // converged). Not run: the sharp-lipped groove of grooved_shaft_tension.json, where the
+  // RFM does not converge (a 90-degree corner between two traction edges; rfm_solve exits
+  // 3 on it).
   auto shaft = [&](const std::string &file, const std::vector<int> &degrees,
                    const std::vector<int> &levels) {
     const axisym::Problem problem = axisym::read_problem_file(context.problem_path(file));
@@ -245,8 +245,6 @@ nlohmann::json run(const verification::DriverContext &context)
   results["grooved_shaft"] =
     full ? shaft("filleted_groove_shaft_tension.json", {12, 14, 16, 18, 20, 22}, {0, 1, 2})
          : shaft("filleted_groove_shaft_tension.json", {18, 20}, {0, 1});
-  if (full)
-    results["sharp_groove_shaft"] = shaft("grooved_shaft_tension.json", {12, 16, 20}, {1, 2});
   return results;
 }
 
