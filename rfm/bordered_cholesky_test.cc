@@ -1,5 +1,7 @@
 #include "rfm/bordered_cholesky.h"
 
+#include "rfm/test_matrices.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Cholesky>
@@ -10,18 +12,10 @@
 
 namespace rfm
 {
+  using rfm::testing::spd;
+
   namespace
   {
-    // SPD with condition number 10^decades: Q diag(10^(-decades i/(n-1))) Q^T.
-    Eigen::MatrixXd spd(Eigen::Index n, double decades)
-    {
-      const Eigen::MatrixXd q = Eigen::MatrixXd::Random(n, n).householderQr().householderQ();
-      Eigen::VectorXd l(n);
-      for (Eigen::Index i = 0; i < n; ++i)
-        l[i] = std::pow(10.0, -decades * static_cast<double>(i) / static_cast<double>(n - 1));
-      return q * l.asDiagonal() * q.transpose();
-    }
-
     // The bordered matrix's lower triangle, with garbage where the factorization must
     // neither read nor write (the strict upper triangle and the trailing block).
     Eigen::MatrixXd bordered(const Eigen::MatrixXd &m, const Eigen::MatrixXd &b)
