@@ -7,7 +7,6 @@
 
 #include <Eigen/Eigenvalues>
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -64,6 +63,7 @@ namespace rfm
         buffer.resize(static_cast<std::size_t>(n_a * n_a));
       }
     Eigen::Map<Eigen::MatrixXd> a(buffer.data(), n_a, n_a);
+    Eigen::MatrixXd m_copy(options.compute_diagnostics ? n_s : 0, options.compute_diagnostics ? n_s : 0);
     BorderedCholeskyJobs jobs;
     jobs.load = [&](Eigen::Index c0, Eigen::Index c1) {
       const Eigen::Index w = c1 - c0;
@@ -73,9 +73,9 @@ namespace rfm
       a.block(c1, c0, n_s - c1, w) =
         -(d.tail(n_s - c1).asDiagonal() * sys.r11.block(c1, c0, n_s - c1, w) * dc.asDiagonal());
       a.block(n_s, c0, n_u, w) = (dc.asDiagonal() * sys.r12.middleRows(c0, w)).transpose();
+      if (m_copy.size() > 0) // the eigenvalue diagnostics need M before it is factorized
+        m_copy.block(c0, c0, n_s - c0, w) = a.block(c0, c0, n_s - c0, w);
     };
-    // The eigenvalue diagnostics need M before it is factorized.
-    Eigen::MatrixXd m_copy;
     // 2. A = L diag(I, -I) L^T: L11 L11^T = M, L21 = (L11^-1 B)^T, L22 L22^T = E K E with
     // K = R12^T (-R11)^-1 R12 the Schur complement and E its Jacobi scaling. M's condition
     // estimate runs on a worker as soon as L11 is final.
@@ -93,13 +93,6 @@ namespace rfm
       w = sys.p_u + l21 * y_s;
       first_block_done = true;
     };
-    if (options.compute_diagnostics)
-      {
-        m_copy.resize(n_s, n_s);
-        for (Eigen::Index c = 0; c < n_s; c += 64)
-          jobs.load(c, std::min(c + 64, n_s));
-        m_copy.triangularView<Eigen::Lower>() = a.topLeftCorner(n_s, n_s);
-      }
     const BorderedCholesky f = factorize_bordered(a, n_s, threads, jobs);
     using Status = BorderedCholesky::Status;
     if (f.status != Status::stress_block_not_positive && !first_block_done) // stopped early
