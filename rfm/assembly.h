@@ -5,8 +5,13 @@
 //
 //   R11_kl = - int X_k . C X_l  r dr dz       (symmetric negative definite)
 //   R12_km =   int X_k . e(Phi_m) r dr dz
-//   p_s,k  =   int X_k . (e(u0) - C s0) r dr dz
-//   p_u,m  =   int s0 . e(Phi_m) r dr dz - int_{S_t} t . Phi_m r ds   (no body force)
+//   p_s,k  =   int X_k . (e(u0) - C s0 - e_th) r dr dz
+//   p_u,m  =   int s0 . e(Phi_m) r dr dz - int_{S_t} t . Phi_m r ds - int f . Phi_m r dr dz
+//
+// with f the body force and e_th the thermal strain (DESIGN.md 7.1). This file assembles
+// the parts without them; the outline model (outline_model.h) subtracts the f and e_th
+// terms after add_polynomial_blocks. assemble_reissner_system (the legacy rectangle) has no
+// body loads, so there f = 0 and e_th = 0.
 //
 // with the stress basis X_{c,j} = omega_c phi_j e_c (c = rr, zz, tt, rz) and the
 // displacement basis Phi_{m,j} = omega_m phi_j e_m (m = r, z). Strain of a displacement

@@ -167,7 +167,9 @@ namespace rfm
   /// W = r (s_h u* - s* u~), u~ = u_h - u_h(edge), the axisymmetric equilibrium
   /// d_j(r s_ij) = s_tt delta_ir and Hooke's law give
   ///   div W = s_tt u*_r + s*_tt u_r - s*_rr u~_r - s*_rz u~_z
-  /// (integrable at the edge), and for q = 1 - rho / rho_1 on the half disc rho < rho_1
+  /// (integrable at the edge), and for the smoothstep weight q = 1 - 3 t^2 + 2 t^3,
+  /// t = rho / rho_1, on the half disc rho < rho_1 (q = 1 and dq/drho = 0 at the edge,
+  /// q = 0 and dq/drho = 0 at rho_1)
   ///   R2 a_1 C = int_faces q W_r dz - int (q div W + W . grad q) dr dz,
   /// C the plane-strain contour integral of mode 1 against mode -1. The face terms are known
   /// data: the prescribed u_r on the contact face, the outer pressure on the free face.
