@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -146,6 +147,95 @@ namespace axisym
     return conditions.at(outline.edges().at(i).part);
   }
 
+  std::vector<std::string> Body::die_parts() const
+  {
+    std::vector<std::string> out;
+    for (const std::string &part : outline.parts())
+      if (conditions.at(part).kind == PartCondition::Kind::die)
+        out.push_back(part);
+    return out;
+  }
+
+  const char *to_string(const DieProfile::Shape shape)
+  {
+    switch (shape)
+      {
+        case DieProfile::Shape::paraboloid: return "paraboloid";
+        case DieProfile::Shape::flat_rounded: return "flat_rounded";
+        case DieProfile::Shape::flat: return "flat";
+      }
+    return "?";
+  }
+
+  double DieProfile::gap(const double s) const
+  {
+    switch (shape)
+      {
+        case Shape::paraboloid: return s * s / (2.0 * radius);
+        case Shape::flat_rounded:
+          return s <= flat_radius ? 0.0
+                                  : (s - flat_radius) * (s - flat_radius) / (2.0 * edge_radius);
+        case Shape::flat: return s <= radius ? 0.0 : std::numeric_limits<double>::infinity();
+      }
+    return 0.0;
+  }
+
+  double DieProfile::extent() const
+  {
+    return shape == Shape::flat ? radius : std::numeric_limits<double>::infinity();
+  }
+
+  namespace
+  {
+    // The line of a straight part: the frame with the centre at the first edge's start.
+    // Throws InputError (naming `path`) for an arc or edges off one line.
+    DieFrame part_line(const Outline &outline, const std::string &part, const std::string &path)
+    {
+      DieFrame f;
+      bool first = true;
+      const double tol = Outline::point_tolerance * outline.size();
+      for (std::size_t i = 0; i < outline.edges().size(); ++i)
+        {
+          const OutlineEdge &e = outline.edges()[i];
+          if (e.part != part)
+            continue;
+          const std::string edge = "geometry.outline[" + std::to_string(i + 1) + "]";
+          if (e.kind == OutlineEdge::Kind::arc)
+            throw InputError("problem file: " + path + ": part " + part + " has an arc (" +
+                             edge + "); a die needs a straight part (lines on one line)");
+          if (first)
+            {
+              f.center = e.start;
+              f.tangent = e.tangent_at(0.0);
+              f.normal = e.outward_normal_at(0.0);
+              first = false;
+            }
+          for (const Point x : {e.start, e.end})
+            {
+              const double off = (x.r - f.center.r) * f.normal.r + (x.z - f.center.z) * f.normal.z;
+              if (std::abs(off) > tol)
+                throw InputError("problem file: " + path + ": the edges of part " + part +
+                                 " are not on one line (" + edge + " is " + show(off) +
+                                 " m off it); a die needs a straight part");
+              const double s = f.coordinate(x);
+              f.s_min = std::min(f.s_min, s), f.s_max = std::max(f.s_max, s);
+            }
+          // Edges on one line: the same direction of travel (a part that turns back on itself
+          // would not be simple, which the outline already refuses).
+        }
+      return f;
+    }
+  } // namespace
+
+  DieFrame die_frame(const Body &body, const std::string &part)
+  {
+    DieFrame f = part_line(body.outline, part, "boundary." + part + ".die");
+    const Point c = body.conditions.at(part).die.center;
+    const double s = f.coordinate(c);
+    f.center = c, f.s_min -= s, f.s_max -= s;
+    return f;
+  }
+
   namespace
   {
     auto any_number = [](double) { return true; };
@@ -176,15 +266,132 @@ namespace axisym
       return {v[0].get<double>(), v[1].get<double>()};
     }
 
+    // contact: the method and its settings; a fixed half-width in (0, limit].
+    void parse_contact(const ObjectReader &top, Problem &p, const double limit,
+                       const std::string &limit_name)
+    {
+      const ObjectReader c(top.at("contact"), "contact", {"method", "half_width", "curve_points"});
+      if (c.has("curve_points"))
+        p.contact.curve_points = c.integer("curve_points", ranges::contact_curve_points);
+      if (c.has("method"))
+        p.contact.method = c.string("method", {"edge-intensity", "fixed", "iterate", "max-force"});
+      if (c.has("half_width"))
+        p.contact.half_width = c.number(
+          "half_width", "must be in (0, " + limit_name + " = " + show(limit) + "] [m]",
+          [&](double x) { return x > 0.0 && x <= limit * (1 + 1e-12); });
+    }
+
+    // boundary.PART.die of the outline form (DESIGN.md 7.1).
+    DieCondition parse_die(const json &j, const std::string &path, const Body &body,
+                           const std::string &part)
+    {
+      const ObjectReader d(j, path, {"indentation", "force", "center", "profile"});
+      DieCondition die;
+      if (d.has("indentation") == d.has("force"))
+        fail(path, j, "needs exactly one of indentation [m] and force [N]");
+      const DieFrame line = part_line(body.outline, part, path);
+      const double size = body.outline.size();
+      if (d.has("indentation"))
+        {
+          // Small strain (as the hollow-cylinder form's die): delta small against the section.
+          const double limit = 1e-2 * size;
+          die.indentation = d.number("indentation",
+                                     "must be in (0, " + show(limit) +
+                                       "] [m] (0.01 of the section's size: small strain)",
+                                     [&](double x) { return x > 0.0 && x <= limit; });
+        }
+      else
+        die.force = d.number("force", "must be > 0 [N] (the whole body of revolution)", positive);
+
+      // The centre: given (on the part), or the part's end on a symmetry edge or the axis
+      // (where the field is mirrored: a die centred there), else the part's midpoint.
+      if (d.has("center"))
+        {
+          const auto c = pair_of_numbers(d.at("center"), path + ".center", "[r, z] [m]");
+          die.center = {c[0], c[1]};
+          const double off = (c[0] - line.center.r) * line.normal.r +
+                             (c[1] - line.center.z) * line.normal.z;
+          const double s = line.coordinate(die.center);
+          const double tol = Outline::point_tolerance * size;
+          if (std::abs(off) > tol || s < line.s_min - tol || s > line.s_max + tol)
+            fail(path + ".center", d.at("center"), "must lie on part " + part);
+        }
+      else
+        {
+          auto mirrored_end = [&](double s) {
+            const Point x = line.point_at(s);
+            for (const OutlineEdge &e : body.outline.edges())
+              {
+                if (e.part == part)
+                  continue;
+                const bool touches =
+                  std::hypot(e.start.r - x.r, e.start.z - x.z) < 1e-9 * size ||
+                  std::hypot(e.end.r - x.r, e.end.z - x.z) < 1e-9 * size;
+                const PartCondition::Kind k = body.conditions.at(e.part).kind;
+                if (touches && (k == PartCondition::Kind::axis || k == PartCondition::Kind::symmetry))
+                  return true;
+              }
+            return std::abs(x.r) < 1e-9 * size; // the part ends on the axis itself
+          };
+          const double s = mirrored_end(line.s_min)   ? line.s_min
+                           : mirrored_end(line.s_max) ? line.s_max
+                                                      : 0.5 * (line.s_min + line.s_max);
+          die.center = line.point_at(s);
+        }
+
+      if (!d.has("profile"))
+        throw InputError("problem file: missing field " + path + ".profile ({\"shape\": "
+                         "\"paraboloid\", \"radius\": R}, {\"shape\": \"flat_rounded\", "
+                         "\"flat_radius\": b, \"edge_radius\": rho} or {\"shape\": \"flat\", "
+                         "\"radius\": b})");
+      const json &pj = d.at("profile");
+      const std::string ppath = path + ".profile";
+      if (!pj.is_object() || !pj.contains("shape"))
+        fail(ppath, pj, "must be an object with a shape (paraboloid, flat_rounded, flat)");
+      const ObjectReader shape_reader(pj, ppath, {"shape", "radius", "flat_radius", "edge_radius"});
+      const std::string shape =
+        shape_reader.string("shape", {"paraboloid", "flat_rounded", "flat"});
+      const std::set<std::string> wanted =
+        shape == "flat_rounded" ? std::set<std::string>{"shape", "flat_radius", "edge_radius"}
+                                : std::set<std::string>{"shape", "radius"};
+      const ObjectReader pr(pj, ppath, wanted); // the keys of this shape only
+      DieProfile &profile = die.profile;
+      if (shape == "flat_rounded")
+        {
+          profile.shape = DieProfile::Shape::flat_rounded;
+          profile.flat_radius = pr.number("flat_radius", "must be > 0 [m]", positive);
+          profile.edge_radius = pr.number("edge_radius", "must be > 0 [m]", positive);
+        }
+      else
+        {
+          profile.shape =
+            shape == "flat" ? DieProfile::Shape::flat : DieProfile::Shape::paraboloid;
+          profile.radius = pr.number("radius", "must be > 0 [m]", positive);
+        }
+
+      // A flat face must end on the part where the part goes on beyond the centre (a punch
+      // wider than its face would press on the corner).
+      const double flat = shape == "flat"           ? profile.radius
+                           : shape == "flat_rounded" ? profile.flat_radius
+                                                     : 0.0;
+      const double s_c = line.coordinate(die.center);
+      const double tol = Outline::point_tolerance * size;
+      for (const double reach : {s_c - line.s_min, line.s_max - s_c})
+        if (reach > tol && flat >= reach)
+          fail(ppath + (shape == "flat" ? ".radius" : ".flat_radius"), flat,
+               "the flat face must end on part " + part + " (it reaches " + show(reach) +
+                 " m from the centre there)");
+      return die;
+    }
+
     // geometry.outline, boundary, loading (body loads) and samples of the outline form.
     void parse_outline_form(const ObjectReader &top, Problem &p)
     {
       p.legacy_cylinder = false;
-      for (const char *legacy_only : {"die", "contact"})
-        if (top.has(legacy_only))
-          throw InputError(std::string("problem file: ") + legacy_only +
-                           ": a die is only supported on the hollow-cylinder form "
-                           "(geometry.inner_radius, outer_radius, length) so far");
+      if (top.has("die"))
+        throw InputError("problem file: die: the top-level die is the hollow-cylinder form's "
+                         "(geometry.inner_radius, outer_radius, length); with geometry.outline "
+                         "a die is a condition of its part: boundary.PART.die");
       const ObjectReader g(top.at("geometry"), "geometry", {"outline"});
       const json &o = g.at("outline");
       if (!o.is_array() || o.size() < 3)
@@ -267,11 +474,13 @@ namespace axisym
                 throw InputError("problem file: " + path + ": part on the axis r = 0, which takes "
                                  "no condition (u_r = 0 and sigma_rz = 0 are implied)");
               const ObjectReader cond(it.value(), path,
-                                      {"pressure", "traction", "symmetry", "displacement"});
+                                      {"pressure", "traction", "symmetry", "displacement", "die"});
               if (it.value().size() != 1)
                 fail(path, it.value(),
-                     "needs exactly one of pressure, traction, symmetry, displacement");
-              if (cond.has("pressure"))
+                     "needs exactly one of pressure, traction, symmetry, displacement, die");
+              if (cond.has("die"))
+                c.kind = PartCondition::Kind::die; // read below, once every part has its kind
+              else if (cond.has("pressure"))
                 {
                   c.kind = PartCondition::Kind::pressure;
                   c.pressure = cond.number("pressure", "a finite pressure [Pa]", any_number);
@@ -302,6 +511,11 @@ namespace axisym
             }
         }
 
+      // Dies last: the default centre depends on the neighbouring parts' conditions.
+      for (const std::string &part : body.die_parts())
+        body.conditions[part].die = parse_die(top.at("boundary").at(part).at("die"),
+                                              "boundary." + part + ".die", body, part);
+
       // The rigid translation in z must be fixed (a symmetry plane z = const or a
       // displacement), or neither solver has a unique solution.
       bool fixes_u_z = false;
@@ -315,6 +529,12 @@ namespace axisym
       if (!fixes_u_z)
         throw InputError("problem file: boundary: no part fixes the rigid translation in z "
                          "(needs a displacement part or a symmetry part that is not vertical)");
+      if (top.has("contact"))
+        {
+          if (body.die_parts().empty())
+            throw InputError("problem file: contact: only with a die (boundary.PART.die)");
+          parse_contact(top, p, std::numeric_limits<double>::infinity(), "the die's part");
+        }
 
       if (top.has("loading"))
         {
@@ -394,7 +614,15 @@ namespace axisym
           outer.pressure = p.loading->outer_pressure;
         }
       if (p.die)
-        outer.kind = PartCondition::Kind::die;
+        {
+          // The legacy parabolic die: u_r* = -delta (1 - 2 z^2 / a^2) is the paraboloid
+          // g0 = s^2 / (2R), R = a^2 / (4 delta), centred on the mid-plane.
+          outer.kind = PartCondition::Kind::die;
+          outer.die.indentation = p.die->indentation;
+          outer.die.center = {r2, 0.0};
+          outer.die.profile.shape = DieProfile::Shape::paraboloid;
+          outer.die.profile.radius = a * a / (4.0 * p.die->indentation);
+        }
       body.conditions["inner"] = inner;
       body.conditions["outer"] = outer;
       return body;
@@ -524,21 +752,7 @@ namespace axisym
       throw InputError("problem file: needs at least one of the objects loading, die");
 
     if (top.has("contact"))
-      {
-        const ObjectReader c(top.at("contact"), "contact", {"method", "half_width", "curve_points"});
-        if (c.has("curve_points"))
-          p.contact.curve_points = c.integer("curve_points", ranges::contact_curve_points);
-        if (c.has("method"))
-          p.contact.method =
-            c.string("method", {"edge-intensity", "fixed", "iterate", "max-force"});
-        if (c.has("half_width"))
-          {
-            const double a = p.geometry.half_length();
-            p.contact.half_width = c.number(
-              "half_width", "must be in (0, length/2 = " + show(a) + "] [m]",
-              [&](double x) { return x > 0.0 && x <= a * (1 + 1e-12); });
-          }
-      }
+      parse_contact(top, p, p.geometry.half_length(), "length/2");
 
     // 3. Sample points: inside the closed section.
     if (top.has("samples"))

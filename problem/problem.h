@@ -19,7 +19,13 @@
 //   { "geometry": {"outline": [{"start": [r, z]}, {"line_to": [r, z], "part": name},
 //                              {"arc_to": [r, z], "center": [r, z], "part": name}, ...]},
 //     "boundary": {name: {"pressure": Pa} | {"traction": [Pa, Pa]} | {"symmetry": true}
-//                        | {"displacement": [m, m]}, ...},
+//                        | {"displacement": [m, m]}
+//                        | {"die": {"indentation": m | "force": N, "center": [r, z],
+//                                   "profile": {"shape": "paraboloid", "radius": m}
+//                                            | {"shape": "flat_rounded", "flat_radius": m,
+//                                               "edge_radius": m}
+//                                            | {"shape": "flat", "radius": m}}}, ...},
+//     "contact":  {"method": ...},   // optional, with a die (as above)
 //     "material": {..., "density": kg/m^3, "thermal_expansion": 1/K},
 //     "loading":  {"angular_velocity": rad/s, "gravity": m/s^2,
 //                  "temperature": {"field": [T0, T_r, T_z]}},                // optional
@@ -64,6 +70,40 @@ namespace axisym
     std::string profile = "parabolic";
   };
 
+  /// A rigid die's shape: its initial gap g0(s) >= 0 [m] to the undeformed part at the
+  /// distance s >= 0 [m] from the die's centre along the part (DESIGN.md 7.1).
+  struct DieProfile
+  {
+    enum class Shape
+    {
+      paraboloid,   ///< g0 = s^2 / (2 radius): Hertz-type
+      flat_rounded, ///< g0 = 0 for s <= flat_radius, (s - flat_radius)^2 / (2 edge_radius) beyond
+      flat          ///< g0 = 0 for s <= radius; no die beyond (a sharp edge)
+    };
+    Shape shape = Shape::paraboloid;
+    double radius = 0;      ///< paraboloid: R [m]; flat: the punch radius b [m]
+    double flat_radius = 0; ///< flat_rounded: b [m]
+    double edge_radius = 0; ///< flat_rounded: rho [m]
+
+    /// g0(s) [m] for s >= 0; +infinity beyond a flat punch's edge (no die surface there).
+    double gap(double s) const;
+    /// Where the die's surface ends: the flat punch's radius; +infinity otherwise.
+    double extent() const;
+  };
+  const char *to_string(DieProfile::Shape shape);
+
+  /// Frictionless contact with a rigid die on a straight part (DESIGN.md 7.1). The die moves
+  /// by delta along the part's inward normal: in the contact zone the normal displacement into
+  /// the body is delta - g0(s) and the shear traction vanishes; outside it the part is traction
+  /// free and does not penetrate the die. Exactly one of indentation and force is set.
+  struct DieCondition
+  {
+    std::optional<double> indentation; ///< delta [m], > 0
+    std::optional<double> force;       ///< P [N] on the whole body of revolution, > 0
+    Point center;                      ///< where the die touches first, on the part [m]
+    DieProfile profile;
+  };
+
   /// The condition on one boundary part (DESIGN.md 7.1), SI units, normal n outward.
   struct PartCondition
   {
@@ -74,13 +114,14 @@ namespace axisym
       traction,      ///< sigma . n = (t_r, t_z)
       symmetry,      ///< straight edges only: u . n = 0, shear traction 0
       displacement,  ///< u = (u_r, u_z); [0, 0] clamps
-      die,           ///< frictionless rigid die (the legacy outer side; Problem::die)
+      die,           ///< frictionless rigid die (`die`; the legacy outer side: Problem::die)
       axis           ///< r = 0: u_r = 0, sigma_rz = 0 (implied, never given)
     };
     Kind kind = Kind::traction_free;
     double pressure = 0.0;                      ///< [Pa]
     std::array<double, 2> traction{{0.0, 0.0}};   ///< (t_r, t_z) [Pa]
     std::array<double, 2> displacement{{0.0, 0.0}}; ///< (u_r, u_z) [m]
+    DieCondition die;                           ///< kind == die
   };
   const char *to_string(PartCondition::Kind kind);
 
@@ -114,7 +155,27 @@ namespace axisym
     bool mirrored = false;
     /// The condition of the part of edge i.
     const PartCondition &condition_of_edge(int i) const;
+    /// The parts that carry a die, in the order of Outline::parts().
+    std::vector<std::string> die_parts() const;
   };
+
+  /// The frame of a die on its part (straight: every edge of the part on one line): the
+  /// centre, the unit tangent t along the part (the direction of travel of its first edge) and
+  /// the outward unit normal n. A point x of the part is at the signed distance
+  /// s = (x - center) . t from the centre; the part covers s in [s_min, s_max].
+  struct DieFrame
+  {
+    Point center, tangent, normal;
+    double s_min = 0, s_max = 0;
+    /// The signed distance s of x along the part from the centre [m].
+    double coordinate(Point x) const
+    {
+      return (x.r - center.r) * tangent.r + (x.z - center.z) * tangent.z;
+    }
+    Point point_at(double s) const { return {center.r + s * tangent.r, center.z + s * tangent.z}; }
+  };
+  /// Precondition: `part` carries a die (Body::die_parts()); the parser checked it is straight.
+  DieFrame die_frame(const Body &body, const std::string &part);
 
   struct Problem
   {

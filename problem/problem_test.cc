@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace axisym
 {
   namespace
@@ -232,6 +234,129 @@ namespace axisym
 
     j = sphere();
     j["die"] = {{"indentation", 1e-6}};
-    expect_error(j, {"die", "hollow-cylinder"});
+    expect_error(j, {"die", "hollow-cylinder", "boundary.PART.die"});
+  }
+
+  // A die on a straight part (DESIGN.md 7.1): its frame and default centre.
+  TEST(ProblemDie, ParsesADieOnAPartWithItsFrame)
+  {
+    const Problem p = parse_problem(testing::punched_cylinder());
+    ASSERT_EQ(p.body->die_parts(), std::vector<std::string>{"top"});
+    const DieCondition &die = p.body->conditions.at("top").die;
+    EXPECT_EQ(p.body->conditions.at("top").kind, PartCondition::Kind::die);
+    ASSERT_TRUE(die.force.has_value());
+    EXPECT_FALSE(die.indentation.has_value());
+    EXPECT_EQ(*die.force, 2000.0);
+    // Default centre: the end of `top` on the axis.
+    EXPECT_EQ(die.center.r, 0.0);
+    EXPECT_EQ(die.center.z, 0.02);
+    const DieFrame f = die_frame(*p.body, "top");
+    // `top` runs from (0.02, 0.02) to (0, 0.02): tangent -e_r, outward normal +e_z.
+    EXPECT_DOUBLE_EQ(f.tangent.r, -1.0);
+    EXPECT_DOUBLE_EQ(f.normal.z, 1.0);
+    EXPECT_NEAR(f.s_min, -0.02, 1e-15);
+    EXPECT_NEAR(f.s_max, 0.0, 1e-15);
+    EXPECT_NEAR(f.coordinate({0.005, 0.02}), -0.005, 1e-15);
+    EXPECT_DOUBLE_EQ(die.profile.gap(0.01), 0.01 * 0.01 / 0.2);
+
+    // A part whose ends meet neither a symmetry edge nor the axis: the midpoint.
+    auto j = testing::punched_cylinder();
+    j["boundary"]["bottom"] = {{"displacement", {0.0, 0.0}}};
+    j["boundary"]["side"] = j["boundary"]["top"];
+    j["boundary"].erase("top");
+    const Problem q = parse_problem(j);
+    EXPECT_NEAR(q.body->conditions.at("side").die.center.r, 0.02, 1e-15);
+    EXPECT_NEAR(q.body->conditions.at("side").die.center.z, 0.01, 1e-15);
+    // With bottom a symmetry plane, the side's end on it.
+    j["boundary"]["bottom"] = {{"symmetry", true}};
+    EXPECT_NEAR(parse_problem(j).body->conditions.at("side").die.center.z, 0.0, 1e-15);
+    // A centre given on the part.
+    j["boundary"]["side"]["die"]["center"] = {0.02, 0.015};
+    EXPECT_NEAR(parse_problem(j).body->conditions.at("side").die.center.z, 0.015, 1e-15);
+  }
+
+  TEST(ProblemDie, ProfilesGiveTheirGaps)
+  {
+    DieProfile flat_rounded;
+    flat_rounded.shape = DieProfile::Shape::flat_rounded;
+    flat_rounded.flat_radius = 2.0, flat_rounded.edge_radius = 4.0;
+    EXPECT_EQ(flat_rounded.gap(1.5), 0.0);
+    EXPECT_DOUBLE_EQ(flat_rounded.gap(3.0), 1.0 / 8.0);
+    DieProfile flat;
+    flat.shape = DieProfile::Shape::flat;
+    flat.radius = 2.0;
+    EXPECT_EQ(flat.gap(2.0), 0.0);
+    EXPECT_TRUE(std::isinf(flat.gap(2.0001)));
+    EXPECT_EQ(flat.extent(), 2.0);
+  }
+
+  // The legacy die is the paraboloid R = a^2 / (4 delta) centred on the mid-plane: the
+  // normal displacement into the body, delta - g0(z), is -u_r*(z) of paper eq. 4.1.
+  TEST(ProblemDie, LegacyDieIsTheParaboloidOnTheOuterPart)
+  {
+    auto j = valid();
+    j["die"] = {{"indentation", 1e-6}};
+    const Problem p = parse_problem(j);
+    const PartCondition &outer = p.body->conditions.at("outer");
+    ASSERT_EQ(outer.kind, PartCondition::Kind::die);
+    EXPECT_EQ(outer.die.center.r, 0.2);
+    EXPECT_EQ(outer.die.center.z, 0.0);
+    for (const double z : {0.0, 0.05, 0.13, 0.2})
+      EXPECT_NEAR(*outer.die.indentation - outer.die.profile.gap(z),
+                  -die_u_r(*p.die, p.geometry, z), 1e-22)
+        << z;
+  }
+
+  // The bad-input list of DESIGN.md 7.1 for dies: each names the field.
+  TEST(ProblemDie, RejectsBadDiesNamingTheField)
+  {
+    auto j = testing::punched_cylinder();
+    j["boundary"]["side"] = {{"die", {{"indentation", 1e-6},
+                                      {"profile", {{"shape", "paraboloid"}, {"radius", 0.1}}}}}};
+    j["geometry"]["outline"][2] = {{"arc_to", {0.0, 0.02}}, {"center", {0.0, 0.0}}, {"part", "side"}};
+    j["geometry"]["outline"].erase(3);
+    j["boundary"].erase("top");
+    expect_error(j, {"boundary.side.die", "arc"});
+
+    j = testing::punched_cylinder();
+    j["boundary"]["top"]["die"]["center"] = {0.01, 0.019};
+    expect_error(j, {"boundary.top.die.center", "0.019", "on part top"});
+    j["boundary"]["top"]["die"]["center"] = {0.03, 0.02};
+    expect_error(j, {"boundary.top.die.center", "on part top"});
+
+    j = testing::punched_cylinder();
+    j["boundary"]["top"]["die"]["indentation"] = 1e-6;
+    expect_error(j, {"boundary.top.die", "exactly one of indentation"});
+    j["boundary"]["top"]["die"].erase("indentation");
+    j["boundary"]["top"]["die"].erase("force");
+    expect_error(j, {"boundary.top.die", "exactly one of indentation"});
+
+    j = testing::punched_cylinder();
+    j["boundary"]["top"]["die"]["force"] = -5.0;
+    expect_error(j, {"boundary.top.die.force", "-5", "> 0"});
+    j = testing::punched_cylinder();
+    j["boundary"]["top"]["die"].erase("force");
+    j["boundary"]["top"]["die"]["indentation"] = 0.0;
+    expect_error(j, {"boundary.top.die.indentation", "0", "small strain"});
+
+    j = testing::punched_cylinder();
+    j["boundary"]["top"]["die"]["profile"]["radius"] = 0.0;
+    expect_error(j, {"boundary.top.die.profile.radius", "0", "> 0"});
+    j["boundary"]["top"]["die"]["profile"] = {{"shape", "flat_rounded"}, {"flat_radius", 0.005},
+                                              {"edge_radius", -1.0}};
+    expect_error(j, {"boundary.top.die.profile.edge_radius", "-1", "> 0"});
+    j["boundary"]["top"]["die"]["profile"] = {{"shape", "flat_rounded"}, {"radius", 0.005}};
+    expect_error(j, {"boundary.top.die.profile.radius", "unknown key"});
+    j["boundary"]["top"]["die"]["profile"] = {{"shape", "cone"}, {"radius", 0.005}};
+    expect_error(j, {"boundary.top.die.profile.shape", "cone", "paraboloid"});
+    j["boundary"]["top"]["die"]["profile"] = {{"shape", "flat"}, {"radius", 0.03}};
+    expect_error(j, {"boundary.top.die.profile.radius", "0.03", "end on part top"});
+    j["boundary"]["top"]["die"].erase("profile");
+    expect_error(j, {"boundary.top.die.profile", "missing"});
+
+    j = testing::punched_cylinder();
+    j["boundary"]["top"] = {{"pressure", 1e6}};
+    j["contact"] = {{"method", "iterate"}};
+    expect_error(j, {"contact", "only with a die"});
   }
 } // namespace axisym

@@ -47,6 +47,25 @@ namespace axisym::testing
       "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})");
   }
 
+  /// A solid steel cylinder, radius 0.02 m and height 0.02 m, on a frictionless support
+  /// (symmetry on the bottom z = 0), pressed on its top face by a rigid paraboloid of radius
+  /// 0.1 m with 2 kN (the Hertz case; a = (3 P R / 4 E*)^(1/3) = 0.87 mm). Parts: bottom,
+  /// side, top, axis.
+  inline nlohmann::json punched_cylinder()
+  {
+    return nlohmann::json::parse(R"({
+      "geometry": {"outline": [
+        {"start": [0.0, 0.0]},
+        {"line_to": [0.02, 0.0], "part": "bottom"},
+        {"line_to": [0.02, 0.02], "part": "side"},
+        {"line_to": [0.0, 0.02], "part": "top"},
+        {"line_to": [0.0, 0.0], "part": "axis"}]},
+      "boundary": {"bottom": {"symmetry": true},
+                   "top": {"die": {"force": 2000.0,
+                                   "profile": {"shape": "paraboloid", "radius": 0.1}}}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})");
+  }
+
   struct CommandOutcome
   {
     int status;      ///< exit status (-1 if the command did not exit normally)

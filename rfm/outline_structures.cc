@@ -203,7 +203,9 @@ namespace rfm
               break;
             case PartCondition::Kind::die:
               throw InputError("boundary." + edges[e].part +
-                               ": a die on an outline section is not supported by the RFM");
+                               ".die: the RFM solves contact on the hollow-cylinder form "
+                               "(geometry.inner_radius, outer_radius, length; top-level die) "
+                               "only so far; fem_solve solves a die on an outline part");
           }
       }
 
