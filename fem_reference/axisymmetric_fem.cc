@@ -27,6 +27,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/grid_refinement.h>
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
@@ -96,13 +97,10 @@ namespace fem
       return;
     if (!problem.body)
       throw axisym::InputError("problem: an outline problem without its body (parser bug?)");
-    if (problem.die)
-      throw axisym::InputError("die: the FEM reference supports a die only on the "
-                               "hollow-cylinder form");
-    for (const auto &[part, condition] : problem.body->conditions)
-      if (condition.kind == axisym::PartCondition::Kind::die)
-        throw axisym::InputError("boundary." + part +
-                                 ": a die on an outline part is not supported by fem_solve");
+    if (!problem.body->die_parts().empty() && problem.contact.method == "fixed")
+      throw axisym::InputError("contact.method = \"fixed\": a prescribed zone is only for the "
+                               "hollow-cylinder form's die so far; a die on an outline part is "
+                               "solved for its zone (penalty active set)");
     if (options.mesh == FemOptions::MeshGenerator::structured)
       throw axisym::InputError("FEM option mesh (--mesh) = structured: only for the "
                                "hollow-cylinder form (an outline section is meshed by gmsh)");
@@ -280,12 +278,59 @@ namespace fem
     };
 
     /// Everything computed from one solution (one active-set step).
+    /// One die on an outline part, from one solution.
+    struct DieEvaluation
+    {
+      double indentation = 0, force = 0, force_trace = 0;
+      double half_width = 0, half_width_gap = 0; ///< one-edge zone: centre to free end [m]
+      double zone_lo = 0, zone_hi = 0;           ///< the zone along the part [m]
+      bool two_edges = false;
+      double max_penetration = 0;
+      std::vector<PressurePoint> pressure;
+    };
+
+    /// The end of a contact zone that starts at s = 0 and runs toward s > 0, from the gap g at
+    /// the contact points (s, g) sorted by s: after the last positive sample (sign noise of
+    /// g ~ p / kappa inside the zone is ignored), (a) by linear interpolation of g and (b) by
+    /// the square-root law of a smooth contact edge, p ~ sqrt(c - s) (DESIGN.md 4.3): p^2 of
+    /// the last two samples with positive pressure extrapolated linearly to zero, kept inside
+    /// the bracket [last positive, first non-positive]. Returns (b, a); s_end when the zone
+    /// reaches the last sample, 0 when even the first sample is open.
+    std::pair<double, double> zone_end(const std::vector<std::pair<double, double>> &samples,
+                                       const double s_end)
+    {
+      double c = s_end, c_gap = s_end;
+      if (samples.empty())
+        return {c, c_gap};
+      if (samples.front().second <= 0)
+        c = c_gap = 0;
+      for (std::size_t i = samples.size() - 1; i > 0; --i)
+        if (samples[i - 1].second > 0 && samples[i].second <= 0)
+          {
+            const auto [z0, g0] = samples[i - 1];
+            const auto [z1, g1] = samples[i];
+            c_gap = z0 + g0 * (z1 - z0) / (g0 - g1);
+            c = c_gap;
+            std::size_t k = i - 1; // previous positive sample at a distinct s
+            while (k > 0 && samples[k - 1].first >= z0)
+              --k;
+            if (k > 0 && samples[k - 1].second > g0)
+              {
+                const auto [zm, gm] = samples[k - 1];
+                c = std::clamp(z0 + g0 * g0 * (z0 - zm) / (gm * gm - g0 * g0), z0, z1);
+              }
+            break;
+          }
+      return {c, c_gap};
+    }
+
     struct Evaluation
     {
       Functionals functionals;
       double force = 0, force_trace = 0, force_penalty = 0, half_width = 0, half_width_gap = 0;
       double max_penetration = 0;
       std::vector<PressurePoint> pressure;
+      std::vector<DieEvaluation> dies; ///< outline dies
       std::optional<double> error_sq, norm_sq;
       std::optional<double> error_max, norm_max;
       std::optional<double> u_error_sq, u_norm_sq;
@@ -312,6 +357,20 @@ namespace fem
         if (!outline_)
           mapping_ = std::make_unique<MappingQ1<2>>();
         const double a = problem.geometry.half_length();
+        if (outline_)
+          for (const std::string &part : problem.body->die_parts())
+            {
+              OutlineDie d;
+              d.part = part;
+              d.boundary_id = boundary_id_of_part(problem.body->outline, part);
+              d.frame = axisym::die_frame(*problem.body, part);
+              d.condition = problem.body->conditions.at(part).die;
+              d.delta = d.condition.indentation.value_or(0.0);
+              dies_.push_back(d);
+              mode_ = Mode::unilateral;
+            }
+        if (!dies_.empty())
+          estimate_die_zones();
         if (problem.die)
           {
             mode_ = problem.contact.method == "fixed" ? Mode::bilateral : Mode::unilateral;
@@ -324,6 +383,45 @@ namespace fem
       FemResult run();
 
     private:
+      /// A die on an outline part: its frame, condition and current state.
+      struct OutlineDie
+      {
+        std::string part;
+        types::boundary_id boundary_id = 0;
+        axisym::DieFrame frame;
+        axisym::DieCondition condition;
+        double delta = 0;           ///< the indentation: given, or found for the force
+        double zone_lo = 0, zone_hi = 0; ///< the zone [m along the part] the mesh resolves
+      };
+      /// One boundary face on a die's part (legacy: r = R2, die 0).
+      struct ContactFace
+      {
+        DoFHandler<2>::active_cell_iterator cell;
+        unsigned int face = 0, die = 0;
+      };
+      /// The die's outward normal and the target outward displacement u.n at x (+infinity
+      /// where there is no die surface: beyond a flat punch's edge).
+      Tensor<1, 2> die_normal(unsigned int die) const
+      {
+        Tensor<1, 2> n;
+        if (outline_)
+          n[0] = dies_[die].frame.normal.r, n[1] = dies_[die].frame.normal.z;
+        else
+          n[0] = 1.0;
+        return n;
+      }
+      double die_target(unsigned int die, const Point<2> &x) const
+      {
+        if (!outline_)
+          return axisym::die_u_r(*problem_.die, problem_.geometry, x[1]);
+        const OutlineDie &d = dies_[die];
+        const double s = d.frame.coordinate({x[0], x[1]});
+        return d.condition.profile.gap(std::abs(s)) - d.delta;
+      }
+      /// Pass 0's estimate of each die's zone (see axisymmetric_fem.h, "Dies").
+      void estimate_die_zones();
+      /// Refines toward the dies' zones after the global refinements.
+      void refine_toward_dies();
       enum class Mode
       {
         none,
@@ -349,6 +447,18 @@ namespace fem
       void assemble_base();
       void add_penalty(const std::vector<char> &active);
       void solve_linear();
+      /// Solves the factorized system (solve_linear) for another right-hand side; the
+      /// constraints' homogeneous part only (no inhomogeneity).
+      Vector<double> solve_homogeneous(const Vector<double> &rhs);
+      /// Force control: the indentations of the force-controlled dies that give the asked
+      /// forces on the active set, and the solution with them (axisymmetric_fem.h, "Dies").
+      void apply_force_control(const std::vector<char> &active);
+      /// Per die, over the active points: kappa int (u.n) r ds, kappa int g0 r ds and
+      /// kappa int r ds (P = 2 pi (first - second + delta third)).
+      std::vector<std::array<double, 3>> penalty_integrals(const Vector<double> &u,
+                                                           const std::vector<char> &active) const;
+      void evaluate_dies(const std::vector<char> *active, Evaluation &ev, double &b_c,
+                         double &b_r, double &penalty_energy) const;
       std::vector<char> active_set() const;
       Evaluation evaluate(const std::vector<char> *active) const;
       std::vector<FieldSample> samples() const;
@@ -398,7 +508,10 @@ namespace fem
       SparseMatrix<double> base_matrix_, system_matrix_;
       Vector<double> base_rhs_, system_rhs_, solution_;
       // Faces on r = R2, in cell order; contact quadrature point k * n_q + q.
-      std::vector<std::pair<DoFHandler<2>::active_cell_iterator, unsigned int>> outer_faces_;
+      std::vector<ContactFace> contact_faces_;
+      std::vector<OutlineDie> dies_; ///< outline problems
+      /// Force control: per force-controlled die, the right-hand side of a unit indentation.
+      std::vector<Vector<double>> unit_rhs_;
       /// Outline: the dofs whose residual is a support reaction, with the outline edge whose
       /// condition (symmetry or displacement) holds them and their component (set in
       /// add_outline_constraints).
@@ -409,6 +522,7 @@ namespace fem
       };
       std::map<types::global_dof_index, ReactionDof> reaction_dofs_;
       double h_min_ = 0, kappa_ = 0;
+      std::unique_ptr<SparseDirectUMFPACK> umfpack_; ///< the last direct factorization
       double assembly_s_ = 0, solve_s_ = 0;
     };
 
@@ -593,6 +707,7 @@ namespace fem
       else
         triangulation_.set_manifold(cell_manifold, FlatManifold<2>());
       triangulation_.refine_global(level_);
+      refine_toward_dies();
 
       if (options_.outline_geometry == Geometry::curved)
         {
@@ -637,21 +752,30 @@ namespace fem
       system_rhs_.reinit(dof_handler_.n_dofs());
       solution_.reinit(dof_handler_.n_dofs());
 
-      outer_faces_.clear();
+      contact_faces_.clear();
       h_min_ = std::numeric_limits<double>::infinity();
-      if (outline_)
-        {
-          kappa_ = 0; // no die on an outline section (check_supported)
-          return;
-        }
+      kappa_ = 0;
       for (const auto &cell : dof_handler_.active_cell_iterators())
         for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() && is_outer(cell->face(f)->boundary_id()))
-            {
-              outer_faces_.emplace_back(cell, f);
-              h_min_ = std::min(h_min_, cell->face(f)->measure());
-            }
-      kappa_ = options_.penalty_factor * problem_.material.youngs_modulus / h_min_;
+          {
+            if (!cell->face(f)->at_boundary())
+              continue;
+            const types::boundary_id id = cell->face(f)->boundary_id();
+            unsigned int die = 0;
+            if (outline_)
+              {
+                while (die < dies_.size() && dies_[die].boundary_id != id)
+                  ++die;
+                if (die == dies_.size())
+                  continue;
+              }
+            else if (!problem_.die || !is_outer(id))
+              continue;
+            contact_faces_.push_back({cell, f, die});
+            h_min_ = std::min(h_min_, cell->face(f)->measure());
+          }
+      if (!contact_faces_.empty())
+        kappa_ = options_.penalty_factor * problem_.material.youngs_modulus / h_min_;
     }
 
     // 2o. Outline constraints. Each boundary node (the pair of u_r and u_z dofs at one support
@@ -914,49 +1038,70 @@ namespace fem
       assembly_s_ += seconds_since(t0);
     }
 
-    // 5a. Penalty kappa int_A (u_r - u_r*) v_r r ds added to a copy of the base system.
+    // 5a. Penalty kappa int_A (u.n - t) v.n r ds added to a copy of the base system, t the
+    // target outward displacement (legacy: n = e_r, t = u_r*). Force-controlled dies enter with
+    // delta = 0, and unit_rhs_[k] receives the right-hand side of a unit indentation of the
+    // k-th of them (t = g0 - delta: -kappa int_A v.n r ds per unit delta).
     void AxisymmetricSolver::add_penalty(const std::vector<char> &active)
     {
       const auto t0 = Clock::now();
       system_matrix_.copy_from(base_matrix_);
       system_rhs_ = base_rhs_;
+      std::vector<int> force_index(dies_.size(), -1);
+      int n_force = 0;
+      for (std::size_t d = 0; d < dies_.size(); ++d)
+        if (dies_[d].condition.force)
+          {
+            force_index[d] = n_force++;
+            dies_[d].delta = 0;
+          }
+      unit_rhs_.assign(n_force, Vector<double>(dof_handler_.n_dofs()));
       FEFaceValues<2> fv(mapping(), fe_, face_quadrature_,
                          update_values | update_quadrature_points | update_JxW_values);
       const unsigned int n = fe_.n_dofs_per_cell(), n_q = face_quadrature_.size();
       FullMatrix<double> m(n, n);
-      Vector<double> rhs(n);
+      Vector<double> rhs(n), unit(n);
       std::vector<types::global_dof_index> dofs(n);
-      for (std::size_t k = 0; k < outer_faces_.size(); ++k)
+      for (std::size_t k = 0; k < contact_faces_.size(); ++k)
         {
           bool any = false;
           for (unsigned int q = 0; q < n_q; ++q)
             any = any || active[k * n_q + q];
           if (!any)
             continue;
-          const auto &[cell, f] = outer_faces_[k];
-          fv.reinit(cell, f);
+          const ContactFace &face = contact_faces_[k];
+          const Tensor<1, 2> normal = die_normal(face.die);
+          fv.reinit(face.cell, face.face);
           m = 0;
           rhs = 0;
+          unit = 0;
           for (unsigned int q = 0; q < n_q; ++q)
             {
               if (!active[k * n_q + q])
                 continue;
               const Point<2> x = fv.quadrature_point(q);
               const double w = kappa_ * x[0] * fv.JxW(q);
-              const double target = axisym::die_u_r(*problem_.die, problem_.geometry, x[1]);
+              const double target = die_target(face.die, x);
               for (unsigned int i = 0; i < n; ++i)
                 {
-                  if (fe_.system_to_component_index(i).first != 0)
+                  const double n_i = normal[fe_.system_to_component_index(i).first];
+                  if (n_i == 0.0)
                     continue;
-                  const double phi_i = fv.shape_value(i, q);
+                  const double phi_i = fv.shape_value(i, q) * n_i;
                   rhs(i) += w * target * phi_i;
+                  unit(i) -= w * phi_i;
                   for (unsigned int j = 0; j < n; ++j)
-                    if (fe_.system_to_component_index(j).first == 0)
-                      m(i, j) += w * phi_i * fv.shape_value(j, q);
+                    {
+                      const double n_j = normal[fe_.system_to_component_index(j).first];
+                      if (n_j != 0.0)
+                        m(i, j) += w * phi_i * fv.shape_value(j, q) * n_j;
+                    }
                 }
             }
-          cell->get_dof_indices(dofs);
+          face.cell->get_dof_indices(dofs);
           constraints_.distribute_local_to_global(m, rhs, dofs, system_matrix_, system_rhs_);
+          if (outline_ && force_index[face.die] >= 0)
+            constraints_.distribute_local_to_global(unit, dofs, unit_rhs_[force_index[face.die]]);
         }
       assembly_s_ += seconds_since(t0);
     }
@@ -967,9 +1112,9 @@ namespace fem
       const auto t0 = Clock::now();
       if (options_.linear_solver == FemOptions::LinearSolver::direct)
         {
-          SparseDirectUMFPACK umfpack;
-          umfpack.initialize(system_matrix_);
-          umfpack.vmult(solution_, system_rhs_);
+          umfpack_ = std::make_unique<SparseDirectUMFPACK>();
+          umfpack_->initialize(system_matrix_);
+          umfpack_->vmult(solution_, system_rhs_);
         }
       else
         {
@@ -987,21 +1132,118 @@ namespace fem
       solve_s_ += seconds_since(t0);
     }
 
-    // 5b. The active set of the current solution: g = u_r - u_r* > 0 at the contact points.
+    Vector<double> AxisymmetricSolver::solve_homogeneous(const Vector<double> &rhs)
+    {
+      const auto t0 = Clock::now();
+      Vector<double> x(dof_handler_.n_dofs()), zero(dof_handler_.n_dofs());
+      if (options_.linear_solver == FemOptions::LinearSolver::direct)
+        umfpack_->vmult(x, rhs);
+      else
+        {
+          SolverControl control(20 * dof_handler_.n_dofs() + 100,
+                                options_.linear_tolerance * rhs.l2_norm());
+          SolverCG<Vector<double>> cg(control);
+          PreconditionSSOR<SparseMatrix<double>> ssor;
+          ssor.initialize(system_matrix_, 1.2);
+          cg.solve(system_matrix_, x, rhs, ssor);
+        }
+      constraints_.distribute(x);
+      constraints_.distribute(zero); // the inhomogeneities alone
+      x -= zero;
+      solve_s_ += seconds_since(t0);
+      return x;
+    }
+
+    std::vector<std::array<double, 3>>
+    AxisymmetricSolver::penalty_integrals(const Vector<double> &u,
+                                          const std::vector<char> &active) const
+    {
+      std::vector<std::array<double, 3>> out(dies_.size(), {{0.0, 0.0, 0.0}});
+      FEFaceValues<2> fv(mapping(), fe_, face_quadrature_,
+                         update_values | update_quadrature_points | update_JxW_values);
+      const unsigned int n_q = face_quadrature_.size();
+      std::vector<Vector<double>> uq(n_q, Vector<double>(2));
+      for (std::size_t k = 0; k < contact_faces_.size(); ++k)
+        {
+          const ContactFace &face = contact_faces_[k];
+          const OutlineDie &d = dies_[face.die];
+          fv.reinit(face.cell, face.face);
+          fv.get_function_values(u, uq);
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              if (!active[k * n_q + q])
+                continue;
+              const Point<2> x = fv.quadrature_point(q);
+              const double w = kappa_ * x[0] * fv.JxW(q);
+              const double un = uq[q][0] * d.frame.normal.r + uq[q][1] * d.frame.normal.z;
+              const double g0 = d.condition.profile.gap(std::abs(d.frame.coordinate({x[0], x[1]})));
+              out[face.die][0] += w * un;
+              out[face.die][1] += w * g0;
+              out[face.die][2] += w;
+            }
+        }
+      return out;
+    }
+
+    // 5d. Force control. On a fixed active set, P_i = 2 pi (A_i(u) - G_i + delta_i W_i) with
+    // u = u_0 + sum_k delta_k u_k (penalty_integrals: A, G, W); u_0 is the solution with the
+    // force-controlled deltas at 0 (add_penalty), u_k the response to a unit delta_k.
+    void AxisymmetricSolver::apply_force_control(const std::vector<char> &active)
+    {
+      std::vector<unsigned int> force_dies;
+      for (unsigned int d = 0; d < dies_.size(); ++d)
+        if (dies_[d].condition.force)
+          force_dies.push_back(d);
+      if (force_dies.empty())
+        return;
+      const std::size_t m = force_dies.size();
+      std::vector<Vector<double>> unit(m);
+      for (std::size_t k = 0; k < m; ++k)
+        unit[k] = solve_homogeneous(unit_rhs_[k]);
+      const auto base = penalty_integrals(solution_, active);
+      FullMatrix<double> a(m, m);
+      Vector<double> b(m), delta(m);
+      for (std::size_t i = 0; i < m; ++i)
+        {
+          const unsigned int di = force_dies[i];
+          b(i) = *dies_[di].condition.force / (2 * pi) - (base[di][0] - base[di][1]);
+        }
+      for (std::size_t k = 0; k < m; ++k)
+        {
+          const auto response = penalty_integrals(unit[k], active);
+          for (std::size_t i = 0; i < m; ++i)
+            a(i, k) = response[force_dies[i]][0] + (i == k ? base[force_dies[i]][2] : 0.0);
+        }
+      // A die with no active point cannot carry its force: the set is wrong, not the system.
+      for (std::size_t i = 0; i < m; ++i)
+        if (!(base[force_dies[i]][2] > 0))
+          throw std::runtime_error("force control: die on part " + dies_[force_dies[i]].part +
+                                   " has no point in contact");
+      a.gauss_jordan();
+      a.vmult(delta, b);
+      for (std::size_t k = 0; k < m; ++k)
+        {
+          dies_[force_dies[k]].delta = delta(k);
+          solution_.add(delta(k), unit[k]);
+        }
+    }
+
+    // 5b. The active set of the current solution: g = u.n - t > 0 at the contact points.
     std::vector<char> AxisymmetricSolver::active_set() const
     {
       FEFaceValues<2> fv(mapping(), fe_, face_quadrature_, update_values | update_quadrature_points);
       const unsigned int n_q = face_quadrature_.size();
-      std::vector<char> active(outer_faces_.size() * n_q);
+      std::vector<char> active(contact_faces_.size() * n_q);
       std::vector<Vector<double>> u(n_q, Vector<double>(2));
-      for (std::size_t k = 0; k < outer_faces_.size(); ++k)
+      for (std::size_t k = 0; k < contact_faces_.size(); ++k)
         {
-          fv.reinit(outer_faces_[k].first, outer_faces_[k].second);
+          const ContactFace &face = contact_faces_[k];
+          const Tensor<1, 2> n = die_normal(face.die);
+          fv.reinit(face.cell, face.face);
           fv.get_function_values(solution_, u);
           for (unsigned int q = 0; q < n_q; ++q)
             active[k * n_q + q] =
-              u[q][0] - axisym::die_u_r(*problem_.die, problem_.geometry, fv.quadrature_point(q)[1]) >
-              0.0;
+              u[q][0] * n[0] + u[q][1] * n[1] - die_target(face.die, fv.quadrature_point(q)) > 0.0;
         }
       return active;
     }
@@ -1112,8 +1354,11 @@ namespace fem
 
       if (outline_)
         {
-          double work = 0, b_c = 0, b_r = 0;
+          double work = 0, b_c = 0, b_r = 0, penalty_energy = 0;
           outline_boundary_terms(work, b_c, b_r);
+          if (!dies_.empty())
+            evaluate_dies(active, ev, b_c, b_r, penalty_energy);
+          ev.functionals.penalty_energy = penalty_energy;
           // DESIGN.md 3 with the thermal strain as an initial strain (axisymmetric_fem.h):
           // W = int f.u_h r + int_St t.u_h r ds; the Castigliano functional carries
           // -int s_h.e_th r; in Reissner's s.e(u) - 1/2 s.C s - s.e_th = U density for s = s_h.
@@ -1157,9 +1402,9 @@ namespace fem
           }
       if (problem_.die)
         {
-          for (std::size_t k = 0; k < outer_faces_.size(); ++k)
+          for (std::size_t k = 0; k < contact_faces_.size(); ++k)
             {
-              const auto &[cell, f] = outer_faces_[k];
+              const auto &[cell, f, die] = contact_faces_[k];
               fv.reinit(cell, f);
               fv.get_function_values(solution_, uf);
               fv.get_function_gradients(solution_, gradf);
@@ -1187,7 +1432,7 @@ namespace fem
                   if (in_zone)
                     b_c += s[0] * target * w, b_r += s[0] * gap * w;
                   ev.max_penetration = std::max(ev.max_penetration, gap);
-                  ev.pressure.push_back({x[1], p, -s[0], gap});
+                  ev.pressure.push_back({x[1], x[0], x[1], p, -s[0], gap});
                   gap_samples.emplace_back(x[1], gap);
                 }
             }
@@ -1208,38 +1453,185 @@ namespace fem
       ev.force_trace = -2 * pi * r2 * 2 * trace;
       ev.force_penalty = 2 * pi * r2 * 2 * penalty_force;
 
-      // Half-width (unilateral): the sign change of the gap after its last positive sample,
-      // located (a) by linear interpolation of the gap and (b) by the square-root
-      // law of a smooth contact edge, p ~ sqrt(c - z) (DESIGN.md 4.3): p^2 of the last two
-      // samples with positive pressure extrapolated linearly to zero, kept inside the
-      // bracket [last positive, first non-positive]. (b) is the reported half_width.
+      // Half-width (unilateral): zone_end from z = 0; (b) is the reported half_width.
       ev.half_width = ev.half_width_gap = half_width_;
       if (mode_ == Mode::unilateral && !gap_samples.empty())
-        {
-          ev.half_width = ev.half_width_gap = g.half_length();
-          if (gap_samples.front().second <= 0)
-            ev.half_width = ev.half_width_gap = 0;
-          // The last positive sample: sign noise of g ~ p/kappa inside the zone is ignored.
-          for (std::size_t i = gap_samples.size() - 1; i > 0; --i)
-            if (gap_samples[i - 1].second > 0 && gap_samples[i].second <= 0)
-              {
-                const auto [z0, g0] = gap_samples[i - 1];
-                const auto [z1, g1] = gap_samples[i];
-                ev.half_width_gap = z0 + g0 * (z1 - z0) / (g0 - g1);
-                ev.half_width = ev.half_width_gap;
-                std::size_t k = i - 1; // previous positive sample at a distinct z
-                while (k > 0 && gap_samples[k - 1].first >= z0)
-                  --k;
-                if (k > 0 && gap_samples[k - 1].second > g0)
-                  {
-                    const auto [zm, gm] = gap_samples[k - 1];
-                    const double c = z0 + g0 * g0 * (z0 - zm) / (gm * gm - g0 * g0);
-                    ev.half_width = std::clamp(c, z0, z1);
-                  }
-                break;
-              }
-        }
+        std::tie(ev.half_width, ev.half_width_gap) = zone_end(gap_samples, g.half_length());
       return ev;
+    }
+
+    // 6d. Dies on outline parts: at the contact points of each die, the gap g = u.n - t, the
+    // penalty pressure kappa g on the active set, the trace -n.s_h n, the forces, the zone ends
+    // (zone_end on each side of the centre), and the contact terms of the functionals:
+    // b_c += int_A (n.s_h n) t r ds, b_r += int_A (n.s_h n) g r ds (the zone is S_c with u.n = t).
+    void AxisymmetricSolver::evaluate_dies(const std::vector<char> *active, Evaluation &ev,
+                                           double &b_c, double &b_r, double &penalty_energy) const
+    {
+      ev.dies.assign(dies_.size(), DieEvaluation{});
+      FEFaceValues<2> fv(mapping(), fe_, face_quadrature_,
+                         update_values | update_gradients | update_quadrature_points |
+                           update_JxW_values);
+      const unsigned int n_q = face_quadrature_.size();
+      std::vector<Vector<double>> u(n_q, Vector<double>(2));
+      std::vector<std::vector<Tensor<1, 2>>> grad(n_q, std::vector<Tensor<1, 2>>(2));
+      std::vector<std::vector<std::pair<double, double>>> gaps(dies_.size()); // (s, g)
+      for (std::size_t k = 0; k < contact_faces_.size(); ++k)
+        {
+          const ContactFace &face = contact_faces_[k];
+          const OutlineDie &d = dies_[face.die];
+          DieEvaluation &de = ev.dies[face.die];
+          const Tensor<1, 2> n = die_normal(face.die);
+          fv.reinit(face.cell, face.face);
+          fv.get_function_values(solution_, u);
+          fv.get_function_gradients(solution_, grad);
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              const Point<2> x = fv.quadrature_point(q);
+              const double w = x[0] * fv.JxW(q);
+              if (!(w > 0))
+                continue; // a point on the axis: no weight r ds, no penalty, no pressure
+              const double target = die_target(face.die, x);
+              const double gap = u[q][0] * n[0] + u[q][1] * n[1] - target;
+              const Stress st = stress_at(x, strain(x[0], u[q][0], grad[q][0], grad[q][1]));
+              const double snn = st[0] * n[0] * n[0] + 2 * st[3] * n[0] * n[1] + st[1] * n[1] * n[1];
+              const bool in_zone = active && (*active)[k * n_q + q];
+              const double p = in_zone ? kappa_ * gap : 0.0;
+              de.force += 2 * pi * p * w;
+              de.force_trace -= 2 * pi * snn * w;
+              if (in_zone)
+                {
+                  penalty_energy += 0.5 * kappa_ * gap * gap * w;
+                  b_c += snn * target * w;
+                  b_r += snn * gap * w;
+                }
+              if (std::isfinite(gap))
+                de.max_penetration = std::max(de.max_penetration, gap);
+              const double s = d.frame.coordinate({x[0], x[1]});
+              de.pressure.push_back({s, x[0], x[1], p, -snn, gap});
+              gaps[face.die].emplace_back(s, gap);
+            }
+        }
+      for (std::size_t i = 0; i < dies_.size(); ++i)
+        {
+          const OutlineDie &d = dies_[i];
+          DieEvaluation &de = ev.dies[i];
+          de.indentation = d.delta;
+          std::stable_sort(de.pressure.begin(), de.pressure.end(),
+                           [](const PressurePoint &a, const PressurePoint &b) { return a.s < b.s; });
+          // Each side of the centre as a zone from s = 0 outward (the gap beyond a flat
+          // punch is -infinity: an open point).
+          const double tol = 1e-9 * problem_.body->outline.size();
+          std::vector<std::pair<double, double>> up, down;
+          for (const auto &[si, gi] : gaps[i])
+            {
+              if (si >= -tol)
+                up.emplace_back(std::max(si, 0.0), gi);
+              if (si <= tol)
+                down.emplace_back(std::max(-si, 0.0), gi);
+            }
+          std::stable_sort(up.begin(), up.end());
+          std::stable_sort(down.begin(), down.end());
+          const bool has_up = d.frame.s_max > tol, has_down = d.frame.s_min < -tol;
+          const auto [hi, hi_gap] = has_up ? zone_end(up, d.frame.s_max) : std::pair{0.0, 0.0};
+          const auto [lo, lo_gap] = has_down ? zone_end(down, -d.frame.s_min) : std::pair{0.0, 0.0};
+          de.zone_lo = -lo, de.zone_hi = hi;
+          de.two_edges = has_up && has_down;
+          if (de.two_edges)
+            de.half_width = 0.5 * (hi + lo), de.half_width_gap = 0.5 * (hi_gap + lo_gap);
+          else
+            de.half_width = has_up ? hi : lo, de.half_width_gap = has_up ? hi_gap : lo_gap;
+        }
+      if (!ev.dies.empty())
+        {
+          const DieEvaluation &first = ev.dies.front();
+          ev.force = ev.force_penalty = first.force;
+          ev.force_trace = first.force_trace;
+          ev.half_width = first.half_width, ev.half_width_gap = first.half_width_gap;
+          ev.max_penetration = first.max_penetration;
+        }
+    }
+
+    // Pass 0's zones: where g0 < delta (indentation) or Hertz's contact radius
+    // a = (3 P R / 4 E*)^(1/3), E* = E / (1 - nu^2) (force), and at least the flat face.
+    void AxisymmetricSolver::estimate_die_zones()
+    {
+      const double e_star = problem_.material.youngs_modulus /
+                            (1 - problem_.material.poisson_ratio * problem_.material.poisson_ratio);
+      for (OutlineDie &d : dies_)
+        {
+          const axisym::DieProfile &pr = d.condition.profile;
+          using Shape = axisym::DieProfile::Shape;
+          const double flat = pr.shape == Shape::flat           ? pr.radius
+                              : pr.shape == Shape::flat_rounded ? pr.flat_radius
+                                                                : 0.0;
+          const double curvature_radius =
+            pr.shape == Shape::paraboloid ? pr.radius : pr.edge_radius;
+          double reach = flat;
+          if (pr.shape != Shape::flat)
+            reach += d.condition.indentation
+                       ? std::sqrt(2 * curvature_radius * *d.condition.indentation)
+                       : std::cbrt(3 * *d.condition.force * curvature_radius / (4 * e_star));
+          d.zone_lo = std::max(d.frame.s_min, -reach);
+          d.zone_hi = std::min(d.frame.s_max, reach);
+        }
+    }
+
+    // Refinement toward the dies' zones (axisymmetric_fem.h, "Dies"): the cells near the zone
+    // to die_zone_cells * 2^L across it, then each free end die_edge_refinements times more.
+    void AxisymmetricSolver::refine_toward_dies()
+    {
+      auto distance_to_segment = [](const Point<2> &x, const Point<2> &a, const Point<2> &b) {
+        const Tensor<1, 2> ab = b - a;
+        const double t = ab.norm_square() > 0
+                           ? std::clamp((x - a) * ab / ab.norm_square(), 0.0, 1.0)
+                           : 0.0;
+        return x.distance(a + t * ab);
+      };
+      auto refine_while = [&](const auto &wants) {
+        for (int round = 0; round < 40; ++round)
+          {
+            bool any = false;
+            for (const auto &cell : triangulation_.active_cell_iterators())
+              if (wants(cell))
+                cell->set_refine_flag(), any = true;
+            if (!any)
+              return;
+            triangulation_.execute_coarsening_and_refinement();
+          }
+      };
+      const double tol = 1e-9 * problem_.body->outline.size();
+      for (const OutlineDie &d : dies_)
+        {
+          const double w = d.zone_hi - d.zone_lo;
+          if (!(w > tol))
+            continue;
+          const double h = w / (options_.die_zone_cells * std::pow(2.0, level_));
+          const axisym::Point pa = d.frame.point_at(d.zone_lo), pb = d.frame.point_at(d.zone_hi);
+          const Point<2> a(pa.r, pa.z), b(pb.r, pb.z);
+          // A cell's size: its diameter / sqrt 2 (a square's side).
+          refine_while([&](const auto &cell) {
+            const double size = cell->diameter() / std::sqrt(2.0);
+            return size > 1.01 * h &&
+                   distance_to_segment(cell->center(), a, b) < 0.5 * w + cell->diameter();
+          });
+          for (const auto &[s_end, free] :
+               {std::pair{d.zone_lo, d.zone_lo > d.frame.s_min + tol},
+                std::pair{d.zone_hi, d.zone_hi < d.frame.s_max - tol}})
+            {
+              if (!free)
+                continue;
+              const axisym::Point pe = d.frame.point_at(s_end);
+              const Point<2> e(pe.r, pe.z);
+              for (int j = 1; j <= options_.die_edge_refinements; ++j)
+                {
+                  const double hj = h / std::pow(2.0, j);
+                  refine_while([&](const auto &cell) {
+                    return cell->diameter() / std::sqrt(2.0) > 1.01 * hj &&
+                           cell->center().distance(e) < 2.0 * cell->diameter();
+                  });
+                }
+            }
+        }
     }
 
     // 6o. Boundary terms of an outline problem: the work W = int t.u_h r ds of the pressure
@@ -1470,11 +1862,14 @@ namespace fem
       result.mesh_generator =
         options_.mesh == FemOptions::MeshGenerator::gmsh ? "gmsh" : "structured";
       result.outline = outline_;
-      if (problem_.die)
+      if (problem_.die || !dies_.empty())
         {
           result.contact.emplace();
+          result.contact->part = outline_ ? dies_.front().part : "outer";
           result.contact->method = problem_.contact.method;
           result.contact->unilateral = mode_ == Mode::unilateral;
+          if (problem_.die)
+            result.contact->indentation = problem_.die->indentation;
         }
 
       auto finish = [&](const Evaluation &ev) {
@@ -1497,6 +1892,25 @@ namespace fem
             c.force_penalty = ev.force_penalty;
             c.max_penetration = ev.max_penetration;
             c.pressure = ev.pressure;
+            result.other_dies.clear();
+            for (std::size_t d = 0; d < ev.dies.size(); ++d)
+              {
+                const DieEvaluation &de = ev.dies[d];
+                ContactResult &x = d == 0 ? c : result.other_dies.emplace_back(c);
+                x.part = dies_[d].part;
+                x.indentation = de.indentation;
+                x.half_width = de.half_width;
+                x.half_width_gap = de.half_width_gap;
+                x.force = x.force_penalty = de.force;
+                x.force_trace = de.force_trace;
+                x.max_penetration = de.max_penetration;
+                x.pressure = de.pressure;
+                x.zone.reset();
+                if (de.two_edges)
+                  x.zone = std::array<double, 2>{{de.zone_lo, de.zone_hi}};
+                if (d > 0)
+                  x.iterations.clear(); // the steps are the first die's record
+              }
           }
         result.assembly_seconds = assembly_s_;
         result.solve_seconds = solve_s_;
@@ -1511,7 +1925,25 @@ namespace fem
         {
           for (int pass = 0; pass < n_passes; ++pass)
             {
-              if (pass > 0)
+              if (pass > 0 && outline_)
+                {
+                  // Refine around the zones found (a lost contact keeps the estimate).
+                  for (std::size_t d = 0; d < dies_.size(); ++d)
+                    {
+                      const ContactResult &x = d == 0 ? *result.contact : result.other_dies[d - 1];
+                      const double lo = x.zone ? (*x.zone)[0]
+                                        : dies_[d].frame.s_max > 0 ? 0.0
+                                                                   : -x.half_width;
+                      const double hi = x.zone ? (*x.zone)[1]
+                                        : dies_[d].frame.s_max > 0 ? x.half_width
+                                                                   : 0.0;
+                      if (hi > lo)
+                        dies_[d].zone_lo = lo, dies_[d].zone_hi = hi;
+                    }
+                  dof_handler_.clear();
+                  triangulation_.clear();
+                }
+              else if (pass > 0)
                 {
                   const double c = result.contact->half_width;
                   if (!(c > 1e-3 * a && c < a * (1 - 1e-3)))
@@ -1594,16 +2026,29 @@ namespace fem
     {
       ContactResult &contact = *result.contact;
       // Start: all in contact (pass 0), or z < c of the previous pass (the split point).
-      std::vector<char> start(outer_faces_.size() * face_quadrature_.size(), 1);
-      if (pass > 0 && split_)
+      // Outline dies: the zone the mesh was refined for, where the die has a surface.
+      std::vector<char> start(contact_faces_.size() * face_quadrature_.size(), 1);
+      if ((pass > 0 && split_) || outline_)
         {
           FEFaceValues<2> fv(mapping(), fe_, face_quadrature_, update_quadrature_points);
           const unsigned int n_q = face_quadrature_.size();
-          for (std::size_t k = 0; k < outer_faces_.size(); ++k)
+          for (std::size_t k = 0; k < contact_faces_.size(); ++k)
             {
-              fv.reinit(outer_faces_[k].first, outer_faces_[k].second);
+              const ContactFace &face = contact_faces_[k];
+              fv.reinit(face.cell, face.face);
               for (unsigned int q = 0; q < n_q; ++q)
-                start[k * n_q + q] = fv.quadrature_point(q)[1] < *split_;
+                {
+                  const Point<2> x = fv.quadrature_point(q);
+                  if (!outline_)
+                    start[k * n_q + q] = x[1] < *split_;
+                  else
+                    {
+                      const OutlineDie &d = dies_[face.die];
+                      const double s = d.frame.coordinate({x[0], x[1]});
+                      start[k * n_q + q] = s >= d.zone_lo && s <= d.zone_hi &&
+                                           std::isfinite(d.condition.profile.gap(std::abs(s)));
+                    }
+                }
             }
         }
       std::vector<std::vector<char>> history{start};
@@ -1612,6 +2057,7 @@ namespace fem
           const std::vector<char> &active = history.back();
           add_penalty(active);
           solve_linear();
+          apply_force_control(active);
           const Evaluation ev = evaluate(&active);
           std::vector<char> next = active_set();
           ActiveSetStep step;
@@ -1630,9 +2076,15 @@ namespace fem
           std::ostringstream line;
           line.precision(6);
           line << "pass " << pass << ", active-set step " << it << ": |A| = " << step.n_active
-               << " of " << active.size() << ", changed " << step.n_changed
-               << ", c/a = " << ev.half_width / problem_.geometry.half_length()
-               << ", P = " << ev.force << " N (trace " << ev.force_trace << ")";
+               << " of " << active.size() << ", changed " << step.n_changed;
+          if (outline_)
+            for (std::size_t d = 0; d < ev.dies.size(); ++d)
+              line << "; " << dies_[d].part << ": c = " << ev.dies[d].half_width
+                   << " m, delta = " << ev.dies[d].indentation << " m, P = " << ev.dies[d].force
+                   << " N (trace " << ev.dies[d].force_trace << ")";
+          else
+            line << ", c/a = " << ev.half_width / problem_.geometry.half_length()
+                 << ", P = " << ev.force << " N (trace " << ev.force_trace << ")";
           progress(line.str());
           finish(ev);
           if (step.n_changed == 0)

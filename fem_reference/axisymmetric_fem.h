@@ -83,6 +83,25 @@
 //  * Reactions: the force each symmetry or displacement part exerts on the body (N, full
 //    360 degree body), from the residual of the discrete equilibrium at the dofs it holds
 //    (PartReaction).
+//  * Dies (boundary.PART.die on a straight part; DESIGN.md 7.1): frictionless unilateral contact
+//    by the same penalty active set as the legacy die, on the part's face points, with the
+//    outward normal n of the part and the target outward displacement u.n = g0(s) - delta (s
+//    the distance from the die's centre along the part; no contact beyond a flat punch's
+//    edge). Every die part is its own contact set; several dies are solved together.
+//    Force control (die.force = P): for a fixed active set the solution is affine in the
+//    indentations, u = u_0 + sum_k delta_k u_k (one factorization, one solve per force-
+//    controlled die), and the deltas that give the asked forces follow from a small linear
+//    system at every active-set step: no outer iteration. The force on a die is the penalty
+//    reaction P = 2 pi int_A kappa (u.n - g0 + delta) r ds (consistent: it is the residual of
+//    the discrete equilibrium at the die's dofs); force_trace = -2 pi int (n.s_h n) r ds over
+//    the part. The zone is the interval of active points around the centre; each free end
+//    is located as the legacy c (square-root law of a smooth edge, else linear gap).
+//    Mesh: after the L global refinements, the cells within half the zone's length of the
+//    zone are refined until they are die_zone_cells * 2^L across the zone, then the cells at
+//    each free end of the zone die_edge_refinements times more (hanging nodes constrained).
+//    Pass 0 refines around an estimate of the zone (indentation: where g0 < delta; force:
+//    Hertz's radius, or the flat face), each edge-fitting pass around the zone of the
+//    previous pass, one level coarser per pass before the last as for the legacy die.
 #pragma once
 
 #include "problem/problem.h"
@@ -119,6 +138,10 @@ namespace fem
     /// Unilateral: after the active-set loop on the unsplit mesh, remesh this many times with
     /// the outer line split and graded at the half-width found, and solve again.
     int edge_fitting_passes = 1;
+    /// Dies on outline parts: cells across the contact zone (times 2^L), and the extra
+    /// halvings of the cells at each free end of the zone (axisymmetric_fem.h, "Dies").
+    int die_zone_cells = 4;
+    int die_edge_refinements = 3;
     int base_cells_r = 4, base_cells_z = 8; ///< level-0 mesh
     double radial_grading = 3.0, axial_grading = 3.0; ///< largest/smallest cell, level 0
     /// Outline problems: cells along the shortest outline edge in the base mesh (h0 = its
@@ -168,6 +191,8 @@ namespace fem
 
   struct PressurePoint
   {
+    double s = 0; ///< distance from the die's centre along the part [m] (legacy: s = z)
+    double r = 0; ///< the point [m]
     double z = 0;
     double p = 0;       ///< penalty traction kappa g_+ (unilateral) or -sigma_rr trace
     double p_trace = 0; ///< -sigma_rr trace
@@ -176,7 +201,12 @@ namespace fem
 
   struct ContactResult
   {
+    std::string part;         ///< the die's part ("outer" for the legacy die)
     std::string method;       ///< "fixed" (bilateral) or "iterate"/"max-force" (penalty)
+    double indentation = 0;   ///< delta [m]: given, or found for the asked force
+    /// A die on an outline part whose zone has two free ends: [s_start, s_end] [m] along the
+    /// part from the centre (half_width is then half its length); a one-edge zone has none.
+    std::optional<std::array<double, 2>> zone;
     bool unilateral = false;
     double half_width = 0;     ///< c [m] (unilateral: square-root law fit at the edge)
     double half_width_gap = 0; ///< c [m] from linear interpolation of the gap (unilateral)
@@ -223,11 +253,13 @@ namespace fem
     /// generator's retries with more cells (fem_reference/README.md). 0 is the normal case.
     unsigned int base_mesh_flat_corners = 0;
     Functionals functionals;
-    std::optional<ContactResult> contact;
+    std::optional<ContactResult> contact; ///< the first die
+    std::vector<ContactResult> other_dies; ///< the second and later dies (outline parts)
     std::vector<FieldSample> samples;
     std::vector<PartReaction> reactions; ///< outline problems: every support part
     /// r-weighted L2 norms over the full body (per radian), when an exact stress is given:
-    /// ||s_h - s|| and ||s||, s = (rr, zz, tt, rz) with the Euclidean norm.
+    /// ||s_h - s|| and ||s|| with the Frobenius norm of the stress tensor (sigma_rz counts
+    /// twice, as in verification/lame_errors.h).
     std::optional<double> stress_l2_error, stress_l2_norm;
     /// max |s_h - s| and max |s| over the components and the Gauss-Lobatto points of
     /// every cell (p + 2 per direction, so cell and domain boundaries are included).

@@ -1,5 +1,7 @@
 #include "fem_reference/fem_result_json.h"
 
+#include <cmath>
+
 namespace fem
 {
   namespace
@@ -76,18 +78,22 @@ namespace fem
                    {"total_s", r.total_seconds}};
     if (r.success || (r.contact && !r.contact->iterations.empty()))
       j["functionals"] = functionals_to_json(r.functionals);
-    if (r.contact)
-      {
-        const ContactResult &c = *r.contact;
-        const double a = problem.geometry.half_length();
-        nlohmann::json contact = {{"method", c.method},
+    // One die in the form of DESIGN.md 7 (`contact` is the first die, `dies` lists them all).
+    auto die_to_json = [&](const ContactResult &c) {
+        nlohmann::json contact = {{"part", c.part},
+                                  {"method", c.method},
                                   {"mode", c.unilateral ? "unilateral-penalty" : "bilateral"},
                                   {"half_width", c.half_width},
-                                  {"half_width_ratio", c.half_width / a},
+                                  {"indentation", c.indentation},
                                   {"force", c.force},
                                   {"force_trace", c.force_trace},
+                                  {"edge_intensity", nullptr}, // not extracted by the FEM yet
                                   {"h_min", c.h_min},
                                   {"max_penetration", c.max_penetration}};
+        if (problem.legacy_cylinder)
+          contact["half_width_ratio"] = c.half_width / problem.geometry.half_length();
+        if (c.zone)
+          contact["zone"] = {(*c.zone)[0], (*c.zone)[1]};
         if (c.unilateral)
           {
             contact["half_width_gap"] = c.half_width_gap;
@@ -113,9 +119,24 @@ namespace fem
         contact["iterations"] = iterations;
         nlohmann::json pressure = nlohmann::json::array();
         for (const PressurePoint &p : c.pressure)
-          pressure.push_back({{"z", p.z}, {"p", p.p}, {"p_trace", p.p_trace}, {"gap", p.gap}});
+          pressure.push_back({{"s", p.s},
+                              {"r", p.r},
+                              {"z", p.z},
+                              {"p", p.p},
+                              {"p_trace", p.p_trace},
+                              {"gap", std::isfinite(p.gap) ? nlohmann::json(p.gap) : nullptr}});
         contact["pressure"] = pressure;
-        j["contact"] = contact;
+        return contact;
+    };
+    if (r.contact)
+      {
+        j["contact"] = die_to_json(*r.contact);
+        if (!problem.legacy_cylinder)
+          {
+            j["dies"] = nlohmann::json::array({j["contact"]});
+            for (const ContactResult &c : r.other_dies)
+              j["dies"].push_back(die_to_json(c));
+          }
       }
     nlohmann::json samples = nlohmann::json::array();
     for (const FieldSample &s : r.samples)

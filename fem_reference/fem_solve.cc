@@ -137,10 +137,24 @@ int main(int argc, char **argv)
       if (!vtu_directory.empty())
         fmt::print(stderr, "fem_solve: wrote {}\n",
                    (std::filesystem::path(vtu_directory) / "fem_solution.vtu").string());
-      if (r.contact)
+      if (r.contact && problem.legacy_cylinder)
         fmt::print(stderr, "fem_solve: c = {:.6g} m (c/a = {:.4f}), P = {:.6g} N (trace {:.6g} N)\n",
                    r.contact->half_width, r.contact->half_width / problem.geometry.half_length(),
                    r.contact->force, r.contact->force_trace);
+      else if (r.contact)
+        {
+          std::vector<fem::ContactResult> dies{*r.contact};
+          dies.insert(dies.end(), r.other_dies.begin(), r.other_dies.end());
+          for (const fem::ContactResult &d : dies)
+            fmt::print(stderr,
+                       "fem_solve: die on {}: c = {:.6g} m{}, delta = {:.6g} m, P = {:.6g} N "
+                       "(trace {:.6g} N)\n",
+                       d.part, d.half_width,
+                       d.zone ? fmt::format(" (zone [{:.6g}, {:.6g}] m along the part)",
+                                            (*d.zone)[0], (*d.zone)[1])
+                              : std::string(),
+                       d.indentation, d.force, d.force_trace);
+        }
       return 0;
     }
   catch (const axisym::InputError &e)
