@@ -1522,8 +1522,13 @@ namespace fem
           // punch is -infinity: an open point).
           const double tol = 1e-9 * problem_.body->outline.size();
           std::vector<std::pair<double, double>> up, down;
+          // Points beyond a flat punch's edge (no die surface: infinite gap) are left out, and
+          // a zone that reaches the edge ends there.
+          const double extent = d.condition.profile.extent();
           for (const auto &[si, gi] : gaps[i])
             {
+              if (!std::isfinite(gi))
+                continue;
               if (si >= -tol)
                 up.emplace_back(std::max(si, 0.0), gi);
               if (si <= tol)
@@ -1532,8 +1537,10 @@ namespace fem
           std::stable_sort(up.begin(), up.end());
           std::stable_sort(down.begin(), down.end());
           const bool has_up = d.frame.s_max > tol, has_down = d.frame.s_min < -tol;
-          const auto [hi, hi_gap] = has_up ? zone_end(up, d.frame.s_max) : std::pair{0.0, 0.0};
-          const auto [lo, lo_gap] = has_down ? zone_end(down, -d.frame.s_min) : std::pair{0.0, 0.0};
+          const auto [hi, hi_gap] =
+            has_up ? zone_end(up, std::min(d.frame.s_max, extent)) : std::pair{0.0, 0.0};
+          const auto [lo, lo_gap] =
+            has_down ? zone_end(down, std::min(-d.frame.s_min, extent)) : std::pair{0.0, 0.0};
           de.zone_lo = -lo, de.zone_hi = hi;
           de.two_edges = has_up && has_down;
           if (de.two_edges)

@@ -1,0 +1,229 @@
+// dies_on_parts: frictionless rigid dies on straight parts of an outline section (issue 23,
+// DESIGN.md 7.1), the FEM reference against closed forms and against independent models.
+// The RFM solves a die only on the hollow-cylinder form so far (die_contact, rfm_vs_fem); its
+// columns here come with the outline contact (issue 23 item 3).
+//
+//   1. Hertz: a rigid paraboloid (R = 0.1 m) pressed with 2 kN on the end face of a solid
+//      steel cylinder (radius and height 23 times the contact radius) on a frictionless
+//      support: the contact radius a = (3 P R / 4 E*)^(1/3) and the peak pressure
+//      p0 = 3 P / (2 pi a^2) of the half-space (Johnson, Contact Mechanics, 4.22-4.23),
+//      against the FEM level L.
+//   2. A flat punch with rounded edges (b = 0.5 mm, rho = 50 mm) pressed 2 um into the same
+//      cylinder: no closed form; c and P against L.
+//   3. A flat punch with a sharp edge (b = 1 mm) pressed 1 um: P against Boussinesq's
+//      half-space 2 E* b delta (the finite column is stiffer), and the pressure at the centre
+//      against Sneddon's P / (2 pi b^2) with the FEM's own P.
+//   4. A ring die (R = 0.05 m, 2 um) at the mid-length of a shaft, modelled whole (two free
+//      edges) and as the mirrored half (one free edge): both ends of the zone against the
+//      half's c, and c against plane-strain Hertz for the ring's line load.
+//   5. The tolerance gate (verification/tolerances.json, entry "dies_on_parts").
+//
+// Sample run:
+//   build/bin/dies_on_parts --mode quick --output-dir build/verification-output
+#include "fem_reference/axisymmetric_fem.h"
+#include "problem/problem.h"
+#include "verification/driver.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace
+{
+  constexpr double pi = 3.14159265358979323846;
+
+  fem::FemResult solve_fem(const axisym::Problem &problem, const int level,
+                           const std::string &what)
+  {
+    fem::FemOptions o = fem::options_from_problem(problem);
+    o.refinements = level;
+    o.progress = false;
+    fem::FemResult r = fem::solve(problem, o);
+    if (!r.success || !r.contact)
+      throw verification::NumericalFailure(what + ", L = " + std::to_string(level) + ": " +
+                                           r.message);
+    return r;
+  }
+
+  double peak_pressure(const fem::ContactResult &c)
+  {
+    double p0 = 0;
+    for (const fem::PressurePoint &p : c.pressure)
+      p0 = std::max(p0, p.p);
+    return p0;
+  }
+
+  /// The contact pressure at the point nearest the centre (s = 0, off the axis).
+  double centre_pressure(const fem::ContactResult &c)
+  {
+    const auto it = std::min_element(c.pressure.begin(), c.pressure.end(),
+                                     [](const auto &a, const auto &b) {
+                                       return std::abs(a.s) < std::abs(b.s);
+                                     });
+    return it == c.pressure.end() ? 0.0 : it->p;
+  }
+
+  double e_star(const axisym::Problem &p)
+  {
+    const double nu = p.material.poisson_ratio;
+    return p.material.youngs_modulus / (1 - nu * nu);
+  }
+
+  /// The pressure profile of the finest level (for the report's figure): s, p, p_trace.
+  nlohmann::json profile(const fem::ContactResult &c)
+  {
+    nlohmann::json out = nlohmann::json::array();
+    for (const fem::PressurePoint &p : c.pressure)
+      out.push_back({{"s", p.s}, {"p", p.p}, {"p_trace", p.p_trace}});
+    return out;
+  }
+} // namespace
+
+nlohmann::json run(const verification::DriverContext &context)
+{
+  const bool full = context.full();
+  nlohmann::json results = {{"driver", "dies_on_parts"}, {"mode", context.mode}};
+  const std::vector<int> levels = full ? std::vector<int>{2, 3, 4} : std::vector<int>{2, 3};
+
+  // 1. Hertz.
+  {
+    const std::string file = "hertz_paraboloid_force.json";
+    const axisym::Problem problem = axisym::read_problem_file(context.problem_path(file));
+    const axisym::DieCondition &die = problem.body->conditions.at("top").die;
+    const double force = *die.force, radius = die.profile.radius;
+    const double a = std::cbrt(3 * force * radius / (4 * e_star(problem)));
+    const double p0 = 3 * force / (2 * pi * a * a);
+    nlohmann::json c = {{"problem_file", "verification/problems/" + file},
+                        {"hertz", {{"contact_radius", a}, {"peak_pressure", p0},
+                                   {"indentation_half_space", a * a / radius}}}};
+    fmt::print("== Hertz: paraboloid R = {} m, P = {} N on a solid cylinder; a = {:.6e} m, "
+               "p0 = {:.6e} Pa ==\n",
+               radius, force, a, p0);
+    fmt::print("FEM Q2: {:>2} {:>8} {:>13} {:>10} {:>13} {:>10} {:>12} {:>8}\n", "L", "dofs",
+               "a [m]", "a err", "p0 [Pa]", "p0 err", "delta [m]", "time [s]");
+    fem::FemResult last;
+    for (const int level : levels)
+      {
+        last = solve_fem(problem, level, "Hertz");
+        const fem::ContactResult &k = *last.contact;
+        const double a_err = (k.half_width - a) / a, p_err = (peak_pressure(k) - p0) / p0;
+        fmt::print("        {:>2} {:>8} {:>13.6e} {:>10.2e} {:>13.6e} {:>10.2e} {:>12.5e} {:>8.2f}\n",
+                   level, last.n_dofs, k.half_width, a_err, peak_pressure(k), p_err,
+                   k.indentation, last.total_seconds);
+        c["fem"]["L" + std::to_string(level)] = {
+          {"dofs", last.n_dofs},        {"contact_radius", k.half_width},
+          {"peak_pressure", peak_pressure(k)}, {"indentation", k.indentation},
+          {"force", k.force},           {"force_trace", k.force_trace},
+          {"contact_radius_error_relative", std::abs(a_err)},
+          {"peak_pressure_error_relative", std::abs(p_err)},
+          {"seconds", last.total_seconds}};
+      }
+    c["fem"]["finest"] = c["fem"]["L" + std::to_string(levels.back())];
+    c["fem"]["pressure"] = profile(*last.contact);
+    results["hertz"] = c;
+  }
+
+  // 2. Flat punch with rounded edges, and 3. with a sharp edge: c and P against L.
+  auto punch = [&](const std::string &key, const std::string &file, const std::string &title) {
+    const axisym::Problem problem = axisym::read_problem_file(context.problem_path(file));
+    nlohmann::json c = {{"problem_file", "verification/problems/" + file}};
+    fmt::print("\n== {} ==\n", title);
+    fmt::print("FEM Q2: {:>2} {:>8} {:>13} {:>13} {:>13} {:>8}\n", "L", "dofs", "c [m]", "P [N]",
+               "p(0) [Pa]", "time [s]");
+    double c_prev = 0, p_prev = 0;
+    fem::FemResult last;
+    for (const int level : levels)
+      {
+        last = solve_fem(problem, level, key);
+        const fem::ContactResult &k = *last.contact;
+        fmt::print("        {:>2} {:>8} {:>13.6e} {:>13.6e} {:>13.6e} {:>8.2f}\n", level,
+                   last.n_dofs, k.half_width, k.force, centre_pressure(k), last.total_seconds);
+        nlohmann::json &l = c["fem"]["L" + std::to_string(level)];
+        l = {{"dofs", last.n_dofs},         {"half_width", k.half_width},
+             {"force", k.force},            {"force_trace", k.force_trace},
+             {"centre_pressure", centre_pressure(k)}, {"seconds", last.total_seconds}};
+        if (level != levels.front())
+          {
+            c["fem"]["half_width_change_last_relative"] = std::abs(k.half_width - c_prev) / k.half_width;
+            c["fem"]["force_change_last_relative"] = std::abs(k.force - p_prev) / k.force;
+          }
+        c_prev = k.half_width, p_prev = k.force;
+      }
+    c["fem"]["finest"] = c["fem"]["L" + std::to_string(levels.back())];
+    c["fem"]["pressure"] = profile(*last.contact);
+    return std::pair{c, last};
+  };
+  {
+    auto [c, last] = punch("flat_rounded", "flat_rounded_punch_indentation.json",
+                           "Flat punch with rounded edges (b = 0.5 mm, rho = 50 mm), 2 um");
+    results["flat_rounded"] = c;
+  }
+  {
+    auto [c, last] = punch("flat", "flat_punch_indentation.json",
+                           "Flat punch with a sharp edge (b = 1 mm), 1 um");
+    const axisym::Problem problem =
+      axisym::read_problem_file(context.problem_path("flat_punch_indentation.json"));
+    const axisym::DieCondition &die = problem.body->conditions.at("top").die;
+    const double b = die.profile.radius, delta = *die.indentation;
+    const double boussinesq = 2 * e_star(problem) * b * delta;
+    const double force = last.contact->force;
+    const double sneddon_centre = force / (2 * pi * b * b);
+    c["boussinesq_force"] = boussinesq;
+    c["force_over_boussinesq"] = force / boussinesq;
+    c["centre_pressure_over_sneddon"] = centre_pressure(*last.contact) / sneddon_centre;
+    fmt::print("P / (2 E* b delta) = {:.4f} (the half-space's; the finite column is stiffer); "
+               "p(0) / (P / 2 pi b^2) = {:.4f}\n",
+               force / boussinesq, centre_pressure(*last.contact) / sneddon_centre);
+    results["flat"] = c;
+  }
+
+  // 4. Ring die on a shaft: whole (two free edges) against the mirrored half.
+  {
+    const std::string file = "ring_die_shaft.json";
+    const axisym::Problem whole = axisym::read_problem_file(context.problem_path(file));
+    // The mirrored half: z in [0, h] with the centre on the symmetry plane z = 0.
+    nlohmann::json half_json = whole.source;
+    half_json["geometry"]["outline"][0]["start"][1] = 0.0;
+    half_json["geometry"]["outline"][1]["line_to"][1] = 0.0;
+    half_json["geometry"]["outline"][4]["line_to"][1] = 0.0;
+    half_json["boundary"]["side"]["die"].erase("center");
+    const axisym::Problem half = axisym::parse_problem(half_json);
+    const int level = levels.back();
+    const fem::FemResult fw = solve_fem(whole, level, "ring die (whole)");
+    const fem::FemResult fh = solve_fem(half, level, "ring die (half)");
+    const auto [lo, hi] = fw.contact->zone.value_or(std::array<double, 2>{0.0, 0.0});
+    const double c_half = fh.contact->half_width;
+    const double r = whole.body->conditions.at("side").die.center.r;
+    const double p_line = fw.contact->force / (2 * pi * r);
+    const double b_line = std::sqrt(4 * p_line * whole.body->conditions.at("side").die.profile.radius /
+                                    (pi * e_star(whole)));
+    nlohmann::json c = {{"problem_file", "verification/problems/" + file},
+                        {"level", level},
+                        {"whole", {{"zone", {lo, hi}}, {"force", fw.contact->force},
+                                   {"dofs", fw.n_dofs}, {"seconds", fw.total_seconds}}},
+                        {"half", {{"half_width", c_half}, {"force", fh.contact->force},
+                                  {"dofs", fh.n_dofs}, {"seconds", fh.total_seconds}}},
+                        {"start_vs_half_relative", std::abs(-lo - c_half) / c_half},
+                        {"end_vs_half_relative", std::abs(hi - c_half) / c_half},
+                        {"force_vs_half_relative",
+                         std::abs(fw.contact->force - 2 * fh.contact->force) / fw.contact->force},
+                        {"plane_strain_hertz_half_width", b_line}};
+    fmt::print("\n== Ring die (R = 0.05 m, 2 um) at the mid-length of a shaft, FEM L = {} ==\n",
+               level);
+    fmt::print("whole: zone [{:.6e}, {:.6e}] m, P = {:.6g} N; mirrored half: c = {:.6e} m, "
+               "2 P = {:.6g} N; plane-strain Hertz b = {:.6e} m\n",
+               lo, hi, fw.contact->force, c_half, 2 * fh.contact->force, b_line);
+    results["ring"] = c;
+  }
+  return results;
+}
+
+int main(int argc, char **argv)
+{
+  return verification::run_driver(argc, argv, "dies_on_parts",
+                                  "Dies on parts of outline sections: the FEM against closed "
+                                  "forms and independent models",
+                                  run);
+}
