@@ -75,6 +75,7 @@ namespace rfm
                              const SolverOptions &solver_options)
     : material_(problem.material)
     , loads_(problem.body_loads)
+    , mirrored_(problem.body->mirrored)
     , structures_(*problem.body, (options.validate(), options.degree))
     , basis_(basis_of(problem.body->outline, options.degree, options.degree))
   {
@@ -86,6 +87,13 @@ namespace rfm
     qo.n_points = 2 * options.degree + options.extra_gauss_points;
     quadrature_ = section_gauss(problem.body->outline, qo);
     edge_quadrature_ = edge_gauss(problem.body->outline, qo.n_points);
+    // A mirrored section stands for itself and its image in z = 0: every integral twice (the
+    // system scales as a whole; the functionals and forces refer to the whole body).
+    if (problem.body->mirrored)
+      {
+        quadrature_.weights *= 2.0;
+        edge_quadrature_.weights *= 2.0;
+      }
     std::array<Eigen::MatrixXd, 2> gram_u;
     const ReissnerSystem sys = assemble(gram_u);
     assembly_s_ = seconds_since(t0);
@@ -270,6 +278,19 @@ namespace rfm
   FieldValues OutlineModel::evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
                                      const Eigen::Ref<const Eigen::VectorXd> &z) const
   {
+    if (mirrored_ && (z.array() < 0.0).any())
+      {
+        // The image z < 0 of a mirrored section: u_z, sigma_rz and gamma_rz are odd in z.
+        FieldValues f = evaluate(r, z.cwiseAbs());
+        for (Eigen::Index k = 0; k < z.size(); ++k)
+          if (z[k] < 0)
+            {
+              f.u(k, 1) = -f.u(k, 1);
+              f.sigma(k, rz) = -f.sigma(k, rz);
+              f.strain(k, rz) = -f.strain(k, rz);
+            }
+        return f;
+      }
     const Eigen::Index n = basis_.n_basis_functions(), n_b = structures_.n_boundary_columns();
     const BasisValues b = basis_.evaluate(r, z);
     const OutlineStressValues s = structures_.stress(r, z);

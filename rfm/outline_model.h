@@ -3,6 +3,10 @@
 // section (section_basis.h), the curved-triangle quadrature of the section (section_quadrature.h), the resolving system of
 // Reissner's functional (assembly.h, same blocks) and its solution.
 //
+// A mirrored body (axisym::Body::mirrored, the legacy hollow cylinder's half z >= 0) counts
+// every integral twice, so that functionals refer to the whole body, and is evaluated at z < 0
+// by mirroring.
+//
 // Unknowns: q_s = (q_rr, q_zz, q_tt, q_rz, q_b): N each and the boundary columns B_e last;
 // q_u = (q_r, q_z), N each.
 //
@@ -67,7 +71,8 @@ namespace rfm
     /// Unknowns after the orthonormalization (stress, displacement).
     std::array<Eigen::Index, 2> n_kept_unknowns() const { return n_kept_; }
 
-    /// Fields at points of the section. Precondition: ok().
+    /// Fields at points of the section, and of its image z < 0 when the body is mirrored
+    /// (axisym::Body::mirrored: the legacy hollow cylinder's half section). Precondition: ok().
     FieldValues evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
                          const Eigen::Ref<const Eigen::VectorXd> &z) const;
     Functionals functionals() const;
@@ -79,6 +84,7 @@ namespace rfm
 
     Material material_;
     axisym::BodyLoads loads_; ///< body force in p_u and W, thermal strain in p_s and the functionals
+    bool mirrored_ = false;   ///< integrals twice (the section and its image in z = 0)
     OutlineStructures structures_;
     SectionPolynomialBasis basis_;
     Quadrature2D quadrature_;
