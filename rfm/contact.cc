@@ -286,6 +286,50 @@ namespace rfm
             {"seconds", it.assembly_s + it.solve_s}};
   }
 
+  nlohmann::json to_json(const ContactResult &result, const Problem &problem,
+                         const int pressure_points)
+  {
+    const double a = problem.geometry.half_length();
+    nlohmann::json out = {{"method", result.method}, {"message", result.message}};
+    nlohmann::json iterations = nlohmann::json::array();
+    for (const ContactIterate &it : result.history)
+      iterations.push_back(to_json(it, problem));
+    out["iterations"] = iterations;
+    if (!result.success)
+      return out;
+    const ContactIterate &f = result.final;
+    out["half_width"] = f.half_width;
+    out["half_width_ratio"] = f.half_width / a;
+    out["force"] = f.force;
+    out["force_trace"] = f.force_trace;
+    out["edge_intensity"] = std::isfinite(f.edge_intensity) ? nlohmann::json(f.edge_intensity)
+                                                            : nlohmann::json(nullptr);
+    if (result.half_width_range)
+      out["half_width_range"] = {result.half_width_range->first, result.half_width_range->second};
+    if (result.edge_intensity_root)
+      out["edge_intensity_root"] = *result.edge_intensity_root;
+    out["conditions"] = to_json(f, problem);
+    if (pressure_points <= 0)
+      return out;
+    // p: the trace -sigma_rr(R2, z); p_consistent: the consistent reactions.
+    nlohmann::json pressure = nlohmann::json::array();
+    const double c = f.half_width;
+    const auto trace = contact_pressure(*result.model, c, pressure_points);
+    const auto consistent =
+      c < a ? consistent_contact_pressure(*result.model, problem, c, pressure_points,
+                                          default_pressure_moments)
+            : decltype(trace){};
+    for (std::size_t i = 0; i < trace.size(); ++i)
+      {
+        nlohmann::json e = {{"z", trace[i].first}, {"p", trace[i].second}};
+        if (!consistent.empty())
+          e["p_consistent"] = consistent[i].second;
+        pressure.push_back(e);
+      }
+    out["pressure"] = pressure;
+    return out;
+  }
+
   ContactIterate check_contact(const Problem &problem, const RfmModel &model,
                                const ContactOptions &options)
   {

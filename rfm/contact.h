@@ -144,6 +144,19 @@ namespace rfm
   /// to delta), the two conditions, the phase and the time [s].
   nlohmann::json to_json(const ContactIterate &it, const axisym::Problem &problem);
 
+  /// A contact solve as JSON: the `contact` object of rfm_solve's result file (DESIGN.md 7;
+  /// its keys are a public contract), from which the verification drivers take their run
+  /// records. `method`, `message` and every iterate in order (`iterations`, as above); on
+  /// success also c [m] (`half_width`), c/a, P and its trace [N], K [Pa m^1/2] (`edge_intensity`,
+  /// null when not computed), the last bracket of c [m] (`half_width_range`, when the method
+  /// has one), the root of K [m] (`edge_intensity_root`, edge-intensity), the accepted iterate
+  /// (`conditions`), and for pressure_points > 0 the pressure at that many z in [0, c]
+  /// (`pressure`: `z`, the trace `p` and, when c < a, the consistent reactions
+  /// `p_consistent`). Precondition: result.model set when result.success and
+  /// pressure_points > 0.
+  nlohmann::json to_json(const ContactResult &result, const axisym::Problem &problem,
+                         int pressure_points);
+
   /// Contact pressure p(z) = -sigma_rr(R2, z) for z in [0, c] at n points (the trace of
   /// the stress field, with the edge modes).
   std::vector<std::pair<double, double>> contact_pressure(const RfmModel &model, double c, int n);

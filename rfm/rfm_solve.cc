@@ -70,47 +70,6 @@ namespace
     discretization["degree_sequence"] = seq;
   }
 
-  nlohmann::json contact_to_json(const axisym::Problem &problem, const rfm::ContactResult &c)
-  {
-    const double a = problem.geometry.half_length();
-    nlohmann::json out = {{"method", c.method}, {"message", c.message}};
-    nlohmann::json iterations = nlohmann::json::array();
-    for (const auto &it : c.history)
-      iterations.push_back(rfm::to_json(it, problem));
-    out["iterations"] = iterations;
-    if (!c.success)
-      return out;
-    out["half_width"] = c.final.half_width;
-    out["half_width_ratio"] = c.final.half_width / a;
-    out["force"] = c.final.force;
-    out["force_trace"] = c.final.force_trace;
-    out["edge_intensity"] = std::isfinite(c.final.edge_intensity)
-                              ? nlohmann::json(c.final.edge_intensity)
-                              : nlohmann::json(nullptr);
-    if (c.half_width_range)
-      out["half_width_range"] = {c.half_width_range->first, c.half_width_range->second};
-    if (c.edge_intensity_root)
-      out["edge_intensity_root"] = *c.edge_intensity_root;
-    out["conditions"] = rfm::to_json(c.final, problem);
-    // p: the trace -sigma_rr(R2, z); p_consistent: the consistent reactions (contact.h).
-    nlohmann::json pressure = nlohmann::json::array();
-    const double c_final = c.final.half_width;
-    const auto trace = rfm::contact_pressure(*c.model, c_final, 101);
-    const auto consistent =
-      c_final < a ? rfm::consistent_contact_pressure(*c.model, problem, c_final, 101,
-                                                     rfm::default_pressure_moments)
-                  : decltype(trace){};
-    for (std::size_t i = 0; i < trace.size(); ++i)
-      {
-        nlohmann::json e = {{"z", trace[i].first}, {"p", trace[i].second}};
-        if (!consistent.empty())
-          e["p_consistent"] = consistent[i].second;
-        pressure.push_back(e);
-      }
-    out["pressure"] = pressure;
-    return out;
-  }
-
   // P(c) at curve_points zone widths in (0, a] (bilateral solves).
   nlohmann::json force_curve(const axisym::Problem &problem)
   {
@@ -328,7 +287,7 @@ int main(int argc, char **argv)
       else if (problem.die)
         {
           contact = rfm::solve_contact(problem, problem.rfm, rfm::ContactOptions{});
-          result["contact"] = contact_to_json(problem, contact);
+          result["contact"] = rfm::to_json(contact, problem, 101);
           model_ptr = std::move(contact.model);
         }
       else

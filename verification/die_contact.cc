@@ -152,21 +152,22 @@ nlohmann::json run(const verification::DriverContext &context)
                  run.method, run.degree, (run.degree + 1) * (run.degree + 1),
                  run.doubled ? "x2" : "x1", f.half_width / a, range, f.force, f.force_trace,
                  f.castigliano, f.reissner, f.lagrange, r.history.size(), seconds);
+      const nlohmann::json c = rfm::to_json(r, base, 0);
       nlohmann::json j = {{"method", run.method},
                           {"degree", run.degree},
                           {"N", (run.degree + 1) * (run.degree + 1)},
                           {"quadrature", run.doubled ? "doubled" : "default"},
-                          {"final", rfm::to_json(f, base)},
-                          {"message", r.message},
-                          {"n_solves", r.history.size()},
+                          {"final", c["conditions"]},
+                          {"message", c["message"]},
+                          {"n_solves", c["iterations"].size()},
                           {"seconds", seconds}};
-      if (r.half_width_range)
-        j["half_width_range_ratio"] = {r.half_width_range->first / a,
-                                       r.half_width_range->second / a};
-      if (r.edge_intensity_root)
-        j["edge_intensity_root_ratio"] = *r.edge_intensity_root / a;
-      for (const auto &it : r.history)
-        j["history"].push_back(rfm::to_json(it, base));
+      if (c.contains("half_width_range"))
+        j["half_width_range_ratio"] = {c["half_width_range"][0].get<double>() / a,
+                                       c["half_width_range"][1].get<double>() / a};
+      if (c.contains("edge_intensity_root"))
+        j["edge_intensity_root_ratio"] = c["edge_intensity_root"].get<double>() / a;
+      if (!c["iterations"].empty())
+        j["history"] = c["iterations"];
       const std::string key = run.method + "_p" + std::to_string(run.degree) +
                               (run.doubled ? "_quad2" : "");
       results["runs"][key] = j;
