@@ -17,9 +17,14 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-PAPER_TABLE1 = {"N": [1, 9, 64], "castigliano": [-2.028, -2.357, -2.359],
-                "reissner": [-2.028, -2.357, -2.359], "lagrange": [-1.446, -2.347, -2.359],
-                "exact": -2.359}
+# The paper's numbers (Tables 1-3 and the text), written once for the drivers and this report.
+PAPER_TABLES = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, "verification",
+                            "paper_tables.json")
+
+
+def paper_at(table, key, iteration):
+    """The paper's `key` at iteration i of one of its tables (paper_tables.json)."""
+    return table[key][table["iteration"].index(iteration)]
 
 
 def load(data_dir, name):
@@ -61,7 +66,7 @@ def degrees_of(case):
     return rows
 
 
-def lame_section(lame, cmp, out_dir):
+def lame_section(lame, cmp, paper_tables, out_dir):
     md = ["## 1. Lame cylinder: RFM against the exact solution", ""]
     md.append("Hollow cylinder under inner/outer pressure with free ends; exact solution "
               "`verification/lame_exact.h` (DESIGN.md section 4.1). RFM on the half section "
@@ -84,9 +89,13 @@ def lame_section(lame, cmp, out_dir):
         md.append(f"| {label} [J] | " + " | ".join(f"{r[key]:.6f}" for r in pick) +
                   f" | {paper['exact_functional']:.6f} |")
     md.append("")
+    t1 = paper_tables["table1"]
+    listed = lambda key: ", ".join(map(str, t1[key]))
+    phi_cr = (f"Phi_C = Phi_R = {listed('castigliano')}" if t1["castigliano"] == t1["reissner"] else
+              f"Phi_C = {listed('castigliano')}; Phi_R = {listed('reissner')}")
     md.append("The paper's Table 1 (its pressures and material are not stated, so only the "
-              "behaviour compares): N = 1, 9, 64: Phi_C = Phi_R = -2.028, -2.357, -2.359; "
-              "Phi_L = -1.446, -2.347, -2.359; exact -2.359. Ours shows the same pattern: "
+              f"behaviour compares): N = {listed('N')}: {phi_cr}; "
+              f"Phi_L = {listed('lagrange')}; exact {t1['exact']}. Ours shows the same pattern: "
               "Phi_C = Phi_R at every N (to rounding), Phi_L above the exact value and "
               "converging from above.")
     md.append("")
@@ -197,7 +206,7 @@ def lame_stress_components_figure(rfm_prof, fem_prof, fem_key, where, name, out_
     return save(fig, out_dir, name)
 
 
-def die_section(die, out_dir):
+def die_section(die, paper_tables, out_dir):
     md = ["## 2. Die contact: the paper's problem", ""]
     prob = die["problem"]
     g, m, d = prob["geometry"], prob["material"], prob["die"]
@@ -218,7 +227,11 @@ def die_section(die, out_dir):
         p = int(key[1:])
         md.append(f"| {p} | {(p+1)**2} | {r['force']/1e3:.3f} | {r['force_trace']/1e3:.3f} | "
                   f"{r['castigliano']:.6f} | {r['reissner']:.6f} | {r['lagrange']:.6f} |")
-    md.append("| paper | | 128.7 | | 0.0176 | 0.0176 | 0.0176 |")
+    t2, t3 = paper_tables["table2"], paper_tables["table3"]
+    final = paper_tables["final_iteration"]["value"]
+    c_paper = paper_tables["half_width_ratio"]["value"]
+    md.append(f"| paper | | {paper_at(t3, 'force_kN', 0)} | | {paper_at(t2, 'castigliano', 0)} | "
+              f"{paper_at(t2, 'reissner', 0)} | {paper_at(t2, 'lagrange', 0)} |")
     md.append("")
 
     # Runs.
@@ -243,7 +256,9 @@ def die_section(die, out_dir):
         md.append(f"| {r['method']} | {r['degree']} | {r['N']} | {r['quadrature']} | {f['half_width_ratio']:.4f} | "
                   f"{rng} | {f['force']/1e3:.3f} | {f['force_trace']/1e3:.3f} | {f['castigliano']:.6f} | "
                   f"{f['reissner']:.6f} | {f['lagrange']:.6f} | {r['n_solves']} | {r['seconds']:.2f} |")
-    md.append("| paper | | | | 0.543 | claims 11.6 % | 195.2 | | 0.0135 | 0.0132 | 0.0133 | | |")
+    md.append(f"| paper | | | | {c_paper} | claims {paper_tables['half_width_error_bound_percent']['value']} % | "
+              f"{paper_at(t3, 'force_kN', final)} | | {paper_at(t2, 'castigliano', final)} | "
+              f"{paper_at(t2, 'reissner', final)} | {paper_at(t2, 'lagrange', final)} | | |")
     md.append("")
     md.append("Stability (absolute change of c/a, relative change of P): `" + json.dumps(die["stability"]) + "`; "
               "doubling delta: `" + json.dumps(die["delta_scaling"]) + "`.")
@@ -260,12 +275,14 @@ def die_section(die, out_dir):
     for i, h in enumerate(hist):
         md.append(f"| {i} | {h['phase']} | {h['half_width_ratio']:.4f} | {h['force']/1e3:.2f} | {h['force_trace']/1e3:.2f} | "
                   f"{h['castigliano']:.5f} | {h['reissner']:.5f} | {h['lagrange']:.5f} | {h['conditions_hold']} |")
-    t2, t3 = die["paper"]["table2"], die["paper"]["table3"]
     md.append("")
+    check = t3["iteration"][-1]
     md.append("Paper, Table 2 (iterations " + ", ".join(map(str, t2["iteration"])) + "): Phi_C " +
               ", ".join(map(str, t2["castigliano"])) + "; Phi_R " + ", ".join(map(str, t2["reissner"])) +
-              "; Phi_L " + ", ".join(map(str, t2["lagrange"])) + ". Table 3 (iterations 0-5, 5 = check at "
-              "c = 0.48 a): P = " + ", ".join(map(str, t3["force_kN"])) + " kN; final c = 0.543 a.")
+              "; Phi_L " + ", ".join(map(str, t2["lagrange"])) +
+              f". Table 3 (iterations {t3['iteration'][0]}-{check}, {check} = check at "
+              f"c = {paper_tables['check_half_width_ratio']['value']} a): P = " +
+              ", ".join(map(str, t3["force_kN"])) + f" kN; final c = {c_paper} a.")
     md.append("")
 
     # Fig. 3 analog.
@@ -293,7 +310,8 @@ def die_section(die, out_dir):
     mf = die["runs"][key.replace("iterate", "max-force")]["final"]
     ax.plot([mf["half_width_ratio"]], [mf["force"] / 1e3], "r*", ms=10,
             label=f"max-force: c = {mf['half_width_ratio']:.3f} a, P = {mf['force']/1e3:.1f} kN")
-    ax.plot([0.543], [195.2], "kx", ms=8, label="paper: 0.543 a, 195.2 kN")
+    p_paper = paper_at(t3, "force_kN", final)
+    ax.plot([c_paper], [p_paper], "kx", ms=8, label=f"paper: {c_paper} a, {p_paper} kN")
     decorate(ax, "contact half-width c / a [-]", "contact force P [kN]", "P(c) of the bilateral problem (p = 12, N = 169)", legend_size=7)
     f2 = save(fig, out_dir, "die_force_curve.png")
 
@@ -358,7 +376,7 @@ def convergence_in_p_section(rows, out_dir):
     return md
 
 
-def comparison_section(cmp, die, out_dir):
+def comparison_section(cmp, die, paper_tables, out_dir):
     md = ["## 3. RFM against the deal.II FEM reference", ""]
     md.append("Both methods read the same problem files. FEM: axisymmetric Q1/Q2 on gmsh quadrilateral meshes "
               "of the same half section (graded toward r = R2 and the contact edge), UMFPACK, penalty "
@@ -438,7 +456,9 @@ def comparison_section(cmp, die, out_dir):
         rng = interval_cell(r)
         md.append(f"| RFM {r['method']} | p = {r['degree']} (N = {r['N']}) | {r['half_width_ratio']:.5f} | {rng} | "
                   f"{r['force']/1e3:.4f} | {r['force_error_vs_fem']:.1e} | {r['seconds']:.2f} |")
-    md.append("| paper | | 0.543 | | 195.2 | | |")
+    c_paper = paper_tables["half_width_ratio"]["value"]
+    p_paper = paper_at(paper_tables["table3"], "force_kN", paper_tables["final_iteration"]["value"])
+    md.append(f"| paper | | {c_paper} | | {p_paper} | | |")
     md.append("")
     md.append(f"The FEM reference (finest level) gives c = {ag['fem_half_width_ratio']:.4f} a and P = {ag['fem_force']/1e3:.3f} kN "
               f"(last refinement changed P by {ag['fem_finest_change_last_refinement_force']:.1e} and c/a by "
@@ -457,7 +477,7 @@ def comparison_section(cmp, die, out_dir):
               "into which the unresolved edge field leaks, lies 0.4-0.8 % above). The paper's iteration checks "
               "conditions 1.2 and 1.3 on the field with its edge term recovered from the interaction integral "
               "(on the raw traces it stopped at the root of the coefficient, 0.8 % above). "
-              "The paper's c = 0.543 a is 4.6 % above the FEM value and its 195.2 kN 1.3 % above; our trace-integral P "
+              f"The paper's c = {c_paper} a is 4.6 % above the FEM value and its {p_paper} kN 1.3 % above; our trace-integral P "
               "(eq. 4.6) shows the same upward bias as the paper's.")
     md.append("")
     if "bilateral_curve" in d:
@@ -958,7 +978,11 @@ def main():
     ap.add_argument("--data", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("--build-config", required=True)
+    ap.add_argument("--paper-tables", default=PAPER_TABLES,
+                    help="the paper's numbers (default: verification/paper_tables.json)")
     args = ap.parse_args()
+    with open(args.paper_tables) as f:
+        paper_tables = json.load(f)
 
     with open(args.build_config) as f:
         config = json.load(f)
@@ -990,11 +1014,11 @@ def main():
               "while the other core ran another driver.")
     md.append("")
     if lame:
-        md += lame_section(lame, cmp, args.out)
+        md += lame_section(lame, cmp, paper_tables, args.out)
     if die:
-        md += die_section(die, args.out)
+        md += die_section(die, paper_tables, args.out)
     if cmp:
-        md += comparison_section(cmp, die, args.out)
+        md += comparison_section(cmp, die, paper_tables, args.out)
     bench = load(args.data, "benchmark_rfm.json")
     bench2 = load(args.data, "benchmark_rfm_2threads.json")
     if bench:
