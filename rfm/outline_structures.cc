@@ -244,6 +244,31 @@ namespace rfm
             label[r0] = n_stress_chains_++;
           stress_chain_[i] = label[r0];
         }
+      // Lone straight S edges along r or z prescribe two stress components only; the others
+      // get the boundary columns, numbered in order.
+      std::vector<int> chain_size(n_stress_chains_, 0);
+      for (const int c : stress_chain_)
+        ++chain_size[c];
+      stress_kind_.assign(stress_edges_.size(), StressEdge::general);
+      boundary_slot_.assign(stress_edges_.size(), -1);
+      n_general_ = 0;
+      for (std::size_t i = 0; i < stress_edges_.size(); ++i)
+        {
+          const OutlineEdge &edge = edges[stress_edges_[i]];
+          const axisym::Point n = edge.outward_normal_at(0.5);
+          if (edge.kind == OutlineEdge::Kind::line && chain_size[stress_chain_[i]] == 1)
+            {
+              if (std::abs(std::abs(n.r) - 1.0) < 1e-12)
+                stress_kind_[i] = StressEdge::normal_r;
+              else if (std::abs(std::abs(n.z) - 1.0) < 1e-12)
+                stress_kind_[i] = StressEdge::normal_z;
+            }
+          if (stress_kind_[i] == StressEdge::general)
+            boundary_slot_[i] = n_general_++;
+        }
+      chain_kind_.assign(n_stress_chains_, StressEdge::general);
+      for (std::size_t i = 0; i < stress_edges_.size(); ++i)
+        chain_kind_[stress_chain_[i]] = stress_kind_[i]; // a lone edge's kind, else general
     }
 
     // Which Y edges each S edge needs the shear factor for: T_e or s0_e has an rz component
@@ -353,6 +378,42 @@ namespace rfm
     return omega_y + w > 0.0 ? omega_y / (omega_y + w) : 0.0;
   }
 
+  double OutlineStructures::blend_normal(const std::vector<double> &w, std::vector<double> &weight,
+                                         const StressEdge skip, const double r, const double z,
+                                         const int component) const
+  {
+    const std::size_t n_s = stress_edges_.size();
+    double den = 0.0;
+    for (std::size_t e = 0; e < n_s; ++e)
+      {
+        weight[e] = 0.0;
+        if (stress_kind_[e] == skip)
+          continue;
+        double p = 1.0;
+        for (std::size_t f = 0; f < n_s; ++f)
+          if (f != e && stress_kind_[f] != skip)
+            p *= w[f];
+        den += (weight[e] = p);
+      }
+    if (den > 0.0)
+      for (double &x : weight)
+        x /= den;
+    else
+      {
+        // On a corner of two edges of the set: shared equally.
+        double zeros = 0.0;
+        for (std::size_t e = 0; e < n_s; ++e)
+          zeros += stress_kind_[e] != skip && w[e] == 0.0;
+        for (std::size_t e = 0; e < n_s; ++e)
+          weight[e] = stress_kind_[e] != skip && w[e] == 0.0 ? 1.0 / zeros : 0.0;
+      }
+    double value = 0.0;
+    for (std::size_t e = 0; e < n_s; ++e)
+      if (weight[e] != 0.0)
+        value += weight[e] * particular(stress_edges_[e], r, z)[component];
+    return value;
+  }
+
   // 3. Structures at points.
   OutlineStressValues OutlineStructures::stress(const Eigen::Ref<const Eigen::VectorXd> &r,
                                                 const Eigen::Ref<const Eigen::VectorXd> &z) const
@@ -364,7 +425,7 @@ namespace rfm
     v.s0.setZero(n, n_stress_components);
     for (auto &b : v.boundary)
       b.setZero(n, n_boundary_columns());
-    std::vector<double> w(n_s), weight(n_s), chain_omega;
+    std::vector<double> w(n_s), weight(n_s), weight_rr(n_s), weight_zz(n_s), chain_omega;
     Eigen::VectorXd legendre(n_b);
     for (Eigen::Index k = 0; k < n; ++k)
       {
@@ -385,7 +446,16 @@ namespace rfm
           omega_t *= c;
         for (const int y : symmetry_edges_)
           omega_y *= omegas_[y](rk, zk).value;
-        v.omega(k, rr) = v.omega(k, zz) = omega_t;
+        // omega_rr (omega_zz): the chains that prescribe sigma_rr (sigma_zz): all but the lone
+        // edges along r (along z).
+        double omega_rr = 1.0, omega_zz = 1.0;
+        for (int c = 0; c < n_stress_chains_; ++c)
+          {
+            omega_rr *= chain_kind_[c] == StressEdge::normal_z ? 1.0 : chain_omega[c];
+            omega_zz *= chain_kind_[c] == StressEdge::normal_r ? 1.0 : chain_omega[c];
+          }
+        v.omega(k, rr) = omega_rr;
+        v.omega(k, zz) = omega_zz;
         v.omega(k, rz) = omega_t * omega_y;
         v.omega(k, tt) = 1.0;
         if (n_s == 0)
@@ -411,14 +481,23 @@ namespace rfm
               weight[e] = w[e] == 0.0 ? 1.0 / zeros : 0.0;
           }
 
+        // The normal components blend over the edges that prescribe them only (a lone edge
+        // along z leaves sigma_zz free, one along r sigma_rr), so that at a corner between
+        // such edges the blend is smooth: weights_rr and weights_zz.
+        const std::array<double, 2> s0_normal = {
+          blend_normal(w, weight_rr, StressEdge::normal_z, rk, zk, 0),
+          blend_normal(w, weight_zz, StressEdge::normal_r, rk, zk, 1)};
+        v.s0(k, rr) = s0_normal[0];
+        v.s0(k, zz) = s0_normal[1];
         for (Eigen::Index e = 0; e < n_s; ++e)
           {
             const int edge = stress_edges_[e];
             const double g = shear_factor(edge, rk, zk);
             const auto s0 = particular(edge, rk, zk);
-            v.s0(k, rr) += weight[e] * s0[0];
-            v.s0(k, zz) += weight[e] * s0[1];
             v.s0(k, rz) += weight[e] * g * s0[2];
+            const int slot = boundary_slot_[e];
+            if (slot < 0)
+              continue;
             const auto t = tangent_tensor(edge, rk, zk);
             // Legendre P_0..P_degree at the edge coordinate.
             const double xi = omegas_[edge].edge_coordinate(rk, zk).value;
@@ -429,7 +508,7 @@ namespace rfm
               legendre[j] = ((2 * j - 1) * xi * legendre[j - 1] - (j - 1) * legendre[j - 2]) / j;
             for (int j = 0; j < n_b; ++j)
               {
-                const Eigen::Index col = e * n_b + j;
+                const Eigen::Index col = slot * n_b + j;
                 const double b = weight[e] * legendre[j];
                 v.boundary[rr](k, col) = b * t[0];
                 v.boundary[zz](k, col) = b * t[1];

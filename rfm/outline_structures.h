@@ -16,16 +16,30 @@
 //    Y (symmetry and axis): straight edges along r or z, u . n = 0 and sigma_rz = 0;
 //    D (displacement): u = u_bar.
 //
-// 3. Structures. With omega_T = prod over the smooth chains C of S edges of omega_C,
-//    omega_Y = prod_{e in Y} omega_e and the
-//    transfinite weights W_e = prod_{f != e} omega_f / sum_g prod_{h != g} omega_h over S
-//    (W_e = 1 on e, 0 on the other S edges):
+// 3. Structures. The S edges are of two kinds. A lone straight edge along z (normal +-e_r; a
+//    chain of one) prescribes sigma_rr and sigma_rz only, one along r (normal +-e_z) sigma_zz
+//    and sigma_rz: the other normal stress is free there, as in the rectangle's structures
+//    (structures.h). Every other S edge (arcs, inclined lines, the edges of a smooth chain of
+//    several) prescribes the whole traction, and its tangential normal stress is left free by
+//    boundary columns B_e (the set G). With omega_T = prod over the smooth chains C of S edges
+//    of omega_C, omega_rr (omega_zz) the same product without the lone edges along r (along
+//    z), omega_Y = prod_{e in Y} omega_e and the transfinite weights
+//    W_e = prod_{f != e} omega_f / sum_g prod_{h != g} omega_h over S (W_e = 1 on e, 0 on the
+//    other S edges):
 //
-//      sigma_rr = s0_rr + omega_T P_rr + sum_{e in S} B_e(xi_e) W_e T_e,rr
-//      sigma_zz = s0_zz + omega_T P_zz + sum_{e in S} B_e(xi_e) W_e T_e,zz
-//      sigma_rz = s0_rz + omega_T omega_Y P_rz + sum_{e in S} B_e(xi_e) W_e T_e,rz
+//      sigma_rr = s0_rr + omega_rr P_rr + sum_{e in G} B_e(xi_e) W_e T_e,rr
+//      sigma_zz = s0_zz + omega_zz P_zz + sum_{e in G} B_e(xi_e) W_e T_e,zz
+//      sigma_rz = s0_rz + omega_T omega_Y P_rz + sum_{e in G} B_e(xi_e) W_e T_e,rz
 //      sigma_tt = P_tt
 //      u_r = u0_r + omega_ur P_r,   u_z = u0_z + omega_uz P_z
+//
+//    s0_rz = sum_{e in S} W_e s0_e,rz; s0_rr (s0_zz) is the same blend over the S edges that
+//    prescribe sigma_rr (sigma_zz) only, with the weights of that set. Why two kinds: at a
+//    corner between a pressure edge along z and a free end along r, the blend of all S edges
+//    is not smooth (the weights are homogeneous of degree 0 there) and the boundary column of
+//    the end cannot make it so: the Lame cylinder's Phi_R converged algebraically (1.2e-9 at
+//    p = 14, sigma_rr at the corner 0.26 % off), against rounding at p = 12 with the
+//    component-wise blend, whose space is then the rectangle's.
 //
 //    P_c are the tensor Legendre polynomials of the bounding box; B_e are Legendre
 //    polynomials in the edge coordinate xi_e (the projection on the edge's chord: linear,
@@ -50,8 +64,8 @@
 // max |sigma|, indicator at p = 12 8.2e-8 -> 1.9e-8). At a corner between S edges (convex,
 // where the stresses vanish) the product stays.
 //
-// The B_e columns make the stress space complete on every traction edge (sigma_ss is free
-// there), and they are independent of the polynomial columns: on e the polynomial columns
+// The B_e columns make the stress space complete on every traction edge of G (sigma_ss is
+// free there), and they are independent of the polynomial columns: on e the polynomial columns
 // vanish and the other W's are 0, so a combination that is zero forces B_e = 0 on [-1, 1].
 #pragma once
 
@@ -126,7 +140,7 @@ namespace rfm
 
     Eigen::Index n_boundary_columns() const
     {
-      return static_cast<Eigen::Index>(stress_edges_.size()) * (degree_ + 1);
+      return static_cast<Eigen::Index>(n_general_) * (degree_ + 1);
     }
     const axisym::Body &body() const { return body_; }
     const std::vector<EdgeOmega> &omegas() const { return omegas_; }
@@ -143,6 +157,21 @@ namespace rfm
     std::array<int, 2> displacement_degree_reduction(int m) const;
 
   private:
+    /// How an S edge prescribes the stress: a lone straight edge along z (normal +-e_r)
+    /// prescribes sigma_rr and sigma_rz only, one along r (normal +-e_z) sigma_zz and sigma_rz;
+    /// every other edge (arcs, inclined lines, edges of a smooth chain of several) the whole
+    /// traction, its tangential normal stress left to its boundary columns.
+    enum class StressEdge
+    {
+      general,
+      normal_r,
+      normal_z
+    };
+    // The transfinite blend of the particular normal stress `component` (0: rr, 1: zz) over the
+    // S edges not of kind `skip`, with w the edges' omegas at the point; `weight` receives the
+    // weights.
+    double blend_normal(const std::vector<double> &w, std::vector<double> &weight,
+                        StressEdge skip, double r, double z, int component) const;
     // s0_e and T_e at one point, in (rr, zz, rz) order.
     std::array<double, 3> particular(int edge, double r, double z) const;
     std::array<double, 3> tangent_tensor(int edge, double r, double z) const;
@@ -164,6 +193,12 @@ namespace rfm
     /// not).
     std::vector<int> stress_chain_;
     int n_stress_chains_ = 0;
+    std::vector<StressEdge> stress_kind_; ///< per S edge (index into stress_edges_)
+    /// Per chain: the kind of its edge if it is a lone edge along r or z, else general (a
+    /// lone edge's chain omega does not enter the omega of the component it leaves free).
+    std::vector<StressEdge> chain_kind_;
+    std::vector<int> boundary_slot_;      ///< per S edge: its block of boundary columns, or -1
+    int n_general_ = 0;                   ///< S edges with boundary columns
     std::vector<double> u_r_values_, u_z_values_;
     std::vector<std::vector<int>> shear_y_edges_; ///< per edge (S edges only)
   };
