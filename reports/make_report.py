@@ -27,6 +27,24 @@ def paper_at(table, key, iteration):
     return table[key][table["iteration"].index(iteration)]
 
 
+def threads_text(n):
+    """'1 thread', '2 threads' (n as recorded by a driver or a benchmark context)."""
+    return f"{n} thread{'' if int(n) == 1 else 's'}"
+
+
+def compact(x):
+    """1000.0 -> '1e3', 2.5e-4 -> '2.5e-4'."""
+    mantissa, exponent = f"{x:.2e}".split("e")
+    return f"{mantissa.rstrip('0').rstrip('.')}e{int(exponent)}"
+
+
+def indicator_factor(rfm, p_from, p_to):
+    """Geometric mean of the factor by which the indicator falls per two degrees from p_from to
+    p_to (keys "p<degree>" of a driver's RFM runs)."""
+    a, b = rfm[f"p{p_from}"]["indicator"], rfm[f"p{p_to}"]["indicator"]
+    return (b / a) ** (2.0 / (p_to - p_from))
+
+
 def load(data_dir, name):
     path = os.path.join(data_dir, name)
     if not os.path.exists(path):
@@ -81,7 +99,9 @@ def lame_section(lame, cmp, paper_tables, out_dir):
     paper = cases["paper"]
     rows = degrees_of(paper)
     pick = [r for r in rows if r["N"] in (1, 9, 64, 144, 225, 441)]
-    md.append("### 1.1 Table 1 analog (paper cylinder, p_in = 10 MPa, E = 210 GPa, nu = 0.3)")
+    pm, pl = paper["problem"]["material"], paper["problem"]["loading"]
+    md.append(f"### 1.1 Table 1 analog (paper cylinder, p_in = {pl['inner_pressure'] / 1e6:g} MPa, "
+              f"E = {pm['youngs_modulus'] / 1e9:g} GPa, nu = {pm['poisson_ratio']:g})")
     md.append("")
     md.append("| N | " + " | ".join(str(r["N"]) for r in pick) + " | exact |")
     md.append("|---|" + "---|" * (len(pick) + 1))
@@ -174,7 +194,7 @@ def lame_section(lame, cmp, paper_tables, out_dir):
             k, c = np.polyfit(np.log(n[ok]), np.log(t[ok]), 1)
             ax.loglog(n[ok], np.exp(c) * n[ok] ** k, "k:", lw=1)
             ax.annotate(f"slope {k:.2f}", (n[ok][-1], t[ok][-1]), fontsize=8)
-    decorate(ax, "N (coordinate functions per component)", "wall time [s]", "RFM time against N (paper cylinder, 1 thread)")
+    decorate(ax, "N (coordinate functions per component)", "wall time [s]", f"RFM time against N (paper cylinder, {threads_text(lame['threads'])})")
     f4 = save(fig, out_dir, "lame_timing.png")
 
     # All four stresses through the thickness at z = 0 and along the end z = a: RFM, FEM, exact.
@@ -215,7 +235,7 @@ def die_section(die, paper_tables, out_dir):
               f"E = {m['youngs_modulus']:.3g} Pa, nu = {m['poisson_ratio']}, smooth parabolic die on r = R2 "
               f"with delta = {d['indentation']:.3g} m (`{die['problem_file']}`). P is the contact force of the "
               "full body [N]: `force` is the domain integral (DESIGN.md 4.3), `trace` is eq. 4.6. Functionals in "
-              "J per radian. Contact check: 2001 points along r = R2.")
+              f"J per radian. Contact check: {die['contact_options']['n_check_points']} points along r = R2.")
     md.append("")
 
     # Iteration 0.
@@ -312,7 +332,9 @@ def die_section(die, paper_tables, out_dir):
             label=f"max-force: c = {mf['half_width_ratio']:.3f} a, P = {mf['force']/1e3:.1f} kN")
     p_paper = paper_at(t3, "force_kN", final)
     ax.plot([c_paper], [p_paper], "kx", ms=8, label=f"paper: {c_paper} a, {p_paper} kN")
-    decorate(ax, "contact half-width c / a [-]", "contact force P [kN]", "P(c) of the bilateral problem (p = 12, N = 169)", legend_size=7)
+    deg = die.get("force_curve_degree")  # written by die_contact since issue 23
+    at = f" (p = {deg}, N = {(deg + 1) ** 2})" if deg is not None else ""
+    decorate(ax, "contact half-width c / a [-]", "contact force P [kN]", f"P(c) of the bilateral problem{at}", legend_size=7)
     f2 = save(fig, out_dir, "die_force_curve.png")
 
     # c and P against N.
@@ -378,11 +400,13 @@ def convergence_in_p_section(rows, out_dir):
 
 def comparison_section(cmp, die, paper_tables, out_dir):
     md = ["## 3. RFM against the deal.II FEM reference", ""]
+    penalty = cmp.get("configuration", {}).get("fem", {}).get("penalty_factor")
+    kappa = f" (kappa = {compact(penalty)} E/h)" if penalty is not None else ""
     md.append("Both methods read the same problem files. FEM: axisymmetric Q1/Q2 on gmsh quadrilateral meshes "
               "of the same half section (graded toward r = R2 and the contact edge), UMFPACK, penalty "
-              "active-set contact (kappa = 1e3 E/h); `--refinements L` halves the gmsh mesh size L times "
-              "(fem_reference/README.md). Times are wall-clock seconds on this machine, 1 thread, and include "
-              "meshing, assembly and solve (RFM: assembly and solve; no eigenvalue diagnostics).")
+              f"active-set contact{kappa}; `--refinements L` halves the gmsh mesh size L times "
+              f"(fem_reference/README.md). Times are wall-clock seconds on this machine, {threads_text(cmp['threads'])}, "
+              "and include meshing, assembly and solve (RFM: assembly and solve; no eigenvalue diagnostics).")
     md.append("")
     if "configuration" in cmp:
         cfg = cmp["configuration"]
@@ -443,9 +467,11 @@ def comparison_section(cmp, die, paper_tables, out_dir):
     ag = d["agreement"]
     md.append("### 3.2 Die contact: c and P")
     md.append("")
-    md.append(f"Iteration 0 (c = a): P = {d['iteration0']['fem_force']/1e3:.4f} kN (FEM), "
-              f"{d['iteration0']['rfm_force']/1e3:.4f} kN (RFM p = 10); energy {d['iteration0']['fem_reissner']:.7f} (FEM "
-              f"strain energy) and {d['iteration0']['rfm_reissner']:.7f} J/rad (RFM Phi_R).")
+    it0 = d["iteration0"]
+    rfm_at = f" p = {it0['rfm_degree']}" if "rfm_degree" in it0 else ""  # written by rfm_vs_fem since issue 23
+    md.append(f"Iteration 0 (c = a): P = {it0['fem_force']/1e3:.4f} kN (FEM), "
+              f"{it0['rfm_force']/1e3:.4f} kN (RFM{rfm_at}); energy {it0['fem_reissner']:.7f} (FEM "
+              f"strain energy) and {it0['rfm_reissner']:.7f} J/rad (RFM Phi_R).")
     md.append("")
     md.append("| method | run | c/a | interval c/a | P [kN] | P error vs finest FEM | time [s] |")
     md.append("|---|---|---|---|---|---|---|")
@@ -466,7 +492,7 @@ def comparison_section(cmp, die, paper_tables, out_dir):
               f"{100*ag['iterate_force_difference_relative']:.4f} % (iterate) and {100*ag['max_force_force_difference_relative']:.4f} % "
               f"(max-force); c differs by {100*ag['iterate_half_width_difference_relative']:.2f} % and "
               f"{100*ag['max_force_half_width_difference_relative']:.2f} %. The default method `edge-intensity` "
-              f"(the stationary point of P next to the root of the edge intensity K(c), DESIGN.md 4.4) at the default degree p = {ag.get('default_degree', 8)}: "
+              f"(the stationary point of P next to the root of the edge intensity K(c), DESIGN.md 4.4) at the default degree p = {ag['default_degree']}: "
               f"c differs by {100*ag.get('edge_intensity_default_half_width_difference_relative', float('nan')):.2f} % and "
               f"P by {100*ag.get('edge_intensity_default_force_difference_relative', float('nan')):.3f} %; at the largest p "
               f"by {100*ag.get('edge_intensity_half_width_difference_relative', float('nan')):.2f} % and "
@@ -474,11 +500,12 @@ def comparison_section(cmp, die, paper_tables, out_dir):
               f"{100*ag.get('edge_intensity_root_default_difference_relative', float('nan')):.2f} % (default degree) and "
               f"{100*ag.get('edge_intensity_root_difference_relative', float('nan')):.2f} % (largest p) from the FEM's c "
               "(K from the interaction integral, a domain integral like P; the root of the n = 1 coefficient itself, "
-              "into which the unresolved edge field leaks, lies 0.4-0.8 % above). The paper's iteration checks "
-              "conditions 1.2 and 1.3 on the field with its edge term recovered from the interaction integral "
-              "(on the raw traces it stopped at the root of the coefficient, 0.8 % above). "
-              f"The paper's c = {c_paper} a is 4.6 % above the FEM value and its {p_paper} kN 1.3 % above; our trace-integral P "
-              "(eq. 4.6) shows the same upward bias as the paper's.")
+              "into which the unresolved edge field leaks, lies further above, as measured in rfm/contact.h). "
+              "The paper's iteration checks conditions 1.2 and 1.3 on the field with its edge term recovered from "
+              "the interaction integral (on the raw traces it stopped at the root of the coefficient). "
+              f"The paper's c = {c_paper} a is {100 * (c_paper / ag['fem_half_width_ratio'] - 1):.1f} % above the "
+              f"FEM value and its {p_paper} kN {100 * (p_paper * 1e3 / ag['fem_force'] - 1):.1f} % above; our "
+              "trace-integral P (eq. 4.6) shows the same upward bias as the paper's.")
     md.append("")
     if "bilateral_curve" in d:
         md.append("P(c) of the bilateral problem at the default degree against the FEM's, with the RFM's edge intensity K:")
@@ -501,7 +528,8 @@ def comparison_section(cmp, die, paper_tables, out_dir):
                   "mode over the half disc of radius 0.9 min(c, a - c, R2 - R1), with the hoop terms), from the n = 1 "
                   "coefficient of the stress space, and from the plane-strain contour integral on the half circle "
                   "rho = 0.05 rho_0, which leaves out the hoop terms (rfm/contact.h). The three agree to a few per cent "
-                  "where K is large; near the root the coefficient is biased (its root lies 0.4-0.8 % above the FEM's c).")
+                  "where K is large; near the root the coefficient is biased (its root lies above the FEM's c; "
+                  "rfm/contact.h).")
         md.append("")
     if "time_to_half_width_accuracy" in d:
         md.append("Time to reach c within a tolerance of the finest FEM value (RFM: edge-intensity over p):")
@@ -522,7 +550,7 @@ def comparison_section(cmp, die, paper_tables, out_dir):
     figs = [f"![RFM vs FEM, Lame]({f1})", ""]
     if "profiles" in d:
         figs += die_profiles_figures(d["profiles"], fem_degree, out_dir)
-    figs += die_time_to_accuracy_figure(d, fem_degree, out_dir)
+    figs += die_time_to_accuracy_figure(d, fem_degree, cmp["threads"], out_dir)
     if "profiles" in d:
         pr = d["profiles"]
         fem_peak = max(pr["fem"]["pressure"]["p_pa"]) / 1e6
@@ -548,9 +576,14 @@ def comparison_section(cmp, die, paper_tables, out_dir):
     if die and "fem_force_curve" in d:
         curve = die["force_curve"]
         fig, ax = plt.subplots(figsize=(6.4, 4.4))
-        ax.plot([c["half_width_ratio"] for c in curve], [c["force"] / 1e3 for c in curve], "o-", ms=3, label="RFM p = 12 (domain integral)")
+        deg = die.get("force_curve_degree")  # written by die_contact since issue 23
+        ax.plot([c["half_width_ratio"] for c in curve], [c["force"] / 1e3 for c in curve], "o-", ms=3,
+                label="RFM" + (f" p = {deg}" if deg is not None else "") + " (domain integral)")
         fc = d["fem_force_curve"]
-        ax.plot([c["half_width_ratio"] for c in fc], [c["force"] / 1e3 for c in fc], "ks", ms=5, label=f"FEM Q{fem_degree}, L = 4 (bilateral)")
+        levels = sorted({c["refinements"] for c in fc if "refinements" in c})  # rfm_vs_fem since issue 23
+        at = "".join(f", L = {level}" for level in levels)
+        ax.plot([c["half_width_ratio"] for c in fc], [c["force"] / 1e3 for c in fc], "ks", ms=5,
+                label=f"FEM Q{fem_degree}{at} (bilateral)")
         ax.axvline(ag["fem_half_width_ratio"], color="k", lw=1, ls=":", label=f"FEM unilateral c = {ag['fem_half_width_ratio']:.4f} a")
         ax.set_xlim(0.4, 0.75)
         ax.set_ylim(180, 194)
@@ -601,7 +634,7 @@ def die_profiles_figures(prof, fem_degree, out_dir):
     return [f"![contact pressure RFM and FEM]({f1})", "", f"![sigma_rr RFM and FEM]({f2})", ""]
 
 
-def die_time_to_accuracy_figure(d, fem_degree, out_dir):
+def die_time_to_accuracy_figure(d, fem_degree, threads, out_dir):
     """Error of P and of c against the finest FEM, as a function of wall time (both methods)."""
     ag = d["agreement"]
     c_ref = ag["fem_half_width_ratio"]
@@ -623,7 +656,7 @@ def die_time_to_accuracy_figure(d, fem_degree, out_dir):
         ax.axhline(target, color="gray", lw=0.6, ls=":")
     decorate(axs[0], "wall time [s]", "|P - P_FEM,finest| / P_FEM,finest [-]")
     decorate(axs[1], "wall time [s]", "|c - c_FEM,finest| / c_FEM,finest [-]")
-    fig.suptitle("Die contact: time to accuracy against the finest FEM (1 thread)")
+    fig.suptitle(f"Die contact: time to accuracy against the finest FEM ({threads_text(threads)})")
     return [f"![die time to accuracy]({save(fig, out_dir, 'rfm_vs_fem_die_time.png')})", ""]
 
 
@@ -687,7 +720,8 @@ def benchmark_section(bench, out_dir, bench2=None):
     rows = [b for b in bench["benchmarks"] if b.get("run_type") == "iteration"]
     def series(rows, prefix):
         return [b for b in rows if b["name"].startswith(prefix + "/")]
-    md.append(f"One thread (`--threads=1`, threads recorded: {ctx.get('rfm_threads', '?')}):")
+    t1 = ctx.get("rfm_threads", "?")
+    md.append(f"On {threads_text(t1) if t1 != '?' else '? threads'} (`--threads={t1}`, as recorded by the run):")
     md.append("")
     md.append("| benchmark | N | time [ms] | GFLOP/s | fraction of the same-run reference | working set [MiB] |")
     md.append("|---|---|---|---|---|---|")
@@ -701,9 +735,13 @@ def benchmark_section(bench, out_dir, bench2=None):
     if bench2 is not None:
         rows2 = [b for b in bench2["benchmarks"] if b.get("run_type") == "iteration"]
         t2 = {b["name"]: b["real_time"] for b in rows2}
-        md.append(f"Two threads (`--threads=2`), wall time, same build, run {bench2.get('context', {}).get('date', '?')}:")
+        ctx2 = bench2.get("context", {})
+        t2n = ctx2.get("rfm_threads", "?")
+        md.append(f"On {threads_text(t2n) if t2n != '?' else '? threads'} (`--threads={t2n}`), wall time, same build, "
+                  f"run {ctx2.get('date', '?')}:")
         md.append("")
-        md.append("| problem | p | N | assembly 1 / 2 threads [ms] | solve 1 / 2 threads [ms] | speed-up, assembly + solve |")
+        md.append(f"| problem | p | N | assembly {t1} / {t2n} threads [ms] | solve {t1} / {t2n} threads [ms] | "
+                  "speed-up, assembly + solve |")
         md.append("|---|---|---|---|---|---|")
         for prob in ("Lame", "Die"):
             for b in series(rows, "BM_RfmAssembly" + prob):
@@ -725,8 +763,9 @@ def benchmark_section(bench, out_dir, bench2=None):
         fr = np.array([b.get(key, np.nan) for b in s], float)
         axs[0].loglog(n, t, "o-", ms=3, label=prefix[3:])
         axs[1].semilogx(n, fr, "o-", ms=3, label=prefix[3:])
-    decorate(axs[0], "N (coordinate functions per component)", "time [s]", "RFM assembly and solve, 1 thread")
-    decorate(axs[1], "N", "fraction of the same-run GEMM / Cholesky", "Fraction of the dense reference, 1 thread")
+    on = f", {threads_text(ctx['rfm_threads'])}" if "rfm_threads" in ctx else ""
+    decorate(axs[0], "N (coordinate functions per component)", "time [s]", f"RFM assembly and solve{on}")
+    decorate(axs[1], "N", "fraction of the same-run GEMM / Cholesky", f"Fraction of the dense reference{on}")
     md += [f"![benchmarks]({save(fig, out_dir, 'benchmark_rfm.png')})", ""]
     return md
 
@@ -789,12 +828,11 @@ def bodies_section(bor, out_dir):
     md += [f"![sphere]({save(fig, out_dir, 'sphere_rfm_convergence.png')})", ""]
     best = min((k for k in ps if sph["rfm"][k]["N"] <= 400),
                key=lambda k: sph["rfm"][k]["max_error_relative"])
-    md.append("The box's Legendre basis is nearly dependent on the quarter annulus (condition number "
-              "of its r-weighted values 1.3e12 at p = 16, 1.5e15 at p = 20); with it the error "
-              "flattened near 5e-5 from p = 14 on, because the orthonormalization had to drop the "
-              "small directions. The section-orthonormal basis keeps them all. Its recurrence "
-              "amplifies its own rounding (noise 7e-6 at p = 18, 2e-4 at p = 20 in double), so it "
-              "runs in long double from p = 18. Issue 13 asks a max stress error below 1e-6 at "
+    md.append("The box's Legendre basis is nearly dependent on the quarter annulus; with it the error "
+              "flattened at high p, because the orthonormalization had to drop the small directions "
+              "(the measurements are in rfm/section_basis.h and rfm/outline_model.h). The section-orthonormal "
+              "basis keeps them all. Its recurrence amplifies its own rounding in double, so it runs in long "
+              "double from p = 18. Issue 13 asks a max stress error below 1e-6 at "
               f"N <= 400: here {sph['rfm'][best]['max_error_relative']:.2e} at N = "
               f"{sph['rfm'][best]['N']} (p = {best[1:]}).")
     md.append("")
@@ -842,6 +880,11 @@ def bodies_section(bor, out_dir):
     md.append("")
     ps = [k for k in sh["rfm"] if k.startswith("p")]
     ls = [k for k in sh["fem"] if k.startswith("L")]
+    shaft_ps = sorted(int(k[1:]) for k in ps)
+    shaft_falls = [1 / indicator_factor(sh["rfm"], a, b) for a, b in zip(shaft_ps, shaft_ps[1:])]
+    # The sphere over the first four degrees of the shaft's range (before its rounding floor).
+    sphere_ps = ((shaft_ps[0], shaft_ps[0] + 4)
+                 if all(f"p{p}" in sph["rfm"] for p in (shaft_ps[0], shaft_ps[0] + 4)) else None)
     text = (f"Both converge, each by its own refinement: the RFM's K_t changes by "
             f"{100 * sh['rfm']['change_last_relative']:.2f} % from p = {ps[-2][1:]} to {ps[-1][1:]}, the "
             f"FEM's by {100 * sh['fem']['change_last_relative']:.3f} % from L = {ls[-2][1:]} to {ls[-1][1:]}")
@@ -850,8 +893,11 @@ def bodies_section(bor, out_dir):
                  "from its limit)")
     text += (f". They agree to {100 * sh['agreement_relative']:.3f} % (p = {ps[-1][1:]} against L = {ls[-1][1:]}; "
              "issue 13 asks 0.5 %). The RFM's pointwise K_t converges more slowly than its energy: it "
-             "oscillates about the FEM's value (table), while the indicator falls by a factor 2-4 per two "
-             "degrees, against 0.017 per two degrees on the sphere. The cause is not isolated yet; the "
+             "oscillates about the FEM's value (table), while the indicator falls by a factor of "
+             f"{min(shaft_falls):.1f}-{max(shaft_falls):.1f} per two degrees (p = {shaft_ps[0]}-{shaft_ps[-1]})" +
+             (f", against {1 / indicator_factor(sph['rfm'], *sphere_ps):.0f} on the sphere (section 5.1, "
+              f"p = {sphere_ps[0]}-{sphere_ps[1]})" if sphere_ps else "") +
+             ". The cause is not isolated yet; the "
              "likeliest is the R-function blending where the traction edges join (the R-conjunction "
              "and the trimmed arcs are not smooth at the joins).")
     md.append(text)
@@ -873,12 +919,12 @@ def bodies_section(bor, out_dir):
                   "between two traction edges, where the transfinite blending of the particular stress and "
                   "of the boundary columns is 0/0 and the corner field itself is not smooth, and the groove "
                   "is 1/15 of the section's height, so the polynomials resolve it late. `rfm_solve` on that "
-                  "file says so and exits 3 (its default tolerance 1e-8 would need p = 44).")
+                  "file says so and exits 3 (its default tolerance 1e-8 would need a p above rfm.max_degree).")
         md.append("")
     return md
 
 
-def body_loads_section(bl, out_dir):
+def body_loads_section(bl, out_dir, sphere=None):
     """Rotation, gravity and temperature (issue 14): exact plane-strain cylinders, a heated
     sphere (RFM against FEM) and self weight."""
     md = ["## 6. Body loads: rotation, gravity and temperature (`body_loads`)", "",
@@ -944,12 +990,16 @@ def body_loads_section(bl, out_dir):
         if key == "heated_ring":
             md.append("The grid and the Gauss-Lobatto points give nearly the same max: the base mesh has no cell with a "
                       "flat (180-degree) corner at the smooth join of the two arcs at (0.15, 0.04) (the generator makes "
-                      "the mesh again with more cells when it finds one; before, that cell's singular Jacobian put 0.16 "
-                      "of max |s| into the Gauss-Lobatto max at L = 3).")
+                      "the mesh again with more cells when it finds one; before, that cell's singular Jacobian put a "
+                      "large part of max |s| into the Gauss-Lobatto max; fem_reference/README.md, base_mesh_flat_corners).")
         else:
-            md.append("The RFM's indicator falls slowly here (by about 0.35 per two degrees at p = 12-16, against "
-                      "0.017 for the same section under pressure alone, section 5.1, which reaches 1e-14): the "
-                      "slow part comes with the thermal load (T = 1000 z), and its cause is not found yet.")
+            hps = sorted(int(k[1:]) for k in hs["rfm"])[-2:]
+            md.append(f"The RFM's indicator falls slowly here (by about {indicator_factor(hs['rfm'], *hps):.2f} per two "
+                      f"degrees at p = {hps[0]}-{hps[1]}"
+                      + (f", against {indicator_factor(sphere['rfm'], *hps):.2g} for the same section under pressure "
+                         f"alone, section 5.1, which reaches {min(r['indicator'] for r in sphere['rfm'].values()):.0e}"
+                         if sphere and all(f"p{p}" in sphere["rfm"] for p in hps) else "") +
+                      "): the slow part comes with the thermal load (T = 1000 z), and its cause is not found yet.")
         md.append("")
     sw = bl.get("self_weight")
     if sw:
@@ -1009,9 +1059,15 @@ def main():
             threads = f" on {d['threads']} thread{'s' if d['threads'] != 1 else ''}" if "threads" in d else ""
             md.append(f"* driver `{d['driver']}` in mode `{d['mode']}`{threads}; the problem files it read are "
                       "echoed in `reports/data/*.json`")
-    md.append("* README command (1) runs the drivers two at a time, one per core, each on one thread "
-              "(`reports/CMakeLists.txt`): the wall times in this report are one-thread times taken "
-              "while the other core ran another driver.")
+    counts = sorted({d["threads"] for d in (lame, die, cmp, load(args.data, "bodies_of_revolution.json"),
+                                            load(args.data, "body_loads.json")) if d and "threads" in d})
+    if len(counts) == 1:
+        md.append(f"* README command (1) runs the drivers two at a time, one per core, each on "
+                  f"{threads_text(counts[0])} (`reports/CMakeLists.txt`): the wall times in this report were "
+                  f"taken on {threads_text(counts[0])} while the other core ran another driver.")
+    else:
+        md.append("* README command (1) runs the drivers two at a time, one per core (`reports/CMakeLists.txt`); "
+                  "the thread count each driver ran on is listed above.")
     md.append("")
     if lame:
         md += lame_section(lame, cmp, paper_tables, args.out)
@@ -1039,7 +1095,7 @@ def main():
         md += bodies_section(bor, args.out)
     body_loads = load(args.data, "body_loads.json")
     if body_loads:
-        md += body_loads_section(body_loads, args.out)
+        md += body_loads_section(body_loads, args.out, bor["sphere"] if bor else None)
     md += fem_convergence_tables(args.data)
 
     tmp = os.path.join(args.out, "report.md.tmp")

@@ -197,7 +197,7 @@ nlohmann::json run(const verification::DriverContext &context)
     if (!fr.success || !rr.success)
       throw std::runtime_error("iteration 0 failed");
     results["die"]["iteration0"] = {
-      {"fem_force", fr.contact->force}, {"rfm_force", rr.final.force},
+      {"fem_force", fr.contact->force}, {"rfm_force", rr.final.force}, {"rfm_degree", d0.rfm.degree},
       {"fem_reissner", fr.functionals.lagrange}, {"rfm_reissner", rr.final.reissner},
       {"force_difference_relative", std::abs(rr.final.force - fr.contact->force) / fr.contact->force},
       {"energy_difference_relative",
@@ -523,7 +523,7 @@ nlohmann::json run(const verification::DriverContext &context)
         const fem::FemResult fr = fem::solve(d, o);
         if (fr.success)
           results["die"]["fem_force_curve"].push_back(
-            {{"half_width_ratio", ca}, {"force", fr.contact->force}});
+            {{"half_width_ratio", ca}, {"force", fr.contact->force}, {"refinements", o.refinements}});
       }
 
   return results;
