@@ -72,11 +72,12 @@ namespace rfm
   } // namespace
 
   OutlineModel::OutlineModel(const axisym::Problem &problem, const DiscretizationOptions &options,
-                             const SolverOptions &solver_options)
+                             const SolverOptions &solver_options,
+                             const std::vector<DieZone> &zones)
     : material_(problem.material)
     , loads_(problem.body_loads)
     , mirrored_(problem.body->mirrored)
-    , structures_(*problem.body, (options.validate(), options.degree))
+    , structures_(*problem.body, (options.validate(), options.degree), zones)
     , basis_(basis_of(problem.body->outline, options.degree, options.degree))
   {
     const auto t0 = std::chrono::steady_clock::now();
@@ -85,8 +86,9 @@ namespace rfm
     // triangles.
     SectionQuadratureOptions qo;
     qo.n_points = 2 * options.degree + options.extra_gauss_points;
-    quadrature_ = section_gauss(problem.body->outline, qo);
-    edge_quadrature_ = edge_gauss(problem.body->outline, qo.n_points);
+    // On the split body: a zone's ends are vertices of the triangulation and of the edges.
+    quadrature_ = section_gauss(structures_.body().outline, qo);
+    edge_quadrature_ = edge_gauss(structures_.body().outline, qo.n_points);
     // A mirrored section stands for itself and its image in z = 0: every integral twice (the
     // system scales as a whole; the functionals and forces refer to the whole body).
     if (problem.body->mirrored)
@@ -351,6 +353,15 @@ namespace rfm
         const auto t = structures_.prescribed_traction(eq.edge[k], eq.r[k], eq.z[k]);
         work += eq.weights[k] * (t[0] * fb.u(k, 0) + t[1] * fb.u(k, 1));
         const axisym::PartCondition &cond = structures_.body().condition_of_edge(eq.edge[k]);
+        if (cond.kind == axisym::PartCondition::Kind::die)
+          {
+            // A die's zone: u* = n (g0 - delta), (s n) . u* = sigma_nn (g0 - delta).
+            const double sn_n = fb.sigma(k, rr) * eq.n_r[k] * eq.n_r[k] +
+                                2 * fb.sigma(k, rz) * eq.n_r[k] * eq.n_z[k] +
+                                fb.sigma(k, zz) * eq.n_z[k] * eq.n_z[k];
+            kinematic += eq.weights[k] * sn_n *
+                         structures_.die_normal_displacement(eq.edge[k], eq.r[k], eq.z[k]);
+          }
         if (cond.kind == axisym::PartCondition::Kind::displacement)
           {
             const double sn_r = fb.sigma(k, rr) * eq.n_r[k] + fb.sigma(k, rz) * eq.n_z[k];
@@ -363,6 +374,59 @@ namespace rfm
     out.castigliano = -complementary - thermal + kinematic;
     out.reissner = mixed - complementary - work;
     return out;
+  }
+
+  OutlineModel::DieForce OutlineModel::die_force(const std::string &part) const
+  {
+    // The original part's frame (the zone keeps the part's name; its free sub-edges are
+    // "<part>#free").
+    const axisym::Body &b = structures_.body();
+    const axisym::Point n = [&] {
+      for (const axisym::OutlineEdge &e : b.outline.edges())
+        if (e.part == part)
+          return e.outward_normal_at(0.5);
+      throw std::invalid_argument("OutlineModel::die_force: no part " + part);
+    }();
+    axisym::Point on_line{};
+    for (const axisym::OutlineEdge &e : b.outline.edges())
+      if (e.part == part)
+        on_line = e.start;
+    // D: the largest distance into the body from the part's line (edges sampled, arcs too).
+    double depth = 0.0;
+    for (const axisym::OutlineEdge &e : b.outline.edges())
+      for (int k = 0; k <= 64; ++k)
+        {
+          const axisym::Point x = e.point_at(k / 64.0);
+          depth = std::max(depth, -((x.r - on_line.r) * n.r + (x.z - on_line.z) * n.z));
+        }
+    const Quadrature2D &q = quadrature_;
+    const FieldValues f = evaluate(q.r, q.z);
+    double volume = 0.0;
+    for (Eigen::Index k = 0; k < q.n_points(); ++k)
+      {
+        const double d = -((q.r[k] - on_line.r) * n.r + (q.z[k] - on_line.z) * n.z);
+        const double psi = 1.0 - d / depth, psi_r = n.r / depth, psi_z = n.z / depth;
+        const double e_rr = psi_r * n.r, e_zz = psi_z * n.z, e_tt = psi * n.r / q.r[k],
+                     g_rz = psi_z * n.r + psi_r * n.z;
+        const auto fk = axisym::body_force(loads_, material_, q.r[k], q.z[k]);
+        volume += q.weights[k] * q.r[k] *
+                  (f.sigma(k, rr) * e_rr + f.sigma(k, zz) * e_zz + f.sigma(k, tt) * e_tt +
+                   f.sigma(k, rz) * g_rz - psi * (fk[0] * n.r + fk[1] * n.z));
+      }
+    const EdgeQuadrature &eq = edge_quadrature_;
+    const FieldValues fb = evaluate(eq.r, eq.z);
+    double traction_work = 0.0, trace = 0.0;
+    for (Eigen::Index k = 0; k < eq.r.size(); ++k)
+      {
+        const std::string &edge_part = b.outline.edges()[eq.edge[k]].part;
+        const double d = -((eq.r[k] - on_line.r) * n.r + (eq.z[k] - on_line.z) * n.z);
+        const auto t = structures_.prescribed_traction(eq.edge[k], eq.r[k], eq.z[k]);
+        traction_work += eq.weights[k] * (1.0 - d / depth) * (t[0] * n.r + t[1] * n.z);
+        if (edge_part == part || edge_part == part + "#free")
+          trace += eq.weights[k] * (fb.sigma(k, rr) * n.r * n.r + 2 * fb.sigma(k, rz) * n.r * n.z +
+                                    fb.sigma(k, zz) * n.z * n.z);
+      }
+    return {-2.0 * M_PI * (volume - traction_work), -2.0 * M_PI * trace};
   }
 
   DegreeSequence<OutlineModel> solve_outline_to_tolerance(const axisym::Problem &problem,

@@ -56,10 +56,11 @@ namespace rfm
   class OutlineModel
   {
   public:
-    /// Builds, assembles and solves at options.degree. Throws InputError for sections the
+    /// Builds, assembles and solves at options.degree. `zones`: one per die part, the contact
+    /// zone of a bilateral solve (OutlineStructures). Throws InputError for sections the
     /// structures do not support. Numerical failure: ok() false, summary().message.
     OutlineModel(const axisym::Problem &problem, const DiscretizationOptions &options,
-                 const SolverOptions &solver_options = {});
+                 const SolverOptions &solver_options = {}, const std::vector<DieZone> &zones = {});
 
     bool ok() const { return summary_.success; }
     const SolveSummary &summary() const { return summary_; }
@@ -76,6 +77,20 @@ namespace rfm
     FieldValues evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
                          const Eigen::Ref<const Eigen::VectorXd> &z) const;
     Functionals functionals() const;
+
+    /// The force of the die on `part` [N, the whole body of revolution] (DESIGN.md 4.3), as
+    /// a domain integral, P = -2 pi [int s . e(v) - int f . v] r dr dz + 2 pi int_St t . v r ds
+    /// with v = psi n (n the part's outward normal, psi = 1 - d / D, d the distance from the
+    /// part's line into the body and D its largest value over the section, so that v vanishes
+    /// at the far side; exact for the exact solution when v . n = 0 on every support), and as
+    /// the trace -2 pi int sigma_nn r ds over the part. Precondition: ok(), a zone on `part`.
+    struct DieForce
+    {
+      double domain = 0.0, trace = 0.0;
+    };
+    DieForce die_force(const std::string &part) const;
+    /// The split body the structures and the rules work on (OutlineStructures::body()).
+    const axisym::Body &body() const { return structures_.body(); }
 
   private:
     /// The system, and the Gram matrices of the displacement columns (values and

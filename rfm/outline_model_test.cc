@@ -1,6 +1,7 @@
 #include "rfm/outline_model.h"
 
 #include "problem/test_problems.h"
+#include "rfm/model.h"
 
 #include <gtest/gtest.h>
 
@@ -272,5 +273,36 @@ namespace rfm
     EXPECT_NEAR(down.sigma(1, rr), big_a - big_b / (0.15 * 0.15), 5e-5 * p1);
     EXPECT_NEAR(down.sigma(0, rr), -p1, 1e-6 * p1);
     EXPECT_NEAR(down.u(1, 1), 2 * nu * big_a * 0.1 / e, 1e-4 * u_scale); // u_z(z = -0.1)
+  }
+} // namespace rfm
+
+namespace rfm
+{
+  // A die zone on an outline part (issue 23 items 2 and 3, the bilateral solve): the paper's
+  // die at c = a (iteration 0, the whole outer side in contact) through the outline path
+  // against the rectangle model, whose space it then is (DESIGN.md 4: P = 128.7 kN in the
+  // paper; the FEM's bilateral c = a force is 128728.67 N at Q2, L = 5).
+  TEST(OutlineModel, DieZoneAtFullContactMatchesTheRectangleModel)
+  {
+    const axisym::Problem problem = axisym::parse_problem(nlohmann::json::parse(R"({
+      "geometry": {"inner_radius": 0.1, "outer_radius": 0.2, "length": 0.4},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3},
+      "die": {"indentation": 1.0e-6}})"));
+    DiscretizationOptions o = problem.rfm;
+    o.degree = 8;
+    const OutlineModel m(problem, o, {}, {DieZone{"outer", 0.0, 0.2, 1e-6}});
+    ASSERT_TRUE(m.ok()) << m.summary().message;
+    const RfmModel legacy(problem, o, 0.2);
+    ASSERT_TRUE(legacy.ok()) << legacy.summary().message;
+    const OutlineModel::DieForce f = m.die_force("outer");
+    const ContactForce g = legacy.contact_force();
+    const Functionals a = m.functionals(), b = legacy.solution().functionals();
+    // Measured when written (p = 8): P 128728.674586 N both ways (the FEM's 128728.67459),
+    // traces 128728.867463 and 128728.867604, Phi_R 4e-10 apart (the two quadratures).
+    EXPECT_NEAR(f.domain, 128728.67459, 1e-8 * 128728.67459);
+    EXPECT_NEAR(f.domain, g.domain, 1e-9 * g.domain);
+    EXPECT_NEAR(f.trace, g.trace, 1e-7 * g.trace);
+    EXPECT_NEAR(a.reissner, b.reissner, 1e-8 * std::abs(b.reissner));
+    EXPECT_NEAR(a.castigliano, b.castigliano, 1e-8 * std::abs(b.castigliano));
   }
 } // namespace rfm

@@ -171,11 +171,93 @@ namespace rfm
     return {-s * (z - edge_.center.z) / radius, s * (r - edge_.center.r) / radius};
   }
 
+  namespace
+  {
+    // The body with every die part's edges split at its zone's ends: the zone keeps the part's
+    // name, the free sub-edges go to part "<part>#free" (traction free).
+    axisym::Body split_at_zones(const axisym::Body &body, const std::vector<DieZone> &zones)
+    {
+      if (zones.empty())
+        return body;
+      std::vector<OutlineEdge> edges;
+      auto conditions = body.conditions;
+      const double tol = 1e-9 * body.outline.size();
+      for (const OutlineEdge &e : body.outline.edges())
+        {
+          const auto zone = std::find_if(zones.begin(), zones.end(),
+                                         [&](const DieZone &z) { return z.part == e.part; });
+          if (zone == zones.end())
+            {
+              edges.push_back(e);
+              continue;
+            }
+          const axisym::DieFrame f = axisym::die_frame(body, e.part);
+          const std::string free_part = e.part + "#free";
+          conditions[free_part] = PartCondition{};
+          // Cut points along the edge (t in [0, 1]) at the zone's ends.
+          const double s0 = f.coordinate(e.start), s1 = f.coordinate(e.end);
+          std::vector<double> cuts{0.0, 1.0};
+          for (const double s : {zone->s_lo, zone->s_hi})
+            {
+              const double t = (s - s0) / (s1 - s0);
+              if (t * std::abs(s1 - s0) > tol && (1 - t) * std::abs(s1 - s0) > tol)
+                cuts.push_back(t);
+            }
+          std::sort(cuts.begin(), cuts.end());
+          for (std::size_t i = 0; i + 1 < cuts.size(); ++i)
+            {
+              OutlineEdge sub = e;
+              sub.start = e.point_at(cuts[i]);
+              sub.end = e.point_at(cuts[i + 1]);
+              const double s_mid = f.coordinate(e.point_at(0.5 * (cuts[i] + cuts[i + 1])));
+              sub.part = s_mid >= zone->s_lo && s_mid <= zone->s_hi ? e.part : free_part;
+              edges.push_back(sub);
+            }
+        }
+      axisym::Body out{axisym::Outline(body.outline.edges().front().start, std::move(edges)),
+                       std::move(conditions), body.mirrored};
+      // A free part that got no edge (the zone covers the part) is dropped.
+      for (auto it = out.conditions.begin(); it != out.conditions.end();)
+        {
+          const auto parts = out.outline.parts();
+          if (std::find(parts.begin(), parts.end(), it->first) == parts.end())
+            it = out.conditions.erase(it);
+          else
+            ++it;
+        }
+      return out;
+    }
+  } // namespace
+
   // 2. Edge sets and the checks of what the structures support.
-  OutlineStructures::OutlineStructures(const axisym::Body &body, const int degree)
-    : body_(body), degree_(degree)
+  OutlineStructures::OutlineStructures(const axisym::Body &body, const int degree,
+                                       const std::vector<DieZone> &zones)
+    : body_(split_at_zones(body, zones)), degree_(degree)
   {
     const auto &edges = body_.outline.edges();
+    zone_of_edge_.assign(edges.size(), -1);
+    for (const DieZone &z : zones)
+      {
+        if (!body.conditions.count(z.part) ||
+            body.conditions.at(z.part).kind != PartCondition::Kind::die)
+          throw std::invalid_argument("OutlineStructures: zone on part " + z.part +
+                                      ", which carries no die");
+        Zone zone;
+        zone.frame = axisym::die_frame(body, z.part);
+        zone.profile = body.conditions.at(z.part).die.profile;
+        zone.indentation = z.indentation;
+        const bool normal_r = std::abs(std::abs(zone.frame.normal.r) - 1.0) < 1e-12;
+        const bool normal_z = std::abs(std::abs(zone.frame.normal.z) - 1.0) < 1e-12;
+        if (!normal_r && !normal_z)
+          throw InputError("boundary." + z.part +
+                           ".die: the RFM takes a die on a part along r or z only so far");
+        zone.component = normal_r ? 0 : 1;
+        zone.sign = normal_r ? zone.frame.normal.r : zone.frame.normal.z;
+        for (std::size_t e = 0; e < edges.size(); ++e)
+          if (edges[e].part == z.part)
+            zone_of_edge_[e] = static_cast<int>(zones_.size());
+        zones_.push_back(zone);
+      }
     for (int e = 0; e < static_cast<int>(edges.size()); ++e)
       {
         omegas_.emplace_back(body_.outline, e);
@@ -195,17 +277,26 @@ namespace rfm
                                  ": the RFM structures take symmetry edges along r or z only");
               symmetry_edges_.push_back(e);
               (along_r ? u_r_edges_ : u_z_edges_).push_back(e);
-              (along_r ? u_r_values_ : u_z_values_).push_back(0.0);
+              (along_r ? u_r_values_ : u_z_values_).push_back({});
               break;
             case PartCondition::Kind::displacement:
-              u_r_edges_.push_back(e), u_r_values_.push_back(c.displacement[0]);
-              u_z_edges_.push_back(e), u_z_values_.push_back(c.displacement[1]);
+              u_r_edges_.push_back(e), u_r_values_.push_back({c.displacement[0], -1});
+              u_z_edges_.push_back(e), u_z_values_.push_back({c.displacement[1], -1});
               break;
             case PartCondition::Kind::die:
-              throw InputError("boundary." + edges[e].part +
-                               ".die: the RFM solves contact on the hollow-cylinder form "
-                               "(geometry.inner_radius, outer_radius, length; top-level die) "
-                               "only so far; fem_solve solves a die on an outline part");
+              {
+                // A zone: shear free (a Y edge for sigma_rz) with u.n prescribed.
+                const int zone = zone_of_edge_[e];
+                if (zone < 0)
+                  throw InputError("boundary." + edges[e].part +
+                                   ".die: the RFM solves a die on an outline part for a given "
+                                   "zone only so far (contact.method \"fixed\" with "
+                                   "contact.half_width); fem_solve solves for the zone");
+                symmetry_edges_.push_back(e);
+                (along_r ? u_r_edges_ : u_z_edges_).push_back(e);
+                (along_r ? u_r_values_ : u_z_values_).push_back({0.0, zone});
+                break;
+              }
           }
       }
 
@@ -346,8 +437,31 @@ namespace rfm
     return {0.0, 0.0};
   }
 
-  RValue OutlineStructures::blend(const std::vector<int> &edges, const std::vector<double> &values,
-                                  const double r, const double z) const
+  double OutlineStructures::die_normal_displacement(const int edge, const double r,
+                                                    const double z) const
+  {
+    const Zone &zone = zones_.at(zone_of_edge_.at(edge));
+    return zone.profile.gap(std::abs(zone.frame.coordinate({r, z}))) - zone.indentation;
+  }
+
+  RValue OutlineStructures::prescribed(const Prescribed &v, const double r, const double z) const
+  {
+    if (v.zone < 0)
+      return {v.constant, 0.0, 0.0};
+    // u_m = n_m (g0(|s|) - delta), s = (x - centre) . t; dg0/ds by a central difference of
+    // the profile (smooth inside a zone: g0 is C1 at a rounded punch's flat end).
+    const Zone &zone = zones_[v.zone];
+    const double s = zone.frame.coordinate({r, z});
+    const double h = 1e-6 * (std::abs(s) + 1e-3 * (zone.frame.s_max - zone.frame.s_min));
+    const auto g = [&](double x) { return zone.profile.gap(std::abs(x)); };
+    const double value = zone.sign * (g(s) - zone.indentation);
+    const double slope = zone.sign * (g(s + h) - g(s - h)) / (2 * h);
+    return {value, slope * zone.frame.tangent.r, slope * zone.frame.tangent.z};
+  }
+
+  RValue OutlineStructures::blend(const std::vector<int> &edges,
+                                  const std::vector<Prescribed> &values, const double r,
+                                  const double z) const
   {
     // sum_e v_e prod_{f != e} w_f / sum_g prod_{h != g} w_h, with product-rule gradients.
     RValue num{0, 0, 0}, den{0, 0, 0};
@@ -357,8 +471,9 @@ namespace rfm
         for (std::size_t f = 0; f < edges.size(); ++f)
           if (f != e)
             p = product(p, omegas_[edges[f]](r, z));
-        num = {num.value + values[e] * p.value, num.d_r + values[e] * p.d_r,
-               num.d_z + values[e] * p.d_z};
+        const RValue v = prescribed(values[e], r, z);
+        num = {num.value + v.value * p.value, num.d_r + v.value * p.d_r + v.d_r * p.value,
+               num.d_z + v.value * p.d_z + v.d_z * p.value};
         den = {den.value + p.value, den.d_r + p.d_r, den.d_z + p.d_z};
       }
     if (den.value == 0.0)
@@ -530,11 +645,13 @@ namespace rfm
     for (Eigen::MatrixXd *m : {&v.u0, &v.u0_r, &v.u0_z})
       m->setZero(n, 2);
     const std::array<const std::vector<int> *, 2> sets{&u_r_edges_, &u_z_edges_};
-    const std::array<const std::vector<double> *, 2> values{&u_r_values_, &u_z_values_};
+    const std::array<const std::vector<Prescribed> *, 2> values{&u_r_values_, &u_z_values_};
     for (int m = 0; m < 2; ++m)
       {
         const bool prescribed = std::any_of(values[m]->begin(), values[m]->end(),
-                                            [](double x) { return x != 0.0; });
+                                            [](const Prescribed &x) {
+                                              return x.constant != 0.0 || x.zone >= 0;
+                                            });
         for (Eigen::Index k = 0; k < n; ++k)
           {
             RValue w{1, 0, 0};

@@ -76,6 +76,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <string>
 #include <vector>
 
 namespace rfm
@@ -126,12 +127,29 @@ namespace rfm
     Eigen::MatrixXd omega, omega_r, omega_z, u0, u0_r, u0_z; ///< n x 2 each: (u_r, u_z)
   };
 
+  /// A die's contact zone for a bilateral solve (contact.method "fixed"; DESIGN.md 4, 7.1):
+  /// the interval [s_lo, s_hi] along the die's part, measured from its centre
+  /// (axisym::DieFrame), and the indentation delta [m]. In the zone the outward normal
+  /// displacement is u.n = g0(|s|) - delta and the shear traction vanishes; the rest of the
+  /// part is traction free.
+  struct DieZone
+  {
+    std::string part;
+    double s_lo = 0, s_hi = 0;
+    double indentation = 0;
+  };
+
   class OutlineStructures
   {
   public:
-    /// `degree`: the degree of the B_e Legendre polynomials. Throws InputError for
-    /// conditions the structures do not support (a symmetry edge not along r or z, a die).
-    OutlineStructures(const axisym::Body &body, int degree);
+    /// `degree`: the degree of the B_e Legendre polynomials. `zones`: one per die part of the
+    /// body (a die part without a zone is refused). Each die part's edges are split at the
+    /// zone's ends: the zone's sub-edges are Y edges with the prescribed normal displacement
+    /// (u_r or u_z, a function of s), the others traction-free S edges; body() is the split
+    /// body (the zone keeps the part's name, the free sub-edges are part "<part>#free").
+    /// Throws InputError for conditions the structures do not support (a symmetry edge or a
+    /// die part not along r or z, a die without a zone).
+    OutlineStructures(const axisym::Body &body, int degree, const std::vector<DieZone> &zones = {});
 
     OutlineStressValues stress(const Eigen::Ref<const Eigen::VectorXd> &r,
                                const Eigen::Ref<const Eigen::VectorXd> &z) const;
@@ -146,6 +164,11 @@ namespace rfm
     const std::vector<EdgeOmega> &omegas() const { return omegas_; }
     /// The traction t = sigma . n prescribed at a point of edge e (0 for a non-S edge).
     std::array<double, 2> prescribed_traction(int edge, double r, double z) const;
+    /// Edge e of body() in a die's zone: the prescribed outward normal displacement
+    /// u.n = g0(|s|) - delta at a point of it (s from the point's projection on the part).
+    /// Precondition: in_die_zone(e).
+    double die_normal_displacement(int edge, double r, double z) const;
+    bool in_die_zone(int edge) const { return zone_of_edge_.at(edge) >= 0; }
     /// How far the polynomial degree of displacement component m (0: u_r, 1: u_z) is
     /// lowered in r and in z. Its omega is the product over the edges where u_m is
     /// constrained; an edge along z (r = const) has degree 1 in r, one along r degree 1 in
@@ -176,7 +199,15 @@ namespace rfm
     std::array<double, 3> particular(int edge, double r, double z) const;
     std::array<double, 3> tangent_tensor(int edge, double r, double z) const;
     // sum_e v_e W_e over `edges` with values v_e, and its gradient.
-    RValue blend(const std::vector<int> &edges, const std::vector<double> &values, double r,
+    /// A prescribed displacement component on a constrained edge: a constant, or a die
+    /// zone's normal displacement (times the normal's component).
+    struct Prescribed
+    {
+      double constant = 0.0;
+      int zone = -1; ///< index into zones_
+    };
+    RValue prescribed(const Prescribed &v, double r, double z) const;
+    RValue blend(const std::vector<int> &edges, const std::vector<Prescribed> &values, double r,
                  double z) const;
     // The factor of the rz components of edge e at a point: omega_Ye / (omega_Ye + omega_e),
     // omega_Ye the product over the Y edges where T_e or s0_e has shear (1 if none).
@@ -199,7 +230,19 @@ namespace rfm
     std::vector<StressEdge> chain_kind_;
     std::vector<int> boundary_slot_;      ///< per S edge: its block of boundary columns, or -1
     int n_general_ = 0;                   ///< S edges with boundary columns
-    std::vector<double> u_r_values_, u_z_values_;
+    std::vector<Prescribed> u_r_values_, u_z_values_;
+    /// The zones: the die's frame and profile, delta, and the normal's component (0: r, 1: z)
+    /// and sign.
+    struct Zone
+    {
+      axisym::DieFrame frame;
+      axisym::DieProfile profile;
+      double indentation = 0;
+      int component = 0;
+      double sign = 1;
+    };
+    std::vector<Zone> zones_;
+    std::vector<int> zone_of_edge_; ///< per edge of body_: its zone, or -1
     std::vector<std::vector<int>> shear_y_edges_; ///< per edge (S edges only)
   };
 } // namespace rfm

@@ -130,16 +130,43 @@ namespace rfm
   // Every condition holds at random boundary points for random coefficients, to 1e-12
   // relative: sigma . n = t on traction edges, sigma_rz = 0 and u . n = 0 on symmetry edges
   // and the axis, u = u_bar on displacement edges.
+  // Dies with a given zone (a bilateral solve): a one-edge zone on the end face of a solid
+  // cylinder (centre on the axis), a two-edge zone on the side of a shaft, and the legacy
+  // cylinder's die on its outer side (centre on the mirror plane).
+  std::vector<std::pair<axisym::Problem, std::vector<DieZone>>> die_cases()
+  {
+    std::vector<std::pair<axisym::Problem, std::vector<DieZone>>> out;
+    out.emplace_back(axisym::parse_problem(axisym::testing::punched_cylinder()),
+                     std::vector<DieZone>{{"top", -0.004, 0.0, 2e-5}});
+    nlohmann::json shaft = axisym::testing::punched_cylinder();
+    shaft["boundary"]["top"] = {{"symmetry", true}};
+    shaft["boundary"]["side"]["die"] = {{"indentation", 3e-6},
+                                        {"center", {0.02, 0.01}},
+                                        {"profile", {{"shape", "paraboloid"}, {"radius", 0.05}}}};
+    out.emplace_back(axisym::parse_problem(shaft), std::vector<DieZone>{{"side", -0.003, 0.002, 3e-6}});
+    out.emplace_back(axisym::parse_problem(nlohmann::json::parse(R"({
+      "geometry": {"inner_radius": 0.1, "outer_radius": 0.2, "length": 0.4},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3},
+      "die": {"indentation": 1.0e-6}})")),
+                     std::vector<DieZone>{{"outer", 0.0, 0.1, 1e-6}});
+    return out;
+  }
+
   TEST(OutlineStructures, EveryConditionHoldsForRandomCoefficients)
   {
     std::mt19937 rng(11);
     std::normal_distribution<double> coef(0.0, 1.0);
+    std::vector<std::pair<axisym::Problem, std::vector<DieZone>>> cases;
     for (const axisym::Problem &p :
          {sphere({{"traction", {1.0e6, -3.0e6}}}), sphere(nlohmann::json::object()),
           grooved_shaft(), ring()})
+      cases.emplace_back(p, std::vector<DieZone>{});
+    for (const auto &c : die_cases())
+      cases.push_back(c);
+    for (const auto &[p, zones] : cases)
       {
-        const axisym::Body &body = *p.body;
-        const OutlineStructures s(body, 6);
+        const OutlineStructures s(*p.body, 6, zones);
+        const axisym::Body &body = s.body(); // split at the zones' ends
         Eigen::VectorXd q_b(s.n_boundary_columns());
         for (Eigen::Index j = 0; j < q_b.size(); ++j)
           q_b[j] = coef(rng) * 1e6;
@@ -194,6 +221,20 @@ namespace rfm
                       EXPECT_NEAR(u[0], c.displacement[0], 1e-18) << edge.part;
                       EXPECT_NEAR(u[1], c.displacement[1], 1e-18) << edge.part;
                       break;
+                    case PartCondition::Kind::die:
+                      {
+                        // The zone: shear free, u.n = g0(|s|) - delta, written here from the
+                        // die's frame and profile.
+                        const axisym::DieCondition &die = p.body->conditions.at(edge.part).die;
+                        const axisym::DieFrame f = axisym::die_frame(*p.body, edge.part);
+                        const double target =
+                          die.profile.gap(std::abs(f.coordinate({r[k], z[k]}))) - zones[0].indentation;
+                        ASSERT_TRUE(s.in_die_zone(e));
+                        EXPECT_NEAR(s.die_normal_displacement(e, r[k], z[k]), target, 1e-20);
+                        EXPECT_NEAR(sigma[rz], 0.0, 1e-12 * scale) << edge.part;
+                        EXPECT_NEAR(u[0] * n_r + u[1] * n_z, target, 1e-18) << edge.part;
+                        break;
+                      }
                     default: break;
                   }
               }
@@ -252,6 +293,31 @@ namespace rfm
         const double ratio = v.omega(1, rr) / v.omega(0, rr);
         EXPECT_NEAR(std::log2(ratio), c.order, 0.05) << "join (" << c.join.r << ", " << c.join.z << ")";
       }
+  }
+
+  // The split: a one-edge zone leaves one free sub-edge, a two-edge zone two, a zone over
+  // the whole part none; the zone's sub-edge keeps the part's name.
+  TEST(OutlineStructures, DieZoneSplitsItsPart)
+  {
+    const auto cases = die_cases();
+    auto count = [](const axisym::Body &b, const std::string &part) {
+      return std::count_if(b.outline.edges().begin(), b.outline.edges().end(),
+                           [&](const axisym::OutlineEdge &e) { return e.part == part; });
+    };
+    const OutlineStructures one(*cases[0].first.body, 4, cases[0].second);
+    EXPECT_EQ(count(one.body(), "top"), 1);
+    EXPECT_EQ(count(one.body(), "top#free"), 1);
+    const OutlineStructures two(*cases[1].first.body, 4, cases[1].second);
+    EXPECT_EQ(count(two.body(), "side"), 1);
+    EXPECT_EQ(count(two.body(), "side#free"), 2);
+    const OutlineStructures whole(*cases[2].first.body, 4, {{"outer", 0.0, 0.2, 1e-6}});
+    EXPECT_EQ(count(whole.body(), "outer"), 1);
+    EXPECT_EQ(count(whole.body(), "outer#free"), 0);
+    EXPECT_TRUE(whole.body().mirrored);
+    // A die part without a zone, and a zone on a part without a die.
+    EXPECT_THROW(OutlineStructures(*cases[0].first.body, 4), axisym::InputError);
+    EXPECT_THROW(OutlineStructures(*cases[0].first.body, 4, {{"side", 0.0, 0.01, 1e-6}}),
+                 std::invalid_argument);
   }
 
   TEST(OutlineStructures, RejectsAnInclinedSymmetryLine)
