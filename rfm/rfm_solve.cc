@@ -95,14 +95,101 @@ namespace
       }
     return out;
   }
+  // A die on an outline part (DESIGN.md 7.1) as the RFM solves it so far: the bilateral
+  // problem on a given zone (contact.method "fixed", contact.half_width c: the zone is
+  // [0, c] from a centre at the part's end, [-c, c] otherwise, within the part; default the
+  // whole part). Throws InputError for what the outline RFM cannot do yet.
+  std::vector<rfm::DieZone> die_zones(const axisym::Problem &problem)
+  {
+    const std::vector<std::string> parts = problem.body->die_parts();
+    if (parts.empty())
+      return {};
+    if (parts.size() > 1)
+      throw axisym::InputError("boundary." + parts[1] +
+                               ".die: the RFM solves one die on an outline section so far "
+                               "(fem_solve solves several)");
+    if (problem.contact.method != "fixed")
+      throw axisym::InputError(
+        "boundary." + parts[0] + ".die: the RFM solves a die on an outline part for a given "
+        "zone only so far (contact.method \"fixed\" with contact.half_width); contact.method = \"" +
+        problem.contact.method + "\" (the zone's search) is on the hollow-cylinder form; "
+        "fem_solve solves for the zone");
+    const axisym::DieFrame f = axisym::die_frame(*problem.body, parts[0]);
+    const axisym::DieCondition &die = problem.body->conditions.at(parts[0]).die;
+    if (!die.indentation)
+      throw axisym::InputError("boundary." + parts[0] +
+                               ".die.force: the RFM takes an indentation on an outline part so "
+                               "far (fem_solve takes a force)");
+    const double c = problem.contact.half_width.value_or(std::max(-f.s_min, f.s_max));
+    return {rfm::DieZone{parts[0], std::max(f.s_min, -c), std::min(f.s_max, c), *die.indentation}};
+  }
+
+  // The die's record (DESIGN.md 7: `contact` and `dies`), for a bilateral zone: c, the zone
+  // when it has two free ends, P two ways, the pressure trace along the part.
+  nlohmann::json outline_die_to_json(const axisym::Problem &problem, const rfm::OutlineModel &m,
+                                     const rfm::DieZone &zone, const rfm::Functionals &phi)
+  {
+    const axisym::DieFrame f = axisym::die_frame(*problem.body, zone.part);
+    const rfm::OutlineModel::DieForce force = m.die_force(zone.part);
+    const double tol = 1e-9 * problem.body->outline.size();
+    const bool has_up = f.s_max > tol, has_down = f.s_min < -tol;
+    const double half_width =
+      has_up && has_down ? 0.5 * (zone.s_hi - zone.s_lo) : (has_up ? zone.s_hi : -zone.s_lo);
+    nlohmann::json c = {{"part", zone.part},
+                        {"method", "fixed"},
+                        {"half_width", half_width},
+                        {"indentation", zone.indentation},
+                        {"force", force.domain},
+                        {"force_trace", force.trace},
+                        {"edge_intensity", nullptr},
+                        {"iterations",
+                         {{{"half_width", half_width},
+                           {"force", force.domain},
+                           {"lagrange", phi.lagrange},
+                           {"castigliano", phi.castigliano},
+                           {"reissner", phi.reissner}}}}};
+    if (has_up && has_down)
+      c["zone"] = {zone.s_lo, zone.s_hi};
+    // The pressure trace -sigma_nn at 101 points of the zone (p is the trace too: the
+    // consistent reactions are not on the outline path yet).
+    const int n = 101;
+    Eigen::VectorXd r(n), z(n), s(n);
+    for (int k = 0; k < n; ++k)
+      {
+        s[k] = zone.s_lo + (zone.s_hi - zone.s_lo) * k / (n - 1.0);
+        const axisym::Point x = f.point_at(s[k]);
+        r[k] = x.r, z[k] = x.z;
+      }
+    const rfm::FieldValues v = m.evaluate(r, z);
+    nlohmann::json pressure = nlohmann::json::array();
+    for (int k = 0; k < n; ++k)
+      {
+        const double p = -(v.sigma(k, rfm::rr) * f.normal.r * f.normal.r +
+                            2 * v.sigma(k, rfm::rz) * f.normal.r * f.normal.z +
+                            v.sigma(k, rfm::zz) * f.normal.z * f.normal.z);
+        pressure.push_back({{"s", s[k]}, {"r", r[k]}, {"z", z[k]}, {"p", p}, {"p_trace", p}});
+      }
+    c["pressure"] = pressure;
+    return c;
+  }
+
   // A section given by its outline (DESIGN.md 7.1): the outline structures, at a fixed
-  // degree or to a tolerance. Same result keys as the hollow cylinder (no contact).
+  // degree or to a tolerance, and a die on a given zone.
   int solve_outline(axisym::Problem problem, const std::optional<double> target_indicator,
                     const std::string &output_path, const std::string &vtu_directory)
   {
     std::unique_ptr<rfm::OutlineModel> model;
     std::optional<rfm::DegreeSequence<rfm::OutlineModel>> sequence;
-    if (target_indicator)
+    const std::vector<rfm::DieZone> zones = die_zones(problem);
+    if (!zones.empty())
+      {
+        fmt::print(stderr, "rfm_solve: outline section, degree p = {}, die on {}: bilateral "
+                           "zone [{:.6g}, {:.6g}] m along the part\n",
+                   problem.rfm.degree, zones[0].part, zones[0].s_lo, zones[0].s_hi);
+        model = std::make_unique<rfm::OutlineModel>(problem, problem.rfm, rfm::SolverOptions{},
+                                                    zones);
+      }
+    else if (target_indicator)
       {
         fmt::print(stderr, "rfm_solve: outline section; p = 2, 4, ... until the indicator < "
                            "{:.1e} (up to p = {})\n",
@@ -160,6 +247,31 @@ namespace
                              {"indicator", phi.indicator()},
                              {"units", "J per radian"}};
     result["samples"] = fields_to_json(problem, *model);
+    if (!zones.empty())
+      {
+        result["contact"] = outline_die_to_json(problem, *model, zones[0], phi);
+        result["dies"] = nlohmann::json::array({result["contact"]});
+        // A zone that ends inside its part: the edge's singular field is not in the outline
+        // space yet (edge modes: issue 23), so P(c) is in doubt there.
+        const axisym::DieFrame f = axisym::die_frame(*problem.body, zones[0].part);
+        const double tol = 1e-9 * problem.body->outline.size();
+        if (zones[0].s_lo > f.s_min + tol || zones[0].s_hi < f.s_max - tol)
+          {
+            result["diagnostics"]["status"] = "warning";
+            result["diagnostics"]["message"] =
+              "the zone ends inside part " + zones[0].part +
+              ": the outline RFM has no edge modes yet, so the edge's singular field is missing "
+              "and P(c) is in doubt (the paper's die at c = 0.45a-0.6a: 0.2-0.7 % off at "
+              "p = 8-16; a zone small against the section far more: Hertz on a cylinder 23 "
+              "contact radii across, 15 % at p = 16)";
+            fmt::print(stderr, "rfm_solve: warning: {}\n",
+                       result["diagnostics"]["message"].get<std::string>());
+          }
+        fmt::print(stderr, "rfm_solve: die on {}: c = {:.6g} m, P = {:.6g} N (trace {:.6g} N)\n",
+                   zones[0].part, result["contact"]["half_width"].get<double>(),
+                   result["contact"]["force"].get<double>(),
+                   result["contact"]["force_trace"].get<double>());
+      }
     if (!output_path.empty())
       axisym::write_json_atomically(output_path, result);
     if (!vtu_directory.empty())
@@ -233,8 +345,12 @@ int main(int argc, char **argv)
                                      "see the contact-edge error; give --degree)");
           problem.rfm.tolerance = tolerance, problem.rfm.degree_given = false;
         }
+      const bool has_die = problem.die || !problem.body->die_parts().empty();
+      if (tolerance > 0 && has_die && !problem.die)
+        throw axisym::InputError("--tolerance: not for a die problem (the indicator does not "
+                                 "see the contact-edge error; give --degree)");
       std::optional<double> target_indicator;
-      if (!problem.rfm.degree_given && !problem.die)
+      if (!problem.rfm.degree_given && !has_die)
         target_indicator = problem.rfm.tolerance.value_or(axisym::RfmSettings::default_tolerance);
       if (target_indicator)
         problem.rfm.degree = problem.rfm.max_degree; // for the memory estimate below

@@ -237,6 +237,58 @@ namespace
     EXPECT_TRUE(fs::exists(dir / "vtu" / "rfm_solution.vtu"));
   }
 
+  // A die on an outline part: the paper's die written as an outline (the half section, not
+  // mirrored: its force is half the body's), solved on a given zone; the zone's search is
+  // refused (exit 2) until the outline RFM has it.
+  TEST(RfmSolveCli, OutlineDieOnAGivenZone)
+  {
+    const fs::path dir = fs::temp_directory_path() / "rfm_cli_outline_die";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    nlohmann::json j = nlohmann::json::parse(R"({
+      "geometry": {"outline": [{"start": [0.1, 0.0]}, {"line_to": [0.2, 0.0], "part": "mid_plane"},
+        {"line_to": [0.2, 0.2], "part": "outer"}, {"line_to": [0.1, 0.2], "part": "end"},
+        {"line_to": [0.1, 0.0], "part": "inner"}]},
+      "boundary": {"mid_plane": {"symmetry": true},
+                   "outer": {"die": {"indentation": 1e-6,
+                                     "profile": {"shape": "paraboloid", "radius": 10000.0}}}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3},
+      "contact": {"method": "fixed"},
+      "rfm": {"degree": 8}})");
+    const fs::path in = dir / "problem.json", out = dir / "result.json";
+    std::ofstream(in) << j.dump();
+    Outcome o = run(in.string() + " --output " + out.string());
+    ASSERT_EQ(o.status, 0) << o.err;
+    nlohmann::json r = nlohmann::json::parse(std::ifstream(out));
+    // The whole part in contact (c defaults to it): the paper's iteration 0, half of the FEM's
+    // bilateral force 128728.67459 N (Q2, L = 5) on this half section.
+    EXPECT_EQ(r.at("contact").at("part"), "outer");
+    EXPECT_NEAR(r.at("contact").at("force").get<double>(), 0.5 * 128728.67459, 1e-8 * 64364.3);
+    EXPECT_NEAR(r.at("contact").at("half_width").get<double>(), 0.2, 1e-15);
+    EXPECT_EQ(r.at("diagnostics").at("status"), "ok");
+    EXPECT_EQ(r.at("dies").size(), 1u);
+    EXPECT_EQ(r.at("contact").at("pressure").size(), 101u);
+
+    // A zone that ends inside the part: solved, with a warning.
+    j["contact"]["half_width"] = 0.1;
+    std::ofstream(in) << j.dump();
+    o = run(in.string() + " --output " + out.string());
+    ASSERT_EQ(o.status, 0) << o.err;
+    r = nlohmann::json::parse(std::ifstream(out));
+    EXPECT_EQ(r.at("diagnostics").at("status"), "warning");
+    EXPECT_NE(o.err.find("edge modes"), std::string::npos) << o.err;
+
+    // The zone's search: not on the outline path yet.
+    j.erase("contact");
+    std::ofstream(in) << j.dump();
+    fs::remove(out);
+    o = run(in.string() + " --output " + out.string());
+    EXPECT_EQ(o.status, 2);
+    EXPECT_NE(o.err.find("boundary.outer.die"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("fixed"), std::string::npos) << o.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+
   // --vtu DIR creates DIR (and its parents) and writes the fields with the FEM's names and
   // the displacement as one vector; a DIR that is a file is bad input.
   TEST(RfmSolveCli, VtuCreatesTheFolderAndWritesTheFields)
