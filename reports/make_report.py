@@ -662,7 +662,7 @@ def die_time_to_accuracy_figure(d, fem_degree, threads, out_dir):
 
 def fem_convergence_tables(data_dir):
     """The fem_convergence studies (README command 1) as tables."""
-    md = ["## 7. The FEM reference on its own (`fem_convergence`)", ""]
+    md = ["## 8. The FEM reference on its own (`fem_convergence`)", ""]
     lame = load(data_dir, "fem_convergence_lame.json")
     if lame:
         md.append(f"FEM self-study `fem_convergence` on the Lame cylinder (Q{lame['degree']}, exact solution known; "
@@ -1013,6 +1013,123 @@ def body_loads_section(bl, out_dir, sphere=None):
     return md
 
 
+def pressure_profile(profile):
+    """(|s|, p, p_trace) of a die's pressure record, sorted by |s| (the centre first)."""
+    pts = sorted(((abs(q["s"]), q["p"], q["p_trace"]) for q in profile), key=lambda t: t[0])
+    return [np.array([t[i] for t in pts]) for i in range(3)]
+
+
+def dies_section(dies, out_dir):
+    """Dies on parts of outline sections (issue 23): the FEM against closed forms and
+    independent models (`dies_on_parts`)."""
+    md = ["## 7. Dies on parts of an outline section (`dies_on_parts`, FEM)", "",
+          "A rigid die on any straight part (`boundary.PART.die`, DESIGN.md 7.1), solved by the FEM "
+          "reference: penalty active set on the part, force control by the linearity in the "
+          "indentation, the mesh refined toward the zone and its free ends "
+          "(`fem_reference/README.md`). The RFM solves such a die on a given zone only so far "
+          "(`contact.method: fixed`; its contact edge modes are not on the outline path yet), so "
+          "these cases have no RFM columns yet.", ""]
+    h = dies["hertz"]
+    hz = h["hertz"]
+    levels = sorted((k for k in h["fem"] if k.startswith("L")), key=lambda k: int(k[1:]))
+    md.append(f"### 7.1 Hertz: a paraboloid pressed by a force on the end face of a solid cylinder "
+              f"(`{h['problem_file']}`)")
+    md.append("")
+    md.append(f"Closed form of the half-space: a = (3 P R / 4 E*)^(1/3) = {hz['contact_radius'] * 1e3:.6f} mm, "
+              f"p0 = 3 P / (2 pi a^2) = {hz['peak_pressure'] / 1e6:.2f} MPa, delta = a^2 / R = "
+              f"{hz['indentation_half_space'] * 1e6:.4f} um. The cylinder is "
+              f"{0.02 / hz['contact_radius']:.0f} contact radii in radius and height, on a frictionless "
+              "support: under force control the finite body changes a and p0 at third order in a / H, "
+              "and its indentation is smaller (the column is stiffer than the half-space far away).")
+    md.append("")
+    md.append("| L | DoFs | a [mm] | a error | p0 [MPa] | p0 error | delta [um] | time [s] |")
+    md.append("|---|---|---|---|---|---|---|---|")
+    for k in levels:
+        r = h["fem"][k]
+        md.append(f"| {k[1:]} | {r['dofs']} | {r['contact_radius'] * 1e3:.6f} | "
+                  f"{r['contact_radius_error_relative']:.2e} | {r['peak_pressure'] / 1e6:.3f} | "
+                  f"{r['peak_pressure_error_relative']:.2e} | {r['indentation'] * 1e6:.5f} | "
+                  f"{r['seconds']:.2f} |")
+    md.append("")
+    s, p, pt = pressure_profile(h["fem"]["pressure"])
+    a, p0 = hz["contact_radius"], hz["peak_pressure"]
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    x = np.linspace(0, 1.3 * a, 300)
+    ax.plot(x * 1e3, np.where(x < a, p0 * np.sqrt(np.clip(1 - (x / a) ** 2, 0, None)), 0) / 1e6, "k-",
+            label="Hertz")
+    ax.plot(s * 1e3, p / 1e6, "o", ms=3, label=f"FEM L = {levels[-1][1:]}: penalty pressure")
+    ax.plot(s * 1e3, pt / 1e6, ".", ms=2, alpha=0.5, label="FEM trace -sigma_nn")
+    ax.set_xlim(0, 1.3 * a * 1e3)
+    decorate(ax, "distance from the centre s [mm]", "p [MPa]", "Hertz: contact pressure")
+    md += [f"![hertz]({save(fig, out_dir, 'die_hertz_pressure.png')})", ""]
+
+    def punch(key, title, extra):
+        c = dies[key]
+        lv = sorted((k for k in c["fem"] if k.startswith("L")), key=lambda k: int(k[1:]))
+        out = [f"### {title} (`{c['problem_file']}`)", ""] + extra + [
+            "| L | DoFs | c [mm] | P [N] | p(0) [MPa] | time [s] |", "|---|---|---|---|---|---|"]
+        for k in lv:
+            r = c["fem"][k]
+            out.append(f"| {k[1:]} | {r['dofs']} | {r['half_width'] * 1e3:.6f} | {r['force']:.3f} | "
+                       f"{r['centre_pressure'] / 1e6:.3f} | {r['seconds']:.2f} |")
+        out.append("")
+        out.append(f"Change between the last two levels: c {c['fem']['half_width_change_last_relative']:.1e}, "
+                   f"P {c['fem']['force_change_last_relative']:.1e}.")
+        out.append("")
+        return out, lv
+    fr, lv = punch("flat_rounded", "7.2 Flat punch with rounded edges, pressed by an indentation",
+                   ["No closed form; the contact radius and force against the level L.", ""])
+    md += fr
+    s, p, pt = pressure_profile(dies["flat_rounded"]["fem"]["pressure"])
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    ax.plot(s * 1e3, p / 1e6, "o", ms=3, label=f"FEM L = {lv[-1][1:]}: penalty pressure")
+    ax.plot(s * 1e3, pt / 1e6, ".", ms=2, alpha=0.5, label="FEM trace -sigma_nn")
+    ax.set_xlim(0, 1.5 * dies["flat_rounded"]["fem"]["finest"]["half_width"] * 1e3)
+    decorate(ax, "distance from the centre s [mm]", "p [MPa]", "Flat punch with rounded edges")
+    md += [f"![flat_rounded]({save(fig, out_dir, 'die_flat_rounded_pressure.png')})", ""]
+
+    f = dies["flat"]
+    fl, lv = punch("flat", "7.3 Flat punch with a sharp edge, pressed by an indentation",
+                   [f"Against the half-space (Boussinesq, Sneddon): P / (2 E* b delta) = "
+                    f"{f['force_over_boussinesq']:.4f} (the finite column is stiffer), and the pressure "
+                    f"at the centre against P / (2 pi b^2) with the FEM's own P: "
+                    f"{f['centre_pressure_over_sneddon']:.4f}. The edge pressure is singular; the FEM does "
+                    "not extract its intensity yet.", ""])
+    md += fl
+    s, p, pt = pressure_profile(f["fem"]["pressure"])
+    b = f["fem"]["finest"]["half_width"]
+    force = f["fem"]["finest"]["force"]
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    x = np.linspace(0, 0.995 * b, 300)
+    ax.plot(x * 1e3, force / (2 * np.pi * b * np.sqrt(b * b - x * x)) / 1e6, "k-",
+            label="Sneddon, P / (2 pi b sqrt(b^2 - s^2)), FEM's P")
+    ax.plot(s * 1e3, p / 1e6, "o", ms=3, label=f"FEM L = {lv[-1][1:]}: penalty pressure")
+    ax.set_xlim(0, 1.05 * b * 1e3)
+    ax.set_ylim(0, 6 * force / (2 * np.pi * b * b) / 1e6)
+    decorate(ax, "distance from the centre s [mm]", "p [MPa]", "Flat punch with a sharp edge")
+    md += [f"![flat]({save(fig, out_dir, 'die_flat_pressure.png')})", ""]
+
+    g = dies["ring"]
+    md.append(f"### 7.4 A ring die at the mid-length of a shaft: two free edges (`{g['problem_file']}`)")
+    md.append("")
+    md.append(f"The shaft modelled whole (the zone has two free ends) against the mirrored half (one free "
+              f"end, the centre on the symmetry plane), FEM L = {g['level']}:")
+    md.append("")
+    md.append("| model | zone [mm] | P [N] | DoFs | time [s] |")
+    md.append("|---|---|---|---|---|")
+    md.append(f"| whole | [{g['whole']['zone'][0] * 1e3:.6f}, {g['whole']['zone'][1] * 1e3:.6f}] | "
+              f"{g['whole']['force']:.2f} | {g['whole']['dofs']} | {g['whole']['seconds']:.2f} |")
+    md.append(f"| mirrored half | [-{g['half']['half_width'] * 1e3:.6f}, {g['half']['half_width'] * 1e3:.6f}] | "
+              f"2 x {g['half']['force']:.2f} | {g['half']['dofs']} | {g['half']['seconds']:.2f} |")
+    md.append("")
+    md.append(f"Both ends against the half's c: {g['start_vs_half_relative']:.1e} and "
+              f"{g['end_vs_half_relative']:.1e}; forces {g['force_vs_half_relative']:.1e}. Plane-strain "
+              f"Hertz for the ring's line load gives b = {g['plane_strain_hertz_half_width'] * 1e3:.6f} mm "
+              "(the shaft's curvature and finite size enter at the per cent level).")
+    md.append("")
+    return md
+
+
 def fem_lame_rows(cmp):
     """FEM Lame runs of the comparison driver, grouped by element degree (None without it)."""
     if not cmp:
@@ -1054,13 +1171,14 @@ def main():
               f"numpy {np.__version__}, matplotlib {matplotlib.__version__}")
     cmp = load(args.data, "rfm_vs_fem.json")
     for d in (lame, die, cmp, load(args.data, "bodies_of_revolution.json"),
-              load(args.data, "body_loads.json")):
+              load(args.data, "body_loads.json"), load(args.data, "dies_on_parts.json")):
         if d:
             threads = f" on {d['threads']} thread{'s' if d['threads'] != 1 else ''}" if "threads" in d else ""
             md.append(f"* driver `{d['driver']}` in mode `{d['mode']}`{threads}; the problem files it read are "
                       "echoed in `reports/data/*.json`")
     counts = sorted({d["threads"] for d in (lame, die, cmp, load(args.data, "bodies_of_revolution.json"),
-                                            load(args.data, "body_loads.json")) if d and "threads" in d})
+                                            load(args.data, "body_loads.json"),
+                                            load(args.data, "dies_on_parts.json")) if d and "threads" in d})
     if len(counts) == 1:
         md.append(f"* README command (1) runs the drivers two at a time, one per core, each on "
                   f"{threads_text(counts[0])} (`reports/CMakeLists.txt`): the wall times in this report were "
@@ -1096,6 +1214,9 @@ def main():
     body_loads = load(args.data, "body_loads.json")
     if body_loads:
         md += body_loads_section(body_loads, args.out, bor["sphere"] if bor else None)
+    dies = load(args.data, "dies_on_parts.json")
+    if dies:
+        md += dies_section(dies, args.out)
     md += fem_convergence_tables(args.data)
 
     tmp = os.path.join(args.out, "report.md.tmp")
