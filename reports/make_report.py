@@ -1093,8 +1093,13 @@ def dies_section(dies, out_dir):
                    [f"Against the half-space (Boussinesq, Sneddon): P / (2 E* b delta) = "
                     f"{f['force_over_boussinesq']:.4f} (the finite column is stiffer), and the pressure "
                     f"at the centre against P / (2 pi b^2) with the FEM's own P: "
-                    f"{f['centre_pressure_over_sneddon']:.4f}. The edge pressure is singular; the FEM does "
-                    "not extract its intensity yet.", ""])
+                    f"{f['centre_pressure_over_sneddon']:.4f}. The edge pressure is singular: its intensity "
+                    "K = sqrt(2 pi) a_1 (DESIGN.md 4.4; negative: compressive) from the FEM's field by the "
+                    "interaction integral in the edge's frame (`rfm/contact.h`), against Sneddon's "
+                    "K = -sqrt(2 pi) P / (2 pi b sqrt(2 b)) with the FEM's P: "
+                    + ", ".join(f"L = {k[1:]} {v['edge_intensity']:.5e} Pa m^1/2 (ratio {v['over_sneddon']:.4f})"
+                                for k, v in sorted(f["fem"]["edge_intensity"].items(), key=lambda kv: int(kv[0][1:])))
+                    + ".", ""])
     md += fl
     s, p, pt = pressure_profile(f["fem"]["pressure"])
     b = f["fem"]["finest"]["half_width"]

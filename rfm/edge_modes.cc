@@ -8,10 +8,17 @@ namespace rfm
   EdgeModeValue edge_mode(const int n, const double r, const double z, const double r_edge,
                           const double z_edge, const Material &material)
   {
+    return edge_mode(n, r, z, EdgeFrame::outer_side(r_edge, z_edge), material);
+  }
+
+  EdgeModeValue edge_mode(const int n, const double r, const double z, const EdgeFrame &frame,
+                          const Material &material)
+  {
     const double nu = material.poisson_ratio;
     const double mu = material.youngs_modulus / (2.0 * (1.0 + nu));
     const double kappa = 3.0 - 4.0 * nu;
-    const double x = z_edge - z, y = r_edge - r;
+    const double dr = r - frame.r, dz = z - frame.z;
+    const double x = dr * frame.t[0] + dz * frame.t[1], y = dr * frame.n[0] + dz * frame.n[1];
     const double rho = std::hypot(x, y);
     const double theta = std::atan2(y, x);
     const double h = 0.5 * n, s = (n % 2 == 0) ? 1.0 : -1.0;
@@ -37,12 +44,21 @@ namespace rfm
     const double s_xy = h * rho_h1 *
                         (-(h + s) * std::sin((h - 1.0) * theta) +
                          (h - 1.0) * std::sin((h - 3.0) * theta));
-    v.u_r = -u_y;
-    v.u_z = -u_x;
-    v.sigma << s_yy, s_xx, nu * (s_xx + s_yy), s_xy;
+    // Back to the meridian components (the legacy frame gives u_r = -u_y, u_z = -u_x,
+    // sigma_rr = sigma_yy, sigma_zz = sigma_xx, sigma_rz = sigma_xy exactly).
+    const double t_r = frame.t[0], t_z = frame.t[1], n_r = frame.n[0], n_z = frame.n[1];
+    v.u_r = u_x * t_r + u_y * n_r;
+    v.u_z = u_x * t_z + u_y * n_z;
+    const double cross = t_r * n_z + t_z * n_r;
+    v.sigma << s_xx * t_r * t_r + 2.0 * s_xy * t_r * n_r + s_yy * n_r * n_r,
+      s_xx * t_z * t_z + 2.0 * s_xy * t_z * n_z + s_yy * n_z * n_z, nu * (s_xx + s_yy),
+      s_xx * t_r * t_z + s_xy * cross + s_yy * n_r * n_z;
     // Plane-strain Hooke's law: eps = (sigma - nu tr sigma) / (2 mu), gamma = sigma_xy / mu.
     const double tr = nu * (s_xx + s_yy);
-    v.strain << (s_yy - tr) / (2.0 * mu), (s_xx - tr) / (2.0 * mu), v.u_r / r, s_xy / mu;
+    const double e_xx = (s_xx - tr) / (2.0 * mu), e_yy = (s_yy - tr) / (2.0 * mu), g_xy = s_xy / mu;
+    v.strain << e_xx * t_r * t_r + g_xy * t_r * n_r + e_yy * n_r * n_r,
+      e_xx * t_z * t_z + g_xy * t_z * n_z + e_yy * n_z * n_z, v.u_r / r,
+      2.0 * e_xx * t_r * t_z + g_xy * cross + 2.0 * e_yy * n_r * n_z;
     return v;
   }
 
@@ -56,11 +72,21 @@ namespace rfm
             -30.0 * t2 * (1.0 - t) * (1.0 - t) / cutoff_radius};
   }
 
+  EdgeEnrichment::EdgeEnrichment(const EdgeFrame &frame, const double cutoff_radius,
+                                 std::vector<int> modes, const Material &material,
+                                 const int multiplier_degree)
+    : EdgeEnrichment(frame.r, frame.z, cutoff_radius, std::move(modes), material,
+                     multiplier_degree)
+  {
+    frame_ = frame;
+  }
+
   EdgeEnrichment::EdgeEnrichment(const double r_edge, const double z_edge,
                                  const double cutoff_radius, std::vector<int> modes,
                                  const Material &material, const int multiplier_degree,
                                  const double end_z)
-    : r_edge_(r_edge)
+    : frame_(EdgeFrame::outer_side(r_edge, z_edge))
+    , r_edge_(r_edge)
     , z_edge_(z_edge)
     , cutoff_radius_(cutoff_radius)
     , modes_(std::move(modes))
@@ -124,7 +150,7 @@ namespace rfm
             eta_pow[i] = eta_pow[i - 1] * eta;
           }
         for (std::size_t j = 0; j < modes_.size(); ++j)
-          v[j] = edge_mode(modes_[j], r[k], z[k], r_edge_, z_edge_, material_);
+          v[j] = edge_mode(modes_[j], r[k], z[k], frame_, material_);
         for (std::size_t j = 0; j < modes_.size(); ++j)
           {
             Eigen::Index col = static_cast<Eigen::Index>(j) * columns_per_mode();

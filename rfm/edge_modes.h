@@ -40,6 +40,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <limits>
 #include <vector>
 
@@ -54,9 +55,34 @@ namespace rfm
     Eigen::Vector4d sigma = Eigen::Vector4d::Zero(), strain = Eigen::Vector4d::Zero();
   };
 
-  /// Mode n (n >= 1; n = -1 is allowed for extraction) at (r, z) for the edge at
-  /// (r_edge, z_edge). At the edge point itself (rho = 0) the singular terms have no value:
-  /// the terms with a negative power of rho are returned as 0 there.
+  /// The local frame of a contact edge on any straight part: the edge point (r, z), the unit
+  /// vector t along the part into the zone (x) and the unit normal n into the body (y). Any
+  /// orthonormal pair will do (a reflection leaves the plane-strain modes valid). The legacy
+  /// outer side r = R2 with the zone at z < c is outer_side(R2, c): t = -e_z, n = -e_r.
+  struct EdgeFrame
+  {
+    double r = 0.0, z = 0.0;
+    std::array<double, 2> t{{0.0, -1.0}}, n{{-1.0, 0.0}};
+
+    static EdgeFrame outer_side(double r_edge, double z_edge)
+    {
+      return {r_edge, z_edge, {{0.0, -1.0}}, {{-1.0, 0.0}}};
+    }
+    /// The meridian point at local (x, y).
+    std::array<double, 2> point(double x, double y) const
+    {
+      return {r + x * t[0] + y * n[0], z + x * t[1] + y * n[1]};
+    }
+  };
+
+  /// Mode n (n >= 1; n = -1 is allowed for extraction) at (r, z) in the edge's frame,
+  /// rotated into the meridian components: u = u_x t + u_y n, sigma = sigma_xx t t +
+  /// sigma_xy (t n + n t) + sigma_yy n n, strains alike (engineering shear), sigma_tt and
+  /// e_tt = u_r / r as above. At the edge point itself (rho = 0) the singular terms have no
+  /// value: the terms with a negative power of rho are returned as 0 there.
+  EdgeModeValue edge_mode(int n, double r, double z, const EdgeFrame &frame,
+                          const Material &material);
+  /// The legacy outer side: edge_mode(n, r, z, EdgeFrame::outer_side(r_edge, z_edge), material).
   EdgeModeValue edge_mode(int n, double r, double z, double r_edge, double z_edge,
                           const Material &material);
 
@@ -92,6 +118,10 @@ namespace rfm
     EdgeEnrichment(double r_edge, double z_edge, double cutoff_radius, std::vector<int> modes,
                    const Material &material, int multiplier_degree = 0,
                    double end_z = std::numeric_limits<double>::infinity());
+    /// At an edge of any straight part (no clipping): the modes in `frame`.
+    EdgeEnrichment(const EdgeFrame &frame, double cutoff_radius, std::vector<int> modes,
+                   const Material &material, int multiplier_degree = 0);
+    const EdgeFrame &frame() const { return frame_; }
 
     double r_edge() const { return r_edge_; }
     double z_edge() const { return z_edge_; }
@@ -120,6 +150,7 @@ namespace rfm
                          const Eigen::Ref<const Eigen::VectorXd> &z) const;
 
   private:
+    EdgeFrame frame_;
     double r_edge_, z_edge_, cutoff_radius_;
     std::vector<int> modes_;
     Material material_;

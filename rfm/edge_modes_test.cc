@@ -77,6 +77,64 @@ namespace rfm
         }
   }
 
+  // The modes in the frame of an edge on any straight part: on an end face z = h with the
+  // zone toward the axis (t = -e_r, n = -e_z) and on a bore r = R1 with the zone above
+  // (t = +e_z, n = +e_r), each mode satisfies the contact face's conditions (u.n = 0, shear 0)
+  // and the free face's (traction 0) in the meridian components, is an elastic field (the
+  // strain of its displacement by central differences), and its meridian stresses are the
+  // local field rotated: sigma_nn = sigma_yy, sigma_tt' = sigma_xx along the part.
+  TEST(EdgeModes, ModesInTheFrameOfAnyStraightPart)
+  {
+    const EdgeFrame end_face{0.004, 0.02, {{-1.0, 0.0}}, {{0.0, -1.0}}};
+    const EdgeFrame bore{0.1, 0.05, {{0.0, 1.0}}, {{1.0, 0.0}}};
+    for (const EdgeFrame &f : {end_face, bore})
+      for (const int n : {-1, 1, 2, 3})
+        for (const double rho : {1e-4, 3e-3})
+          {
+            const double s_scale = std::abs(n) * std::pow(rho, 0.5 * n - 1.0);
+            const double u_scale = std::pow(rho, 0.5 * n) / 1e10;
+            // theta = 0: the contact face, (x, y) = (rho, 0).
+            const auto c = f.point(rho, 0.0);
+            const EdgeModeValue vc = edge_mode(n, c[0], c[1], f, steel);
+            const double u_n = vc.u_r * f.n[0] + vc.u_z * f.n[1];
+            const double s_nt = vc.sigma[rr] * f.n[0] * f.t[0] + vc.sigma[zz] * f.n[1] * f.t[1] +
+                                vc.sigma[rz] * (f.n[0] * f.t[1] + f.n[1] * f.t[0]);
+            EXPECT_LT(std::abs(u_n), 1e-14 * u_scale) << n;
+            EXPECT_LT(std::abs(s_nt), 1e-13 * s_scale) << n;
+            // The same point's local stresses from the legacy frame rotated by hand: the
+            // normal stress on the face is sigma_yy.
+            const EdgeModeValue legacy = edge_mode(n, r_e - 0.0, z_e - rho, r_e, z_e, steel);
+            const double s_nn = vc.sigma[rr] * f.n[0] * f.n[0] + vc.sigma[zz] * f.n[1] * f.n[1] +
+                                2 * vc.sigma[rz] * f.n[0] * f.n[1];
+            EXPECT_NEAR(s_nn, legacy.sigma[rr], 1e-13 * s_scale) << n; // legacy sigma_rr = s_yy
+            // theta = pi: the free face, traction 0.
+            const auto fr = f.point(-rho, 0.0);
+            const EdgeModeValue vf = edge_mode(n, fr[0], fr[1], f, steel);
+            const double t_r = vf.sigma[rr] * f.n[0] + vf.sigma[rz] * f.n[1];
+            const double t_z = vf.sigma[rz] * f.n[0] + vf.sigma[zz] * f.n[1];
+            EXPECT_LT(std::abs(t_r), 1e-13 * s_scale) << n;
+            EXPECT_LT(std::abs(t_z), 1e-13 * s_scale) << n;
+            // Inside (theta = 1.1): the strain of the displacement.
+            const auto in = f.point(rho * std::cos(1.1), rho * std::sin(1.1));
+            const double h = 1e-3 * rho;
+            const EdgeModeValue v = edge_mode(n, in[0], in[1], f, steel);
+            auto at_ = [&](double dr, double dz) { return edge_mode(n, in[0] + dr, in[1] + dz, f, steel); };
+            const EdgeModeValue pr = at_(h, 0), mr = at_(-h, 0), pz = at_(0, h), mz = at_(0, -h);
+            const double scale = v.strain.head<2>().cwiseAbs().maxCoeff() + std::abs(v.strain[rz]);
+            EXPECT_NEAR((pr.u_r - mr.u_r) / (2 * h), v.strain[rr], 1e-5 * scale) << n;
+            EXPECT_NEAR((pz.u_z - mz.u_z) / (2 * h), v.strain[zz], 1e-5 * scale) << n;
+            EXPECT_NEAR((pz.u_r - mz.u_r) / (2 * h) + (pr.u_z - mr.u_z) / (2 * h), v.strain[rz],
+                        1e-5 * scale)
+              << n;
+          }
+    // The legacy frame gives the legacy values bit for bit.
+    const EdgeModeValue a = edge_mode(3, 0.19, 0.1, EdgeFrame::outer_side(r_e, z_e), steel);
+    const EdgeModeValue b = edge_mode(3, 0.19, 0.1, r_e, z_e, steel);
+    EXPECT_EQ(a.u_r, b.u_r);
+    EXPECT_EQ(a.sigma, b.sigma);
+    EXPECT_EQ(a.strain, b.strain);
+  }
+
   // A support clipped at a traction-free end: the stress columns (every mode and multiplier)
   // carry no traction on the end and stay free on the free face; at the edge they are the
   // unclipped columns.

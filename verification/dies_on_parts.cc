@@ -22,12 +22,15 @@
 //   build/bin/dies_on_parts --mode quick --output-dir build/verification-output
 #include "fem_reference/axisymmetric_fem.h"
 #include "problem/problem.h"
+#include "rfm/contact.h"
 #include "verification/driver.h"
+#include "verification/fem_samples.h"
 
 #include <fmt/core.h>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 namespace
@@ -125,9 +128,11 @@ nlohmann::json run(const verification::DriverContext &context)
     results["hertz"] = c;
   }
 
-  // 2. Flat punch with rounded edges, and 3. with a sharp edge: c and P against L.
-  auto punch = [&](const std::string &key, const std::string &file, const std::string &title) {
-    const axisym::Problem problem = axisym::read_problem_file(context.problem_path(file));
+  // 2. Flat punch with rounded edges, and 3. with a sharp edge: c and P against L. `at_level`
+  // sees each level's result (the sharp punch's edge intensity).
+  auto punch = [&](const std::string &key, const axisym::Problem &problem, const std::string &file,
+                   const std::string &title,
+                   const std::function<void(int, const fem::FemResult &)> &at_level) {
     nlohmann::json c = {{"problem_file", "verification/problems/" + file}};
     fmt::print("\n== {} ==\n", title);
     fmt::print("FEM Q2: {:>2} {:>8} {:>13} {:>13} {:>13} {:>8}\n", "L", "dofs", "c [m]", "P [N]",
@@ -150,23 +155,51 @@ nlohmann::json run(const verification::DriverContext &context)
             c["fem"]["force_change_last_relative"] = std::abs(k.force - p_prev) / k.force;
           }
         c_prev = k.half_width, p_prev = k.force;
+        if (at_level)
+          at_level(level, last);
       }
     c["fem"]["finest"] = c["fem"]["L" + std::to_string(levels.back())];
     c["fem"]["pressure"] = profile(*last.contact);
     return std::pair{c, last};
   };
   {
-    auto [c, last] = punch("flat_rounded", "flat_rounded_punch_indentation.json",
-                           "Flat punch with rounded edges (b = 0.5 mm, rho = 50 mm), 2 um");
+    const std::string file = "flat_rounded_punch_indentation.json";
+    auto [c, last] = punch("flat_rounded", axisym::read_problem_file(context.problem_path(file)),
+                           file, "Flat punch with rounded edges (b = 0.5 mm, rho = 50 mm), 2 um", {});
     results["flat_rounded"] = c;
   }
   {
-    auto [c, last] = punch("flat", "flat_punch_indentation.json",
-                           "Flat punch with a sharp edge (b = 1 mm), 1 um");
-    const axisym::Problem problem =
-      axisym::read_problem_file(context.problem_path("flat_punch_indentation.json"));
+    // The edge intensity by the interaction integral (rfm/contact.h) on the FEM's field, in
+    // the frame of the punch's edge (b, h): t = -e_r (into the zone), n = -e_z (into the
+    // body); the flat face prescribes u.n = -delta everywhere. Against Sneddon's half-space
+    // pressure near the edge, P / (2 pi b sqrt(2 b x)): K = -sqrt(2 pi) P / (2 pi b sqrt(2 b)).
+    // The FEM is solved with the integral's points as its samples.
+    const std::string file = "flat_punch_indentation.json";
+    axisym::Problem problem = axisym::read_problem_file(context.problem_path(file));
     const axisym::DieCondition &die = problem.body->conditions.at("top").die;
     const double b = die.profile.radius, delta = *die.indentation;
+    const rfm::EdgeFrame frame{b, die.center.z, {{-1.0, 0.0}}, {{0.0, -1.0}}};
+    const double rho_1 = 0.9 * b;
+    verification::add_interaction_samples(problem.samples, rfm::interaction_quadrature(frame, rho_1),
+                                          frame.r, frame.z);
+    nlohmann::json k_levels;
+    double k_fem = 0, k_prev = 0;
+    auto [c, last] = punch(
+      "flat", problem, file, "Flat punch with a sharp edge (b = 1 mm), 1 um",
+      [&](int level, const fem::FemResult &fr) {
+        k_prev = k_fem;
+        k_fem = rfm::edge_intensity_interaction(verification::sampled_interaction_field(fr), frame,
+                                                problem.material, rho_1,
+                                                [&](double) { return -delta; });
+        const double k_sneddon =
+          -std::sqrt(2 * pi) * fr.contact->force / (2 * pi * b * std::sqrt(2 * b));
+        k_levels["L" + std::to_string(level)] = {{"edge_intensity", k_fem},
+                                                 {"sneddon_edge_intensity", k_sneddon},
+                                                 {"over_sneddon", k_fem / k_sneddon}};
+        fmt::print("        edge intensity K = {:.6e} Pa m^1/2; Sneddon with this P {:.6e} "
+                   "(ratio {:.4f})\n",
+                   k_fem, k_sneddon, k_fem / k_sneddon);
+      });
     const double boussinesq = 2 * e_star(problem) * b * delta;
     const double force = last.contact->force;
     const double sneddon_centre = force / (2 * pi * b * b);
@@ -176,6 +209,9 @@ nlohmann::json run(const verification::DriverContext &context)
     fmt::print("P / (2 E* b delta) = {:.4f} (the half-space's; the finite column is stiffer); "
                "p(0) / (P / 2 pi b^2) = {:.4f}\n",
                force / boussinesq, centre_pressure(*last.contact) / sneddon_centre);
+    c["fem"]["edge_intensity"] = k_levels;
+    c["fem"]["edge_intensity_finest"] = k_levels["L" + std::to_string(levels.back())];
+    c["fem"]["edge_intensity_change_last_relative"] = std::abs(k_fem - k_prev) / std::abs(k_fem);
     results["flat"] = c;
   }
 

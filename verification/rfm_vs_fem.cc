@@ -17,6 +17,7 @@
 #include "problem/json_io.h"
 #include "verification/lame_errors.h"
 #include "verification/driver.h"
+#include "verification/fem_samples.h"
 
 #include <fmt/core.h>
 
@@ -392,9 +393,7 @@ nlohmann::json run(const verification::DriverContext &context)
         const double rho_1 = rfm::interaction_radius(d.geometry, ca * a);
         const rfm::Quadrature2D qk = rfm::interaction_quadrature(d.geometry, ca * a, rho_1);
         d.samples.clear();
-        for (Eigen::Index k = 0; k < qk.r.size(); ++k)
-          d.samples.push_back({qk.r[k], qk.z[k]});
-        d.samples.push_back({d.geometry.outer_radius, ca * a});
+        verification::add_interaction_samples(d.samples, qk, d.geometry.outer_radius, ca * a);
         fem::FemOptions o = fem::options_from_problem(d);
         o.refinements = full ? 5 : 4;
         o.progress = false;
@@ -402,24 +401,7 @@ nlohmann::json run(const verification::DriverContext &context)
         const rfm::ContactResult rr = rfm::solve_contact(d, d.rfm, rfm::ContactOptions{});
         if (!fr.success || !rr.success)
           throw std::runtime_error("bilateral P(c) failed at c = " + std::to_string(ca) + " a");
-        const rfm::FieldEvaluator fem_field = [&fr](const Eigen::Ref<const Eigen::VectorXd> &r,
-                                                    const Eigen::Ref<const Eigen::VectorXd> &z) {
-          // The samples in the order given: the rule's points, then the edge point.
-          const bool edge = r.size() == 1;
-          const std::size_t first = edge ? fr.samples.size() - 1 : 0;
-          rfm::FieldValues f;
-          f.u.resize(r.size(), 2), f.sigma.resize(r.size(), 4), f.strain.setZero(r.size(), 4);
-          for (Eigen::Index k = 0; k < r.size(); ++k)
-            {
-              const fem::FieldSample &s = fr.samples[first + k];
-              if (std::abs(s.r - r[k]) > 1e-12 || std::abs(s.z - z[k]) > 1e-12)
-                throw std::logic_error("FEM sample order differs from the interaction rule's");
-              f.u(k, 0) = s.u_r, f.u(k, 1) = s.u_z;
-              for (int m = 0; m < 4; ++m)
-                f.sigma(k, m) = s.sigma[m];
-            }
-          return f;
-        };
+        const rfm::FieldEvaluator fem_field = verification::sampled_interaction_field(fr);
         const double k_fem = rfm::edge_intensity_interaction(fem_field, d, ca * a, rho_1);
         const double diff = std::abs(rr.final.force - fr.contact->force) / fr.contact->force;
         (ca <= 0.6 ? worst_short : worst_long) = std::max(ca <= 0.6 ? worst_short : worst_long, diff);
