@@ -1,6 +1,6 @@
 // deal.II finite-element reference for the axisymmetric problems of DESIGN.md sections 4 and
 // 7.1. Plain structs only (no deal.II headers), so drivers and tests compile fast; all deal.II
-// code lives in axisymmetric_fem.cc.
+// code lives in the axisymmetric_fem*.cc units (axisymmetric_solver.h).
 //
 // Model (DESIGN.md sections 1 and 6): dim = 2 with x = r, y = z. The legacy hollow cylinder
 // (problem.legacy_cylinder) is solved on the half section r in [R1, R2], z in [0, a] with the

@@ -1,6 +1,6 @@
 // Pointwise body loads of an outline problem (DESIGN.md 7.1) as the FEM reference applies
 // them: the body force per unit volume and the thermal strain. No deal.II here (the local
-// integrands in axisymmetric_fem.cc call these at their quadrature points).
+// integrands of the axisymmetric_fem*.cc units call these at their quadrature points).
 //
 //   f = (f_r, f_z) = (density omega^2 r, -density g)   [N/m^3]
 //   T = T0 + T_r r + T_z z                             [K], the change from the stress-free state

@@ -1,6 +1,6 @@
 // Quadrilateral base meshes of a general meridian section given by its outline of lines and
 // circular arcs (DESIGN.md 7.1), built with the gmsh C++ API. No deal.II here: the mesh is
-// written as a .msh file that axisymmetric_fem.cc reads with GridIn::read_msh and then
+// written as a .msh file that axisymmetric_fem_mesh.cc reads with GridIn::read_msh and then
 // refines globally with the arcs represented by manifolds (see axisymmetric_fem.h).
 //
 // Boundary parts: part k of outline.parts() (order of first appearance) is the gmsh physical

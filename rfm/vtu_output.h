@@ -1,6 +1,6 @@
 // The RFM fields for people: a VTU file (ParaView) of the solved fields sampled on a fine
 // uniform grid of the section, with the field names of the FEM reference's VTU
-// (fem_reference/axisymmetric_fem.cc), so that both open side by side and their difference
+// (fem_reference/axisymmetric_fem_postprocessing.cc), so that both open side by side and their difference
 // can be taken (ParaView: Resample With Dataset, then Python Calculator).
 //
 // Coordinates are (x, y, 0) = (r, z, 0) [m]. Point data: u_r, u_z [m]; sigma_rr, sigma_zz,

@@ -1,0 +1,282 @@
+// 1. Meshes of the FEM reference (axisymmetric_solver.h): the legacy half section, the outline
+// section, and the refinement toward dies.
+#include "fem_reference/axisymmetric_solver.h"
+
+namespace fem::internal
+{
+  // 1. Mesh.
+  void AxisymmetricSolver::make_mesh()
+  {
+    if (outline_)
+      {
+        make_outline_mesh();
+        return;
+      }
+    const axisym::Geometry &g = problem_.geometry;
+    HalfSectionMeshSpec spec;
+    spec.inner_radius = g.inner_radius;
+    spec.outer_radius = g.outer_radius;
+    spec.half_length = g.half_length();
+    spec.level = level_;
+    spec.base_cells_r = options_.base_cells_r;
+    spec.base_cells_z = options_.base_cells_z;
+    spec.radial_ratio = options_.radial_grading;
+    spec.axial_ratio = options_.axial_grading;
+    if (split_)
+      {
+        // Grade toward the contact edge z = c (a corner when c = a).
+        spec.split = split_;
+        spec.grade_toward_end = !spec.is_split();
+      }
+
+    if (options_.mesh == FemOptions::MeshGenerator::gmsh)
+      {
+        read_through_msh_file(triangulation_, "rfm_fem_", [&](const std::string &path) {
+          write_gmsh_mesh(spec, path);
+        });
+      }
+    else
+      {
+        std::vector<std::vector<double>> steps(2);
+        steps[0] = spec.radial_segment().steps();
+        for (const GradedSegment &s : spec.axial_segments())
+          for (const double h : s.steps())
+            steps[1].push_back(h);
+        GridGenerator::subdivided_hyper_rectangle(triangulation_, steps,
+                                                  Point<2>(g.inner_radius, 0.0),
+                                                  Point<2>(g.outer_radius, g.half_length()));
+        const double tol = 1e-9 * g.outer_radius;
+        const double split = spec.is_split() ? *spec.split : g.half_length();
+        for (const auto &cell : triangulation_.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              {
+                const Point<2> x = face->center();
+                if (std::abs(x[0] - g.inner_radius) < tol)
+                  face->set_boundary_id(inner_boundary);
+                else if (std::abs(x[0] - g.outer_radius) < tol)
+                  face->set_boundary_id(x[1] < split ? outer_contact_boundary
+                                                     : outer_free_boundary);
+                else if (std::abs(x[1]) < tol)
+                  face->set_boundary_id(symmetry_boundary);
+                else
+                  face->set_boundary_id(end_boundary);
+              }
+      }
+
+    // Every boundary face must carry one of our ids (a gmsh group lost would be silent).
+    for (const auto &cell : triangulation_.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() &&
+            (face->boundary_id() < inner_boundary || face->boundary_id() > symmetry_boundary))
+          throw std::runtime_error("mesh: boundary face at (" + std::to_string(face->center()[0]) +
+                                   ", " + std::to_string(face->center()[1]) +
+                                   ") has no physical group (id " +
+                                   std::to_string(face->boundary_id()) + ")");
+  }
+
+  // 1o. Outline mesh: the gmsh base mesh, the manifold of its edge on every boundary face
+  // (PolarManifold about the arc's center, flat for a line), transfinite interpolation on
+  // the cells, L global refinements, then MappingQ(p) cached once for the refined mesh.
+  void AxisymmetricSolver::make_outline_mesh()
+  {
+    const axisym::Outline &outline = problem_.body->outline;
+    const std::vector<axisym::OutlineEdge> &edges = outline.edges();
+    const std::vector<std::string> parts = outline.parts();
+    const types::manifold_id cell_manifold = static_cast<types::manifold_id>(edges.size() + 1);
+    // A base-mesh cell with two boundary faces that meet where the outline is smooth (on
+    // one edge, or where two edges join with the same tangent) has a corner of 180
+    // degrees once the faces are curved: its Jacobian is singular at that vertex, and the
+    // stress there is not the field's (0.16 of max |sigma| at L = 3 on a ring whose two
+    // arcs join at the top). Such a mesh is made again with one more cell on the shortest
+    // edge, up to four times; what remains is counted and reported.
+    auto count_flat_corners = [&]() {
+      const std::size_t n = edges.size();
+      auto smooth_join = [&](std::size_t a, std::size_t b) {
+        if (a == b)
+          return true;
+        if (b != (a + 1) % n)
+          std::swap(a, b);
+        if (b != (a + 1) % n)
+          return false;
+        const axisym::Point ta = edges[a].tangent_at(1.0), tb = edges[b].tangent_at(0.0);
+        return ta.r * tb.r + ta.z * tb.z > std::cos(5.0 * M_PI / 180.0);
+      };
+      unsigned int flat = 0;
+      for (const auto &cell : triangulation_.active_cell_iterators())
+        {
+          bool found = false;
+          for (unsigned int f = 0; f < 4 && !found; ++f)
+            for (unsigned int g = f + 1; g < 4 && !found; ++g)
+              {
+                const auto fa = cell->face(f), fb = cell->face(g);
+                if (!fa->at_boundary() || !fb->at_boundary())
+                  continue;
+                // Adjacent faces share a vertex (opposite faces of a quad do not).
+                bool share = false;
+                for (unsigned int i = 0; i < 2; ++i)
+                  for (unsigned int j = 0; j < 2; ++j)
+                    share |= fa->vertex_index(i) == fb->vertex_index(j);
+                found = share && smooth_join(fa->manifold_id() - 1, fb->manifold_id() - 1);
+              }
+          flat += found;
+        }
+      return flat;
+    };
+    const double tol = 1e-6 * outline.size();
+    OutlineMeshInfo info;
+    for (int attempt = 0; attempt < 5; ++attempt)
+      {
+        OutlineMeshSpec spec;
+        spec.cells_on_shortest_edge = options_.outline_cells_on_shortest_edge + attempt;
+        triangulation_.clear();
+        read_through_msh_file(triangulation_, "rfm_fem_outline_", [&](const std::string &path) {
+          info = write_outline_gmsh_mesh(outline, spec, path);
+        });
+        // Manifold ids: edge i -> i + 1 on its boundary faces, the cells (and interior faces)
+        // -> n_edges + 1 (transfinite interpolation).
+        triangulation_.set_all_manifold_ids(cell_manifold);
+        for (const auto &cell : triangulation_.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              {
+                const unsigned int id = face->boundary_id();
+                const Point<2> a = face->vertex(0), b = face->vertex(1);
+                if (id < 1 || id > parts.size())
+                  throw std::runtime_error("mesh: boundary face at (" + std::to_string(a[0]) +
+                                           ", " + std::to_string(a[1]) +
+                                           ") has no part (id " + std::to_string(id) + ")");
+                const int edge =
+                  edge_of_boundary_segment(outline, parts[id - 1], {a[0], a[1]}, {b[0], b[1]});
+                const double off = std::max(distance_to_edge(edges[edge], {a[0], a[1]}),
+                                            distance_to_edge(edges[edge], {b[0], b[1]}));
+                if (off > tol)
+                  throw std::runtime_error("mesh: boundary face at (" + std::to_string(a[0]) +
+                                           ", " + std::to_string(a[1]) + ") is " +
+                                           std::to_string(off) + " m off its part " +
+                                           parts[id - 1]);
+                face->set_manifold_id(static_cast<types::manifold_id>(edge + 1));
+              }
+        base_mesh_flat_corners_ = count_flat_corners();
+        if (base_mesh_flat_corners_ == 0)
+          break;
+      }
+    base_mesh_size_ = info.base_mesh_size;
+    base_mesh_subdivided_ = info.subdivided;
+    n_base_cells_ = triangulation_.n_active_cells();
+
+    using Geometry = FemOptions::OutlineGeometry;
+    const bool curved = options_.outline_geometry != Geometry::coarse_polygon;
+    for (std::size_t i = 0; i < edges.size(); ++i)
+      {
+        const auto id = static_cast<types::manifold_id>(i + 1);
+        if (curved && edges[i].kind == axisym::OutlineEdge::Kind::arc)
+          triangulation_.set_manifold(
+            id, PolarManifold<2>(Point<2>(edges[i].center.r, edges[i].center.z)));
+        else
+          triangulation_.set_manifold(id, FlatManifold<2>());
+      }
+    if (curved)
+      {
+        TransfiniteInterpolationManifold<2> transfinite;
+        transfinite.initialize(triangulation_);
+        triangulation_.set_manifold(cell_manifold, transfinite);
+      }
+    else
+      triangulation_.set_manifold(cell_manifold, FlatManifold<2>());
+    triangulation_.refine_global(level_);
+    refine_toward_dies();
+
+    if (options_.outline_geometry == Geometry::curved)
+      {
+        auto cache = std::make_unique<MappingQCache<2>>(options_.degree);
+        cache->initialize(MappingQ<2>(options_.degree), triangulation_);
+        mapping_ = std::move(cache);
+      }
+    else
+      mapping_ = std::make_unique<MappingQ1<2>>();
+  }
+
+  // Pass 0's zones: where g0 < delta (indentation) or Hertz's contact radius
+  // a = (3 P R / 4 E*)^(1/3), E* = E / (1 - nu^2) (force), and at least the flat face.
+  void AxisymmetricSolver::estimate_die_zones()
+  {
+    const double e_star = problem_.material.youngs_modulus /
+                          (1 - problem_.material.poisson_ratio * problem_.material.poisson_ratio);
+    for (OutlineDie &d : dies_)
+      {
+        const axisym::DieProfile &pr = d.condition.profile;
+        using Shape = axisym::DieProfile::Shape;
+        const double flat = pr.shape == Shape::flat           ? pr.radius
+                            : pr.shape == Shape::flat_rounded ? pr.flat_radius
+                                                              : 0.0;
+        const double curvature_radius =
+          pr.shape == Shape::paraboloid ? pr.radius : pr.edge_radius;
+        double reach = flat;
+        if (pr.shape != Shape::flat)
+          reach += d.condition.indentation
+                     ? std::sqrt(2 * curvature_radius * *d.condition.indentation)
+                     : std::cbrt(3 * *d.condition.force * curvature_radius / (4 * e_star));
+        d.zone_lo = std::max(d.frame.s_min, -reach);
+        d.zone_hi = std::min(d.frame.s_max, reach);
+      }
+  }
+
+  // Refinement toward the dies' zones (axisymmetric_fem.h, "Dies"): the cells near the zone
+  // to die_zone_cells * 2^L across it, then each free end die_edge_refinements times more.
+  void AxisymmetricSolver::refine_toward_dies()
+  {
+    auto distance_to_segment = [](const Point<2> &x, const Point<2> &a, const Point<2> &b) {
+      const Tensor<1, 2> ab = b - a;
+      const double t = ab.norm_square() > 0
+                         ? std::clamp((x - a) * ab / ab.norm_square(), 0.0, 1.0)
+                         : 0.0;
+      return x.distance(a + t * ab);
+    };
+    auto refine_while = [&](const auto &wants) {
+      for (int round = 0; round < 40; ++round)
+        {
+          bool any = false;
+          for (const auto &cell : triangulation_.active_cell_iterators())
+            if (wants(cell))
+              cell->set_refine_flag(), any = true;
+          if (!any)
+            return;
+          triangulation_.execute_coarsening_and_refinement();
+        }
+    };
+    const double tol = 1e-9 * problem_.body->outline.size();
+    for (const OutlineDie &d : dies_)
+      {
+        const double w = d.zone_hi - d.zone_lo;
+        if (!(w > tol))
+          continue;
+        const double h = w / (options_.die_zone_cells * std::pow(2.0, level_));
+        const axisym::Point pa = d.frame.point_at(d.zone_lo), pb = d.frame.point_at(d.zone_hi);
+        const Point<2> a(pa.r, pa.z), b(pb.r, pb.z);
+        // A cell's size: its diameter / sqrt 2 (a square's side).
+        refine_while([&](const auto &cell) {
+          const double size = cell->diameter() / std::sqrt(2.0);
+          return size > 1.01 * h &&
+                 distance_to_segment(cell->center(), a, b) < 0.5 * w + cell->diameter();
+        });
+        for (const auto &[s_end, free] :
+             {std::pair{d.zone_lo, d.zone_lo > d.frame.s_min + tol},
+              std::pair{d.zone_hi, d.zone_hi < d.frame.s_max - tol}})
+          {
+            if (!free)
+              continue;
+            const axisym::Point pe = d.frame.point_at(s_end);
+            const Point<2> e(pe.r, pe.z);
+            for (int j = 1; j <= options_.die_edge_refinements; ++j)
+              {
+                const double hj = h / std::pow(2.0, j);
+                refine_while([&](const auto &cell) {
+                  return cell->diameter() / std::sqrt(2.0) > 1.01 * hj &&
+                         cell->center().distance(e) < 2.0 * cell->diameter();
+                });
+              }
+          }
+      }
+  }
+} // namespace fem::internal

@@ -1,0 +1,535 @@
+// 6. Post-processing of the FEM reference (axisymmetric_solver.h): functionals, forces, the
+// dies' zones, samples, support reactions and VTU.
+#include "fem_reference/axisymmetric_solver.h"
+
+namespace fem::internal
+{
+  // 6. Post-processing of the current solution. `active`: the penalty set used in the solve.
+  Evaluation AxisymmetricSolver::evaluate(const std::vector<char> *active) const
+  {
+    Evaluation ev;
+    const axisym::Geometry &g = problem_.geometry;
+    const double r1 = g.inner_radius, r2 = g.outer_radius;
+
+    // Volume: U_h, the consistent reaction int s.e(v) r with v = (psi, 0), the stress error.
+    FEValues<2> fe_values(mapping(), fe_, cell_quadrature_,
+                          update_values | update_gradients | update_quadrature_points |
+                            update_JxW_values);
+    const unsigned int n_q = cell_quadrature_.size();
+    std::vector<Vector<double>> u(n_q, Vector<double>(2));
+    std::vector<std::vector<Tensor<1, 2>>> grad(n_q, std::vector<Tensor<1, 2>>(2));
+    double energy = 0, reaction = 0, error_sq = 0, norm_sq = 0, u_error_sq = 0, u_norm_sq = 0;
+    double body_force_work = 0, thermal_strain_work = 0; // int f.u_h r, int s_h.e_th r
+    for (const auto &cell : dof_handler_.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        fe_values.get_function_values(solution_, u);
+        fe_values.get_function_gradients(solution_, grad);
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const Point<2> x = fe_values.quadrature_point(q);
+            const double w = x[0] * fe_values.JxW(q);
+            // e = e(u_h) - e_th, s = D e the total stress, U_h = 1/2 int e.D e r.
+            const Stress e = elastic_strain(loads_, x[0], x[1],
+                                            strain(x[0], u[q][0], grad[q][0], grad[q][1]));
+            const Stress s = d_ * e;
+            energy += 0.5 * dot(e, s) * w;
+            if (loads_.has_force())
+              {
+                const std::array<double, 2> f = loads_.force(x[0], x[1]);
+                body_force_work += (f[0] * u[q][0] + f[1] * u[q][1]) * w;
+              }
+            if (loads_.has_thermal_strain())
+              thermal_strain_work +=
+                loads_.thermal_strain(x[0], x[1]) * (s[0] + s[1] + s[2]) * w;
+            if (!outline_)
+              {
+                const double psi = (x[0] - r1) / (r2 - r1);
+                reaction += (s[0] / (r2 - r1) + s[2] * psi / x[0]) * w;
+              }
+            if (exact_u_)
+              {
+                const std::array<double, 2> ue = exact_u_(x[0], x[1]);
+                for (unsigned int k = 0; k < 2; ++k)
+                  {
+                    u_error_sq += (u[q][k] - ue[k]) * (u[q][k] - ue[k]) * w;
+                    u_norm_sq += ue[k] * ue[k] * w;
+                  }
+              }
+            if (exact_)
+              {
+                // Frobenius norm of the stress tensor: sigma_rz counts twice, as
+                // in the RFM verification (verification/lame_errors.h).
+                const Stress se = exact_(x[0], x[1]);
+                for (int k = 0; k < 4; ++k)
+                  {
+                    const double f = k == 3 ? 2.0 : 1.0;
+                    error_sq += f * (s[k] - se[k]) * (s[k] - se[k]) * w;
+                    norm_sq += f * se[k] * se[k] * w;
+                  }
+              }
+          }
+      }
+    // The legacy half section stands for the whole body (twice); an outline for itself.
+    const double mirror = outline_ ? 1.0 : 2.0;
+    if (exact_u_)
+      ev.u_error_sq = mirror * u_error_sq, ev.u_norm_sq = mirror * u_norm_sq;
+    if (exact_)
+      {
+        ev.error_sq = mirror * error_sq, ev.norm_sq = mirror * norm_sq;
+        // Max norm at the Gauss-Lobatto points of every cell (they include the cell and
+        // domain boundaries, where the FEM stress error peaks); the discontinuous s_h is
+        // taken from each cell in turn.
+        const QGaussLobatto<2> nodes(options_.degree + 2);
+        FEValues<2> fe_nodes(mapping(), fe_, nodes,
+                             update_values | update_gradients | update_quadrature_points);
+        std::vector<Vector<double>> un(nodes.size(), Vector<double>(2));
+        std::vector<std::vector<Tensor<1, 2>>> gradn(nodes.size(),
+                                                     std::vector<Tensor<1, 2>>(2));
+        double error_max = 0, norm_max = 0;
+        for (const auto &cell : dof_handler_.active_cell_iterators())
+          {
+            fe_nodes.reinit(cell);
+            fe_nodes.get_function_values(solution_, un);
+            fe_nodes.get_function_gradients(solution_, gradn);
+            for (unsigned int q = 0; q < nodes.size(); ++q)
+              {
+                const Point<2> x = fe_nodes.quadrature_point(q);
+                const Stress s =
+                  stress_at(x, strain(x[0], un[q][0], gradn[q][0], gradn[q][1]));
+                const Stress se = exact_(x[0], x[1]);
+                for (int k = 0; k < 4; ++k)
+                  {
+                    error_max = std::max(error_max, std::abs(s[k] - se[k]));
+                    norm_max = std::max(norm_max, std::abs(se[k]));
+                  }
+              }
+          }
+        ev.error_max = error_max, ev.norm_max = norm_max;
+      }
+
+    if (outline_)
+      {
+        double work = 0, b_c = 0, b_r = 0, penalty_energy = 0;
+        outline_boundary_terms(work, b_c, b_r);
+        if (!dies_.empty())
+          evaluate_dies(active, ev, b_c, b_r, penalty_energy);
+        ev.functionals.penalty_energy = penalty_energy;
+        // DESIGN.md 3 with the thermal strain as an initial strain (axisymmetric_fem.h):
+        // W = int f.u_h r + int_St t.u_h r ds; the Castigliano functional carries
+        // -int s_h.e_th r; in Reissner's s.e(u) - 1/2 s.C s - s.e_th = U density for s = s_h.
+        Functionals &phi = ev.functionals;
+        phi.strain_energy = energy;
+        phi.body_force_work = body_force_work;
+        phi.thermal_strain_work = thermal_strain_work;
+        phi.external_work = work + body_force_work;
+        phi.lagrange = phi.strain_energy - phi.external_work;
+        phi.castigliano = -phi.strain_energy - thermal_strain_work + b_c;
+        phi.reissner = phi.strain_energy - phi.external_work - b_r;
+        return ev;
+      }
+
+    // Boundary: work of the pressures; on r = R2 the traces, gap and contact terms.
+    const double p_in = problem_.loading ? problem_.loading->inner_pressure : 0.0;
+    const double p_out = problem_.loading ? problem_.loading->outer_pressure : 0.0;
+    FEFaceValues<2> fv(mapping(), fe_, face_quadrature_,
+                       update_values | update_gradients | update_quadrature_points |
+                         update_JxW_values);
+    const unsigned int n_fq = face_quadrature_.size();
+    std::vector<Vector<double>> uf(n_fq, Vector<double>(2));
+    std::vector<std::vector<Tensor<1, 2>>> gradf(n_fq, std::vector<Tensor<1, 2>>(2));
+    double work = 0, trace = 0, penalty_force = 0, penalty_energy = 0, b_c = 0, b_r = 0;
+    std::vector<std::pair<double, double>> gap_samples; // (z, g)
+    for (const auto &cell : dof_handler_.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        {
+          if (!cell->face(f)->at_boundary())
+            continue;
+          const unsigned int id = cell->face(f)->boundary_id();
+          if (id != inner_boundary && !is_outer(id))
+            continue;
+          fv.reinit(cell, f);
+          fv.get_function_values(solution_, uf);
+          for (unsigned int q = 0; q < n_fq; ++q)
+            {
+              const double r = fv.quadrature_point(q)[0];
+              work += (id == inner_boundary ? p_in : -p_out) * uf[q][0] * r * fv.JxW(q);
+            }
+        }
+    if (problem_.die)
+      {
+        for (std::size_t k = 0; k < contact_faces_.size(); ++k)
+          {
+            const auto &[cell, f, die] = contact_faces_[k];
+            fv.reinit(cell, f);
+            fv.get_function_values(solution_, uf);
+            fv.get_function_gradients(solution_, gradf);
+            const bool prescribed_face = mode_ == Mode::bilateral &&
+                                         cell->face(f)->boundary_id() == outer_contact_boundary;
+            for (unsigned int q = 0; q < n_fq; ++q)
+              {
+                const Point<2> x = fv.quadrature_point(q);
+                const double w = x[0] * fv.JxW(q); // r ds with r = R2
+                const double target = axisym::die_u_r(*problem_.die, g, x[1]);
+                const double gap = uf[q][0] - target;
+                const Stress s =
+                  stress_at(x, strain(x[0], uf[q][0], gradf[q][0], gradf[q][1]));
+                trace += s[0] * fv.JxW(q);
+                const bool in_zone =
+                  active ? static_cast<bool>((*active)[k * n_fq + q]) : prescribed_face;
+                double p = -s[0];
+                if (active)
+                  {
+                    p = in_zone ? kappa_ * gap : 0.0;
+                    penalty_force += p * fv.JxW(q);
+                    if (in_zone)
+                      penalty_energy += 0.5 * kappa_ * gap * gap * w;
+                  }
+                if (in_zone)
+                  b_c += s[0] * target * w, b_r += s[0] * gap * w;
+                ev.max_penetration = std::max(ev.max_penetration, gap);
+                ev.pressure.push_back({x[1], x[0], x[1], p, -s[0], gap});
+                gap_samples.emplace_back(x[1], gap);
+              }
+          }
+        std::stable_sort(ev.pressure.begin(), ev.pressure.end(),
+                         [](const PressurePoint &a, const PressurePoint &b) { return a.z < b.z; });
+        std::stable_sort(gap_samples.begin(), gap_samples.end());
+      }
+
+    // Full body: twice the half section; forces also times 2 pi.
+    Functionals &phi = ev.functionals;
+    phi.strain_energy = 2 * energy;
+    phi.external_work = 2 * work;
+    phi.penalty_energy = 2 * penalty_energy;
+    phi.lagrange = phi.strain_energy - phi.external_work;
+    phi.castigliano = -phi.strain_energy + 2 * b_c;
+    phi.reissner = phi.strain_energy - phi.external_work - 2 * b_r;
+    ev.force = -2 * pi * 2 * reaction;
+    ev.force_trace = -2 * pi * r2 * 2 * trace;
+    ev.force_penalty = 2 * pi * r2 * 2 * penalty_force;
+
+    // Half-width (unilateral): zone_end from z = 0; (b) is the reported half_width.
+    ev.half_width = ev.half_width_gap = half_width_;
+    if (mode_ == Mode::unilateral && !gap_samples.empty())
+      std::tie(ev.half_width, ev.half_width_gap) = zone_end(gap_samples, g.half_length());
+    return ev;
+  }
+
+  // 6d. Dies on outline parts: at the contact points of each die, the gap g = u.n - t, the
+  // penalty pressure kappa g on the active set, the trace -n.s_h n, the forces, the zone ends
+  // (zone_end on each side of the centre), and the contact terms of the functionals:
+  // b_c += int_A (n.s_h n) t r ds, b_r += int_A (n.s_h n) g r ds (the zone is S_c with u.n = t).
+  void AxisymmetricSolver::evaluate_dies(const std::vector<char> *active, Evaluation &ev,
+                                         double &b_c, double &b_r, double &penalty_energy) const
+  {
+    ev.dies.assign(dies_.size(), DieEvaluation{});
+    FEFaceValues<2> fv(mapping(), fe_, face_quadrature_,
+                       update_values | update_gradients | update_quadrature_points |
+                         update_JxW_values);
+    const unsigned int n_q = face_quadrature_.size();
+    std::vector<Vector<double>> u(n_q, Vector<double>(2));
+    std::vector<std::vector<Tensor<1, 2>>> grad(n_q, std::vector<Tensor<1, 2>>(2));
+    std::vector<std::vector<std::pair<double, double>>> gaps(dies_.size()); // (s, g)
+    for (std::size_t k = 0; k < contact_faces_.size(); ++k)
+      {
+        const ContactFace &face = contact_faces_[k];
+        const OutlineDie &d = dies_[face.die];
+        DieEvaluation &de = ev.dies[face.die];
+        const Tensor<1, 2> n = die_normal(face.die);
+        fv.reinit(face.cell, face.face);
+        fv.get_function_values(solution_, u);
+        fv.get_function_gradients(solution_, grad);
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const Point<2> x = fv.quadrature_point(q);
+            const double w = x[0] * fv.JxW(q);
+            if (!(w > 0))
+              continue; // a point on the axis: no weight r ds, no penalty, no pressure
+            const double target = die_target(face.die, x);
+            const double gap = u[q][0] * n[0] + u[q][1] * n[1] - target;
+            const Stress st = stress_at(x, strain(x[0], u[q][0], grad[q][0], grad[q][1]));
+            const double snn = st[0] * n[0] * n[0] + 2 * st[3] * n[0] * n[1] + st[1] * n[1] * n[1];
+            const bool in_zone = active && (*active)[k * n_q + q];
+            const double p = in_zone ? kappa_ * gap : 0.0;
+            de.force += 2 * pi * p * w;
+            de.force_trace -= 2 * pi * snn * w;
+            if (in_zone)
+              {
+                penalty_energy += 0.5 * kappa_ * gap * gap * w;
+                b_c += snn * target * w;
+                b_r += snn * gap * w;
+              }
+            if (std::isfinite(gap))
+              de.max_penetration = std::max(de.max_penetration, gap);
+            const double s = d.frame.coordinate({x[0], x[1]});
+            de.pressure.push_back({s, x[0], x[1], p, -snn, gap});
+            gaps[face.die].emplace_back(s, gap);
+          }
+      }
+    for (std::size_t i = 0; i < dies_.size(); ++i)
+      {
+        const OutlineDie &d = dies_[i];
+        DieEvaluation &de = ev.dies[i];
+        de.indentation = d.delta;
+        std::stable_sort(de.pressure.begin(), de.pressure.end(),
+                         [](const PressurePoint &a, const PressurePoint &b) { return a.s < b.s; });
+        // Each side of the centre as a zone from s = 0 outward (the gap beyond a flat
+        // punch is -infinity: an open point).
+        const double tol = 1e-9 * problem_.body->outline.size();
+        std::vector<std::pair<double, double>> up, down;
+        // Points beyond a flat punch's edge (no die surface: infinite gap) are left out, and
+        // a zone that reaches the edge ends there.
+        const double extent = d.condition.profile.extent();
+        for (const auto &[si, gi] : gaps[i])
+          {
+            if (!std::isfinite(gi))
+              continue;
+            if (si >= -tol)
+              up.emplace_back(std::max(si, 0.0), gi);
+            if (si <= tol)
+              down.emplace_back(std::max(-si, 0.0), gi);
+          }
+        std::stable_sort(up.begin(), up.end());
+        std::stable_sort(down.begin(), down.end());
+        const bool has_up = d.frame.s_max > tol, has_down = d.frame.s_min < -tol;
+        const auto [hi, hi_gap] =
+          has_up ? zone_end(up, std::min(d.frame.s_max, extent)) : std::pair{0.0, 0.0};
+        const auto [lo, lo_gap] =
+          has_down ? zone_end(down, std::min(-d.frame.s_min, extent)) : std::pair{0.0, 0.0};
+        de.zone_lo = -lo, de.zone_hi = hi;
+        de.two_edges = has_up && has_down;
+        if (de.two_edges)
+          de.half_width = 0.5 * (hi + lo), de.half_width_gap = 0.5 * (hi_gap + lo_gap);
+        else
+          de.half_width = has_up ? hi : lo, de.half_width_gap = has_up ? hi_gap : lo_gap;
+      }
+    if (!ev.dies.empty())
+      {
+        const DieEvaluation &first = ev.dies.front();
+        ev.force = ev.force_penalty = first.force;
+        ev.force_trace = first.force_trace;
+        ev.half_width = first.half_width, ev.half_width_gap = first.half_width_gap;
+        ev.max_penetration = first.max_penetration;
+      }
+  }
+
+  // 6o. Boundary terms of an outline problem: the work W = int t.u_h r ds of the pressure
+  // and traction parts, and on the displacement parts b_c = int (s_h n).u* r ds and
+  // b_r = int (s_h n).(u_h - u*) r ds (s_h n the element trace).
+  void AxisymmetricSolver::outline_boundary_terms(double &work, double &b_c, double &b_r) const
+  {
+    using Kind = axisym::PartCondition::Kind;
+    const QGauss<1> quadrature(options_.degree + 2);
+    FEFaceValues<2> fv(mapping(), fe_, quadrature,
+                       update_values | update_gradients | update_quadrature_points |
+                         update_normal_vectors | update_JxW_values);
+    const unsigned int n_q = quadrature.size();
+    std::vector<Vector<double>> u(n_q, Vector<double>(2));
+    std::vector<std::vector<Tensor<1, 2>>> grad(n_q, std::vector<Tensor<1, 2>>(2));
+    for (const auto &cell : dof_handler_.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        {
+          if (!cell->face(f)->at_boundary())
+            continue;
+          const axisym::PartCondition &c =
+            problem_.body->condition_of_edge(edge_of(cell->face(f)));
+          if (c.kind != Kind::pressure && c.kind != Kind::traction &&
+              c.kind != Kind::displacement)
+            continue;
+          fv.reinit(cell, f);
+          fv.get_function_values(solution_, u);
+          if (c.kind == Kind::displacement)
+            fv.get_function_gradients(solution_, grad);
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              const Point<2> x = fv.quadrature_point(q);
+              const Tensor<1, 2> n = fv.normal_vector(q);
+              const double w = x[0] * fv.JxW(q);
+              if (c.kind == Kind::displacement)
+                {
+                  const Stress s = stress_at(x, strain(x[0], u[q][0], grad[q][0], grad[q][1]));
+                  const double t_r = s[0] * n[0] + s[3] * n[1];
+                  const double t_z = s[3] * n[0] + s[1] * n[1];
+                  b_c += (t_r * c.displacement[0] + t_z * c.displacement[1]) * w;
+                  b_r += (t_r * (u[q][0] - c.displacement[0]) +
+                          t_z * (u[q][1] - c.displacement[1])) *
+                         w;
+                  continue;
+                }
+              const double t_r = c.kind == Kind::pressure ? -c.pressure * n[0] : c.traction[0];
+              const double t_z = c.kind == Kind::pressure ? -c.pressure * n[1] : c.traction[1];
+              work += (t_r * u[q][0] + t_z * u[q][1]) * w;
+            }
+        }
+  }
+
+  // 6r. Support reactions of an outline problem. The residual of the discrete equilibrium,
+  // R_i = int s_h.e(phi_i) r dr dz - int f.phi_i r dr dz - int_St t.phi_i r ds, vanishes at
+  // the free dofs (to the solver's accuracy); at a dof held by a symmetry or displacement
+  // part it is the force that part exerts on the body (per radian). Summed per part and
+  // component and times 2 pi: N for the full body. Taking v = e_z everywhere (e(v) = 0)
+  // gives the global balance: the z reactions sum to minus the applied z load.
+  std::vector<PartReaction> AxisymmetricSolver::reactions() const
+  {
+    using Kind = axisym::PartCondition::Kind;
+    const axisym::Body &body = *problem_.body;
+    std::vector<PartReaction> out;
+    std::map<std::string, std::size_t> index;
+    for (const std::string &part : body.outline.parts())
+      {
+        const Kind kind = body.conditions.at(part).kind;
+        if (kind != Kind::symmetry && kind != Kind::displacement)
+          continue;
+        index[part] = out.size();
+        PartReaction reaction;
+        reaction.part = part;
+        reaction.condition = axisym::to_string(kind);
+        out.push_back(reaction);
+      }
+    if (reaction_dofs_.empty())
+      return out;
+
+    FEValues<2> fe_values(mapping(), fe_, cell_quadrature_,
+                          update_values | update_gradients | update_quadrature_points |
+                            update_JxW_values);
+    // The face rule and flags of the assembly (3o), so that R is the discrete residual.
+    FEFaceValues<2> face_values(mapping(), fe_, QGauss<1>(options_.degree + 1),
+                                update_values | update_quadrature_points |
+                                  update_normal_vectors | update_JxW_values);
+    const unsigned int n = fe_.n_dofs_per_cell(), n_q = cell_quadrature_.size();
+    std::vector<Vector<double>> u(n_q, Vector<double>(2));
+    std::vector<std::vector<Tensor<1, 2>>> grad(n_q, std::vector<Tensor<1, 2>>(2));
+    std::vector<types::global_dof_index> dofs(n);
+    Vector<double> cell_residual(n), cell_load(n), residual(dof_handler_.n_dofs());
+    for (const auto &cell : dof_handler_.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        if (std::none_of(dofs.begin(), dofs.end(), [&](types::global_dof_index i) {
+              return reaction_dofs_.count(i) > 0;
+            }))
+          continue;
+        fe_values.reinit(cell);
+        fe_values.get_function_values(solution_, u);
+        fe_values.get_function_gradients(solution_, grad);
+        cell_residual = 0;
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const Point<2> x = fe_values.quadrature_point(q);
+            const double w = x[0] * fe_values.JxW(q);
+            const Stress s = stress_at(x, strain(x[0], u[q][0], grad[q][0], grad[q][1]));
+            const std::array<double, 2> f = loads_.force(x[0], x[1]);
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                const unsigned int c = fe_.system_to_component_index(i).first;
+                const double phi = fe_values.shape_value_component(i, q, c);
+                const Stress b =
+                  shape_strain(c, x[0], phi, fe_values.shape_grad_component(i, q, c));
+                cell_residual(i) += (dot(b, s) - f[c] * phi) * w;
+              }
+          }
+        cell_load = 0;
+        add_outline_tractions(cell, face_values, cell_load);
+        cell_residual -= cell_load;
+        for (unsigned int i = 0; i < n; ++i)
+          residual(dofs[i]) += cell_residual(i);
+      }
+    for (const auto &[dof, held] : reaction_dofs_)
+      {
+        PartReaction &reaction =
+          out[index.at(body.outline.edges()[held.edge].part)];
+        (held.component == 0 ? reaction.force_r : reaction.force_z) += 2 * pi * residual(dof);
+      }
+    return out;
+  }
+
+  // Fields at the sample points; legacy: z < 0 mirrored (u_z and sigma_rz are odd in z).
+  // Outline: as given. A sample on an arc may lie just outside the Q_p image of the arc
+  // (deal.II 9.4 then returns an invalid cell rather than throwing), so a miss is retried
+  // with looser tolerances (unit-cell coordinates) and projected onto the unit cell; with
+  // straight-sided cells the nearest boundary cell is taken.
+  std::vector<FieldSample> AxisymmetricSolver::samples() const
+  {
+    using Found = std::pair<DoFHandler<2>::active_cell_iterator, Point<2>>;
+    const auto locate = [&](const Point<2> &x) -> Found {
+      if (!outline_)
+        return GridTools::find_active_cell_around_point(mapping(), dof_handler_, x);
+      for (const double tolerance : {1e-10, 1e-6, 1e-3})
+        {
+          Found found;
+          try
+            {
+              found = GridTools::find_active_cell_around_point(mapping(), dof_handler_, x,
+                                                               {}, tolerance);
+            }
+          catch (const std::exception &)
+            {
+              continue;
+            }
+          if (found.first.state() == IteratorState::valid)
+            {
+              found.second = GeometryInfo<2>::project_to_unit_cell(found.second);
+              return found;
+            }
+        }
+      // Still outside (straight-sided studies: a sample on an arc lies beyond the chord):
+      // the boundary cell nearest in unit coordinates, the point projected onto it.
+      Found best;
+      double best_distance = std::numeric_limits<double>::infinity();
+      for (const auto &cell : dof_handler_.active_cell_iterators())
+        {
+          if (!cell->at_boundary() || cell->center().distance(x) > 2 * cell->diameter())
+            continue;
+          try
+            {
+              const Point<2> unit = mapping().transform_real_to_unit_cell(cell, x);
+              const double d = GeometryInfo<2>::distance_to_unit_cell(unit);
+              if (d < best_distance)
+                best_distance = d, best = {cell, GeometryInfo<2>::project_to_unit_cell(unit)};
+            }
+          catch (const std::exception &)
+            {}
+        }
+      if (best.first.state() != IteratorState::valid)
+        throw std::runtime_error("sample (" + std::to_string(x[0]) + ", " +
+                                 std::to_string(x[1]) + ") is not in any cell of the mesh");
+      return best;
+    };
+    std::vector<FieldSample> out;
+    for (const auto &[r, z] : problem_.samples)
+      {
+        const Point<2> x(r, outline_ ? z : std::abs(z));
+        const Found found = locate(x);
+        const Quadrature<2> point(std::vector<Point<2>>{found.second});
+        FEValues<2> fv(mapping(), fe_, point, update_values | update_gradients);
+        fv.reinit(found.first);
+        std::vector<Vector<double>> u(1, Vector<double>(2));
+        std::vector<std::vector<Tensor<1, 2>>> grad(1, std::vector<Tensor<1, 2>>(2));
+        fv.get_function_values(solution_, u);
+        fv.get_function_gradients(solution_, grad);
+        const Stress s = stress_at(x, strain(r, u[0][0], grad[0][0], grad[0][1]));
+        const double sign = !outline_ && z < 0 ? -1.0 : 1.0;
+        out.push_back({r, z, u[0][0], sign * u[0][1], {{s[0], s[1], s[2], sign * s[3]}}});
+      }
+    return out;
+  }
+
+  void AxisymmetricSolver::write_vtu() const
+  {
+    const StressPostprocessor post(d_, loads_);
+    DataOut<2> data_out;
+    data_out.attach_dof_handler(dof_handler_);
+    data_out.add_data_vector(solution_, post);
+    if (outline_) // cells next to an arc are curved inside too (transfinite interpolation)
+      data_out.build_patches(mapping(), options_.degree, DataOut<2>::curved_inner_cells);
+    else
+      data_out.build_patches(mapping(), options_.degree);
+    std::filesystem::create_directories(options_.vtu_directory);
+    const std::filesystem::path path =
+      std::filesystem::path(options_.vtu_directory) / "fem_solution.vtu";
+    std::ofstream out(path);
+    if (!out)
+      throw std::runtime_error("cannot write " + path.string());
+    data_out.write_vtu(out);
+  }
+} // namespace fem::internal

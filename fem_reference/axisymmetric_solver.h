@@ -1,0 +1,476 @@
+// The FEM reference's solver class and its pointwise helpers, shared by the translation units
+// of fem_reference/ that hold its parts (DESIGN.md 8: mesh, constraints, assembly, active set,
+// post-processing). Internal to fem_reference/: the public interface is axisymmetric_fem.h,
+// whose comment states the model. deal.II headers compile slowly (about 12 s a unit), so only
+// the axisymmetric_fem*.cc units include this.
+//
+//   axisymmetric_fem.cc                 options, fem::solve, the passes and the active-set loop
+//   axisymmetric_fem_mesh.cc            1. meshes (legacy, outline) and the refinement toward dies
+//   axisymmetric_fem_constraints.cc     2. dofs and constraints
+//   axisymmetric_fem_assembly.cc        3.-5. assembly, linear solves, penalty, force control,
+//                                       the active set
+//   axisymmetric_fem_postprocessing.cc  6. functionals, forces, zones, samples, reactions, VTU
+#pragma once
+
+#include "fem_reference/axisymmetric_fem.h"
+
+#include "fem_reference/body_loads.h"
+#include "fem_reference/half_section_mesh.h"
+#include "fem_reference/outline_mesh.h"
+
+#include <deal.II/base/convergence_table.h>
+#include <deal.II/base/function.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/fe/mapping_q_cache.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/grid_refinement.h>
+#include <deal.II/grid/manifold_lib.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <unistd.h>
+
+namespace fem::internal
+{
+  using namespace dealii;
+
+  constexpr double pi = 3.14159265358979323846;
+  using Clock = std::chrono::steady_clock;
+  inline double seconds_since(Clock::time_point t0)
+  {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+  }
+
+  /// Lets `write(path)` write a gmsh .msh file to a temporary path and reads it into
+  /// `triangulation`; the file is removed in every case.
+  template <typename Write>
+  inline void read_through_msh_file(Triangulation<2> &triangulation, const std::string &prefix,
+                             Write write)
+  {
+    static std::atomic<int> counter{0};
+    const std::filesystem::path path =
+      std::filesystem::temp_directory_path() /
+      (prefix + std::to_string(::getpid()) + "_" + std::to_string(counter++) + ".msh");
+    try
+      {
+        write(path.string());
+        GridIn<2> grid_in;
+        grid_in.attach_triangulation(triangulation);
+        std::ifstream in(path);
+        grid_in.read_msh(in);
+      }
+    catch (...)
+      {
+        std::filesystem::remove(path);
+        throw;
+      }
+    std::filesystem::remove(path);
+  }
+
+  using Stress = std::array<double, 4>; // (rr, zz, tt, rz); strains in the same order
+
+  /// e(u) = (du_r/dr, du_z/dz, u_r/r, du_r/dz + du_z/dr) from u and grad u (grad[i][j] =
+  /// du_i/dx_j, x = (r, z)).
+  inline Stress strain(double r, double u_r, const Tensor<1, 2> &grad_u_r, const Tensor<1, 2> &grad_u_z)
+  {
+    // On the axis (r = 0: samples, VTU and Gauss-Lobatto points, never a Gauss point)
+    // u_r/r -> du_r/dr. A mapped point on the axis can come out at r ~ 1e-19 with u_r = 0
+    // exactly, which would give e_tt = 0 instead of the limit: below 1e-13 m is the axis.
+    return {{grad_u_r[0], grad_u_z[1], r > 1e-13 ? u_r / r : grad_u_r[0],
+             grad_u_r[1] + grad_u_z[0]}};
+  }
+
+  /// Strain of the shape function whose only non-zero component is `component`.
+  inline Stress shape_strain(unsigned int component, double r, double phi, const Tensor<1, 2> &grad)
+  {
+    if (component == 0)
+      return {{grad[0], 0.0, phi / r, grad[1]}};
+    return {{0.0, grad[1], 0.0, grad[0]}};
+  }
+
+  struct Stiffness
+  {
+    std::array<std::array<double, 4>, 4> d{};
+    explicit Stiffness(const axisym::Material &m)
+    {
+      const Eigen::Matrix4d dm = m.stiffness();
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+          d[i][j] = dm(i, j);
+    }
+    Stress operator*(const Stress &e) const
+    {
+      Stress s{};
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+          s[i] += d[i][j] * e[j];
+      return s;
+    }
+  };
+
+  inline double dot(const Stress &a, const Stress &b)
+  {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
+  }
+
+  /// The elastic part e(u) - e_th of the strain e at (r, z); e itself without a thermal load.
+  inline Stress elastic_strain(const BodyLoadField &loads, double r, double z, const Stress &e)
+  {
+    if (!loads.has_thermal_strain())
+      return e;
+    const double e_th = loads.thermal_strain(r, z);
+    return {{e[0] - e_th, e[1] - e_th, e[2] - e_th, e[3]}};
+  }
+
+  /// The total stress D (e - e_th) that every output reports (DESIGN.md 7.1).
+  inline Stress total_stress(const Stiffness &d, const BodyLoadField &loads, double r, double z,
+                      const Stress &e)
+  {
+    return d * elastic_strain(loads, r, z, e);
+  }
+
+  /// u_r* on the contact zone as a 2-component function (u_z unconstrained: masked out).
+  class DieDisplacement : public Function<2>
+  {
+  public:
+    DieDisplacement(const axisym::Die &die, const axisym::Geometry &g)
+      : Function<2>(2), die_(die), geometry_(g)
+    {}
+    double value(const Point<2> &p, unsigned int component) const override
+    {
+      return component == 0 ? axisym::die_u_r(die_, geometry_, p[1]) : 0.0;
+    }
+
+  private:
+    axisym::Die die_;
+    axisym::Geometry geometry_;
+  };
+
+  /// u and the four stresses for DataOut (x = r is taken from the evaluation points).
+  class StressPostprocessor : public DataPostprocessor<2>
+  {
+  public:
+    StressPostprocessor(const Stiffness &d, const BodyLoadField &loads)
+      : d_(d), loads_(loads)
+    {}
+    void evaluate_vector_field(const DataPostprocessorInputs::Vector<2> &in,
+                               std::vector<Vector<double>> &out) const override
+    {
+      for (unsigned int q = 0; q < in.solution_values.size(); ++q)
+        {
+          const Point<2> &x = in.evaluation_points[q];
+          const Stress s =
+            total_stress(d_, loads_, x[0], x[1],
+                         strain(x[0], in.solution_values[q][0], in.solution_gradients[q][0],
+                                in.solution_gradients[q][1]));
+          out[q][0] = in.solution_values[q][0];
+          out[q][1] = in.solution_values[q][1];
+          for (unsigned int k = 0; k < 4; ++k)
+            out[q][2 + k] = s[k];
+          out[q][6] = in.solution_values[q][0];
+          out[q][7] = in.solution_values[q][1];
+        }
+    }
+    // The displacement once more as one vector (x = r, y = z) for ParaView's Warp By Vector.
+    std::vector<std::string> get_names() const override
+    {
+      return {"u_r",      "u_z",      "sigma_rr",     "sigma_zz",
+              "sigma_tt", "sigma_rz", "displacement", "displacement"};
+    }
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+    get_data_component_interpretation() const override
+    {
+      std::vector<DataComponentInterpretation::DataComponentInterpretation> kinds(
+        6, DataComponentInterpretation::component_is_scalar);
+      kinds.resize(8, DataComponentInterpretation::component_is_part_of_vector);
+      return kinds;
+    }
+    UpdateFlags get_needed_update_flags() const override
+    {
+      return update_values | update_gradients | update_quadrature_points;
+    }
+
+  private:
+    Stiffness d_;
+    BodyLoadField loads_;
+  };
+
+  /// Everything computed from one solution (one active-set step).
+  /// One die on an outline part, from one solution.
+  struct DieEvaluation
+  {
+    double indentation = 0, force = 0, force_trace = 0;
+    double half_width = 0, half_width_gap = 0; ///< one-edge zone: centre to free end [m]
+    double zone_lo = 0, zone_hi = 0;           ///< the zone along the part [m]
+    bool two_edges = false;
+    double max_penetration = 0;
+    std::vector<PressurePoint> pressure;
+  };
+
+  /// The end of a contact zone that starts at s = 0 and runs toward s > 0, from the gap g at
+  /// the contact points (s, g) sorted by s: after the last positive sample (sign noise of
+  /// g ~ p / kappa inside the zone is ignored), (a) by linear interpolation of g and (b) by
+  /// the square-root law of a smooth contact edge, p ~ sqrt(c - s) (DESIGN.md 4.3): p^2 of
+  /// the last two samples with positive pressure extrapolated linearly to zero, kept inside
+  /// the bracket [last positive, first non-positive]. Returns (b, a); s_end when the zone
+  /// reaches the last sample, 0 when even the first sample is open.
+  inline std::pair<double, double> zone_end(const std::vector<std::pair<double, double>> &samples,
+                                     const double s_end)
+  {
+    double c = s_end, c_gap = s_end;
+    if (samples.empty())
+      return {c, c_gap};
+    if (samples.front().second <= 0)
+      c = c_gap = 0;
+    for (std::size_t i = samples.size() - 1; i > 0; --i)
+      if (samples[i - 1].second > 0 && samples[i].second <= 0)
+        {
+          const auto [z0, g0] = samples[i - 1];
+          const auto [z1, g1] = samples[i];
+          c_gap = z0 + g0 * (z1 - z0) / (g0 - g1);
+          c = c_gap;
+          std::size_t k = i - 1; // previous positive sample at a distinct s
+          while (k > 0 && samples[k - 1].first >= z0)
+            --k;
+          if (k > 0 && samples[k - 1].second > g0)
+            {
+              const auto [zm, gm] = samples[k - 1];
+              c = std::clamp(z0 + g0 * g0 * (z0 - zm) / (gm * gm - g0 * g0), z0, z1);
+            }
+          break;
+        }
+    return {c, c_gap};
+  }
+
+  struct Evaluation
+  {
+    Functionals functionals;
+    double force = 0, force_trace = 0, force_penalty = 0, half_width = 0, half_width_gap = 0;
+    double max_penetration = 0;
+    std::vector<PressurePoint> pressure;
+    std::vector<DieEvaluation> dies; ///< outline dies
+    std::optional<double> error_sq, norm_sq;
+    std::optional<double> error_max, norm_max;
+    std::optional<double> u_error_sq, u_norm_sq;
+  };
+
+  class AxisymmetricSolver
+  {
+  public:
+    AxisymmetricSolver(const axisym::Problem &problem, const FemOptions &options,
+                       const StressFunction &exact, const DisplacementFunction &exact_u)
+      : problem_(problem)
+      , options_(options)
+      , exact_(exact)
+      , exact_u_(exact_u)
+      , outline_(!problem.legacy_cylinder)
+      , fe_(FE_Q<2>(options.degree), 2)
+      , dof_handler_(triangulation_)
+      , d_(problem.material)
+      , loads_(problem)
+      , cell_quadrature_(options.degree + 2)
+      , face_quadrature_(options.contact_points > 0 ? options.contact_points
+                                                    : options.degree + 1)
+    {
+      if (!outline_)
+        mapping_ = std::make_unique<MappingQ1<2>>();
+      const double a = problem.geometry.half_length();
+      if (outline_)
+        for (const std::string &part : problem.body->die_parts())
+          {
+            OutlineDie d;
+            d.part = part;
+            d.boundary_id = boundary_id_of_part(problem.body->outline, part);
+            d.frame = axisym::die_frame(*problem.body, part);
+            d.condition = problem.body->conditions.at(part).die;
+            d.delta = d.condition.indentation.value_or(0.0);
+            dies_.push_back(d);
+            mode_ = Mode::unilateral;
+          }
+      if (!dies_.empty())
+        estimate_die_zones();
+      if (problem.die)
+        {
+          mode_ = problem.contact.method == "fixed" ? Mode::bilateral : Mode::unilateral;
+          half_width_ = mode_ == Mode::bilateral ? problem.contact.half_width.value_or(a) : a;
+          if (mode_ == Mode::bilateral)
+            split_ = half_width_;
+        }
+    }
+
+    FemResult run();
+
+  private:
+    /// A die on an outline part: its frame, condition and current state.
+    struct OutlineDie
+    {
+      std::string part;
+      types::boundary_id boundary_id = 0;
+      axisym::DieFrame frame;
+      axisym::DieCondition condition;
+      double delta = 0;           ///< the indentation: given, or found for the force
+      double zone_lo = 0, zone_hi = 0; ///< the zone [m along the part] the mesh resolves
+    };
+    /// One boundary face on a die's part (legacy: r = R2, die 0).
+    struct ContactFace
+    {
+      DoFHandler<2>::active_cell_iterator cell;
+      unsigned int face = 0, die = 0;
+    };
+    /// The die's outward normal and the target outward displacement u.n at x (+infinity
+    /// where there is no die surface: beyond a flat punch's edge).
+    Tensor<1, 2> die_normal(unsigned int die) const
+    {
+      Tensor<1, 2> n;
+      if (outline_)
+        n[0] = dies_[die].frame.normal.r, n[1] = dies_[die].frame.normal.z;
+      else
+        n[0] = 1.0;
+      return n;
+    }
+    double die_target(unsigned int die, const Point<2> &x) const
+    {
+      if (!outline_)
+        return axisym::die_u_r(*problem_.die, problem_.geometry, x[1]);
+      const OutlineDie &d = dies_[die];
+      const double s = d.frame.coordinate({x[0], x[1]});
+      return d.condition.profile.gap(std::abs(s)) - d.delta;
+    }
+    /// Pass 0's estimate of each die's zone (see axisymmetric_fem.h, "Dies").
+    void estimate_die_zones();
+    /// Refines toward the dies' zones after the global refinements.
+    void refine_toward_dies();
+    enum class Mode
+    {
+      none,
+      bilateral,
+      unilateral
+    };
+
+    void make_mesh();
+    void make_outline_mesh();
+    void setup_system();
+    void add_outline_constraints();
+    void add_outline_tractions(const DoFHandler<2>::active_cell_iterator &cell,
+                               FEFaceValues<2> &fv, Vector<double> &cell_rhs) const;
+    void outline_boundary_terms(double &work, double &b_c, double &b_r) const;
+    /// Outline edge of a boundary face (its manifold id - 1, set in make_outline_mesh).
+    int edge_of(const TriaIterator<TriaAccessor<1, 2, 2>> &face) const
+    {
+      return static_cast<int>(face->manifold_id()) - 1;
+    }
+    const Mapping<2> &mapping() const { return *mapping_; }
+    template <typename Finish>
+    void active_set_loop(FemResult &result, int pass, const Finish &finish);
+    void assemble_base();
+    void add_penalty(const std::vector<char> &active);
+    void solve_linear();
+    /// Solves the factorized system (solve_linear) for another right-hand side; the
+    /// constraints' homogeneous part only (no inhomogeneity).
+    Vector<double> solve_homogeneous(const Vector<double> &rhs);
+    /// Force control: the indentations of the force-controlled dies that give the asked
+    /// forces on the active set, and the solution with them (axisymmetric_fem.h, "Dies").
+    void apply_force_control(const std::vector<char> &active);
+    /// Per die, over the active points: kappa int (u.n) r ds, kappa int g0 r ds and
+    /// kappa int r ds (P = 2 pi (first - second + delta third)).
+    std::vector<std::array<double, 3>> penalty_integrals(const Vector<double> &u,
+                                                         const std::vector<char> &active) const;
+    void evaluate_dies(const std::vector<char> *active, Evaluation &ev, double &b_c,
+                       double &b_r, double &penalty_energy) const;
+    std::vector<char> active_set() const;
+    Evaluation evaluate(const std::vector<char> *active) const;
+    std::vector<FieldSample> samples() const;
+    std::vector<PartReaction> reactions() const;
+    void write_vtu() const;
+    /// Total stress D (e - e_th) at x for the strain e of the solution there.
+    Stress stress_at(const Point<2> &x, const Stress &e) const
+    {
+      return total_stress(d_, loads_, x[0], x[1], e);
+    }
+    void progress(const std::string &line) const
+    {
+      if (options_.progress)
+        std::cerr << "fem: " << line << '\n';
+    }
+    bool is_outer(unsigned int id) const
+    {
+      return id == outer_contact_boundary || id == outer_free_boundary;
+    }
+
+    const axisym::Problem &problem_;
+    FemOptions options_;
+    StressFunction exact_;
+    DisplacementFunction exact_u_;
+    bool outline_ = false; ///< an outline problem (DESIGN.md 7.1): the section as given
+    Mode mode_ = Mode::none;
+    double half_width_ = 0;
+    std::optional<double> split_; ///< z where the outer line is split (contact edge)
+    int level_ = 0;               ///< mesh level of the current pass
+
+    Triangulation<2> triangulation_;
+    FESystem<2> fe_;
+    DoFHandler<2> dof_handler_;
+    // MappingQ1 for the legacy rectangle; for an outline MappingQ(p) cached after the
+    // refinement. Declared after the triangulation: the cache listens to its signals.
+    std::unique_ptr<Mapping<2>> mapping_;
+    double base_mesh_size_ = 0;
+    unsigned long n_base_cells_ = 0;
+    bool base_mesh_subdivided_ = false;
+    unsigned int base_mesh_flat_corners_ = 0;
+    Stiffness d_;
+    BodyLoadField loads_; ///< f and e_th (outline problems; none for the legacy form)
+    QGauss<2> cell_quadrature_;
+    QGaussLobatto<1> face_quadrature_; // on r = R2: penalty, active set, traces
+    AffineConstraints<double> constraints_;
+    SparsityPattern sparsity_;
+    SparseMatrix<double> base_matrix_, system_matrix_;
+    Vector<double> base_rhs_, system_rhs_, solution_;
+    // Faces on r = R2, in cell order; contact quadrature point k * n_q + q.
+    std::vector<ContactFace> contact_faces_;
+    std::vector<OutlineDie> dies_; ///< outline problems
+    /// Force control: per force-controlled die, the right-hand side of a unit indentation.
+    std::vector<Vector<double>> unit_rhs_;
+    /// Outline: the dofs whose residual is a support reaction, with the outline edge whose
+    /// condition (symmetry or displacement) holds them and their component (set in
+    /// add_outline_constraints).
+    struct ReactionDof
+    {
+      int edge = 0;
+      unsigned int component = 0;
+    };
+    std::map<types::global_dof_index, ReactionDof> reaction_dofs_;
+    double h_min_ = 0, kappa_ = 0;
+    std::unique_ptr<SparseDirectUMFPACK> umfpack_; ///< the last direct factorization
+    double assembly_s_ = 0, solve_s_ = 0;
+  };
+} // namespace fem::internal
