@@ -27,6 +27,110 @@ namespace rfm
     return v;
   }
 
+  // The products with the enrichment columns, on the near-edge rule: the borders of R11 and
+  // R12 and the enrichment rows of p_s and p_u (but the traction term). The polynomial and
+  // boundary-column blocks are not touched. The polynomial stress column (c, j) is
+  // omega_c phi_j e_c and the polynomial strains expand into B, B_r and B_z, so every border
+  // is B^T, B_r^T or B_z^T times a pointwise-weighted copy of the n_e enrichment columns.
+  void add_enrichment_blocks(const Eigen::Ref<const Eigen::VectorXd> &mu,
+                             const Eigen::Ref<const Eigen::VectorXd> &r, const BasisValues &b,
+                             const StressStructureValues &s, const DisplacementStructureValues &d,
+                             const EdgeColumns &e, const std::array<Eigen::MatrixXd, 4> *boundary,
+                             const Eigen::VectorXd *thermal_strain, const Eigen::MatrixXd *body_force,
+                             const Eigen::Matrix4d &c, ReissnerSystem &sys)
+  {
+    const Eigen::Index n = b.value.cols(), n_e = e.stress[0].cols(), n_p = r.size();
+    const Eigen::Index n_b = boundary ? (*boundary)[0].cols() : 0;
+    const Eigen::Index s_e = 4 * n + n_b, u_e = 2 * n; // the enrichment's first unknowns
+
+    // Per component k: weighted enrichment stresses mu X_e,k and mu C X_e (row k).
+    Eigen::MatrixXd wx[n_stress_components], cx[n_stress_components];
+    for (int k = 0; k < n_stress_components; ++k)
+      wx[k] = mu.asDiagonal() * e.stress[k];
+    for (int k = 0; k < n_stress_components; ++k)
+      {
+        cx[k].setZero(n_p, n_e);
+        for (int l = 0; l < n_stress_components; ++l)
+          if (c(k, l) != 0.0)
+            cx[k] += c(k, l) * wx[l];
+      }
+
+    // Right factors of B^T: R11 border (4 n_e), R12 column border (4 n_e), R12 row
+    // border for u_r and u_z (2 n_e); of B_r^T and B_z^T: the R12 row border (2 n_e each).
+    Eigen::MatrixXd g(n_p, 10 * n_e), g_r(n_p, 2 * n_e), g_z(n_p, 2 * n_e);
+    for (int k = 0; k < n_stress_components; ++k)
+      {
+        g.middleCols(k * n_e, n_e) = -(s.omega.col(k).asDiagonal() * cx[k]);
+        g.middleCols((4 + k) * n_e, n_e) = (mu.cwiseProduct(s.omega.col(k))).asDiagonal() * e.strain[k];
+      }
+    const Eigen::VectorXd omega_r_over_r = d.omega.col(0).cwiseQuotient(r);
+    g.middleCols(8 * n_e, n_e) = d.omega_r.col(0).asDiagonal() * wx[rr] +
+                                 omega_r_over_r.asDiagonal() * wx[tt] +
+                                 d.omega_z.col(0).asDiagonal() * wx[rz];
+    g.middleCols(9 * n_e, n_e) =
+      d.omega_z.col(1).asDiagonal() * wx[zz] + d.omega_r.col(1).asDiagonal() * wx[rz];
+    g_r.leftCols(n_e) = d.omega.col(0).asDiagonal() * wx[rr];
+    g_r.rightCols(n_e) = d.omega.col(1).asDiagonal() * wx[rz];
+    g_z.leftCols(n_e) = d.omega.col(0).asDiagonal() * wx[rz];
+    g_z.rightCols(n_e) = d.omega.col(1).asDiagonal() * wx[zz];
+    Eigen::MatrixXd bg(n, 10 * n_e), bg_r(n, 2 * n_e), bg_z(n, 2 * n_e);
+    bg.noalias() = b.value.transpose() * g;
+    bg_r.noalias() = b.d_r.transpose() * g_r;
+    bg_z.noalias() = b.d_z.transpose() * g_z;
+
+    // 1. R11 border: - int X_all . C X_e, mirrored.
+    Eigen::MatrixXd corner = Eigen::MatrixXd::Zero(n_e, n_e);
+    for (int k = 0; k < n_stress_components; ++k)
+      {
+        sys.r11.block(k * n, s_e, n, n_e) = bg.middleCols(k * n_e, n_e);
+        corner.noalias() -= e.stress[k].transpose() * cx[k];
+      }
+    if (n_b > 0)
+      {
+        Eigen::MatrixXd border = Eigen::MatrixXd::Zero(n_b, n_e);
+        for (int k = 0; k < n_stress_components; ++k)
+          border.noalias() -= (*boundary)[k].transpose() * cx[k];
+        sys.r11.block(4 * n, s_e, n_b, n_e) = border;
+      }
+    sys.r11.block(s_e, s_e, n_e, n_e) = corner;
+    sys.r11.block(s_e, 0, n_e, s_e) = sys.r11.block(0, s_e, s_e, n_e).transpose();
+
+    // 2. R12 borders: int X_all . e(Phi_e) and int X_e . e(Phi_poly).
+    corner.setZero();
+    for (int k = 0; k < n_stress_components; ++k)
+      {
+        sys.r12.block(k * n, u_e, n, n_e) = bg.middleCols((4 + k) * n_e, n_e);
+        corner.noalias() += wx[k].transpose() * e.strain[k];
+      }
+    if (n_b > 0)
+      {
+        Eigen::MatrixXd border = Eigen::MatrixXd::Zero(n_b, n_e);
+        for (int k = 0; k < n_stress_components; ++k)
+          border.noalias() += (mu.asDiagonal() * (*boundary)[k]).transpose() * e.strain[k];
+        sys.r12.block(4 * n, u_e, n_b, n_e) = border;
+      }
+    sys.r12.block(s_e, u_e, n_e, n_e) = corner;
+    sys.r12.block(s_e, 0, n_e, n) =
+      (bg.middleCols(8 * n_e, n_e) + bg_r.leftCols(n_e) + bg_z.leftCols(n_e)).transpose();
+    sys.r12.block(s_e, n, n_e, n) =
+      (bg.middleCols(9 * n_e, n_e) + bg_r.rightCols(n_e) + bg_z.rightCols(n_e)).transpose();
+
+    // 3. p_s rows: int X_e . (e(u0) - C s0 - e_th).
+    Eigen::MatrixXd residual = initial_strain_residual(s, d, r, c);
+    if (thermal_strain)
+      for (const int k : {rr, zz, tt})
+        residual.col(k) -= *thermal_strain;
+    for (int k = 0; k < n_stress_components; ++k)
+      sys.p_s.segment(s_e, n_e).noalias() += wx[k].transpose() * residual.col(k);
+
+    // 4. p_u rows: int s0 . e(Phi_e) - int f . Phi_e (the traction term is the caller's).
+    for (int k = 0; k < n_stress_components; ++k)
+      sys.p_u.segment(u_e, n_e).noalias() += e.strain[k].transpose() * mu.cwiseProduct(s.s0.col(k));
+    if (body_force)
+      for (int m = 0; m < 2; ++m)
+        sys.p_u.segment(u_e, n_e).noalias() -= e.u[m].transpose() * mu.cwiseProduct(body_force->col(m));
+  }
+
   Eigen::Index assembly_chunk_points(Eigen::Index n_basis_functions, long l2_bytes)
   {
     const Eigen::Index bytes_per_point = 4 * n_basis_functions * static_cast<Eigen::Index>(sizeof(double));
@@ -55,89 +159,16 @@ namespace rfm
       return w;
     }
 
-    // The products with the enrichment columns, on the near-edge rule: the borders of
-    // R11 and R12 and the enrichment rows of p_s and p_u. The polynomial-polynomial blocks
-    // (tensor rule) are not touched. The polynomial stress column (c, j) is omega_c phi_j
-    // e_c and the polynomial strains expand into B, B_r and B_z, so every border is B^T,
-    // B_r^T or B_z^T times a pointwise-weighted copy of the n_e enrichment columns.
+    // The legacy space's enrichment borders: the values at its near-edge rule, and the
+    // traction term of p_u on its boundary rule.
     void add_edge_terms(const DiscreteSpace &space, const Material &material, ReissnerSystem &sys)
     {
-      const Eigen::Index n = space.n_basis_functions(), n_e = space.n_edge_columns();
-      const Eigen::Index n_p = space.edge_quadrature().n_points();
-      const Eigen::Matrix4d c = material.compliance();
-      const Eigen::VectorXd &r = space.edge_quadrature().r;
-      const Eigen::VectorXd &mu = space.edge_measure();
-      const BasisValues &b = space.edge_basis_values();
-      const StressStructureValues &s = space.edge_stress_structure();
-      const DisplacementStructureValues &d = space.edge_displacement_structure();
-      const EdgeColumns &e = space.edge_columns();
-
-      // Per component k: weighted enrichment stresses mu X_e,k and mu C X_e (row k).
-      Eigen::MatrixXd wx[n_stress_components], cx[n_stress_components];
-      for (int k = 0; k < n_stress_components; ++k)
-        wx[k] = mu.asDiagonal() * e.stress[k];
-      for (int k = 0; k < n_stress_components; ++k)
-        {
-          cx[k].setZero(n_p, n_e);
-          for (int l = 0; l < n_stress_components; ++l)
-            if (c(k, l) != 0.0)
-              cx[k] += c(k, l) * wx[l];
-        }
-
-      // Right factors of B^T: R11 border (4 n_e), R12 column border (4 n_e), R12 row
-      // border for u_r and u_z (2 n_e); of B_r^T and B_z^T: the R12 row border (2 n_e each).
-      Eigen::MatrixXd g(n_p, 10 * n_e), g_r(n_p, 2 * n_e), g_z(n_p, 2 * n_e);
-      for (int k = 0; k < n_stress_components; ++k)
-        {
-          g.middleCols(k * n_e, n_e) = -(s.omega.col(k).asDiagonal() * cx[k]);
-          g.middleCols((4 + k) * n_e, n_e) = (mu.cwiseProduct(s.omega.col(k))).asDiagonal() * e.strain[k];
-        }
-      const Eigen::VectorXd omega_r_over_r = d.omega.col(0).cwiseQuotient(r);
-      g.middleCols(8 * n_e, n_e) = d.omega_r.col(0).asDiagonal() * wx[rr] +
-                                   omega_r_over_r.asDiagonal() * wx[tt] +
-                                   d.omega_z.col(0).asDiagonal() * wx[rz];
-      g.middleCols(9 * n_e, n_e) =
-        d.omega_z.col(1).asDiagonal() * wx[zz] + d.omega_r.col(1).asDiagonal() * wx[rz];
-      g_r.leftCols(n_e) = d.omega.col(0).asDiagonal() * wx[rr];
-      g_r.rightCols(n_e) = d.omega.col(1).asDiagonal() * wx[rz];
-      g_z.leftCols(n_e) = d.omega.col(0).asDiagonal() * wx[rz];
-      g_z.rightCols(n_e) = d.omega.col(1).asDiagonal() * wx[zz];
-      Eigen::MatrixXd bg(n, 10 * n_e), bg_r(n, 2 * n_e), bg_z(n, 2 * n_e);
-      bg.noalias() = b.value.transpose() * g;
-      bg_r.noalias() = b.d_r.transpose() * g_r;
-      bg_z.noalias() = b.d_z.transpose() * g_z;
-
-      // 1. R11 border: - int X_all . C X_e, mirrored.
-      Eigen::MatrixXd corner = Eigen::MatrixXd::Zero(n_e, n_e);
-      for (int k = 0; k < n_stress_components; ++k)
-        {
-          sys.r11.block(k * n, 4 * n, n, n_e) = bg.middleCols(k * n_e, n_e);
-          corner.noalias() -= e.stress[k].transpose() * cx[k];
-        }
-      sys.r11.bottomRightCorner(n_e, n_e) = corner;
-      sys.r11.bottomLeftCorner(n_e, 4 * n) = sys.r11.topRightCorner(4 * n, n_e).transpose();
-
-      // 2. R12 borders: int X_all . e(Phi_e) and int X_e . e(Phi_poly).
-      corner.setZero();
-      for (int k = 0; k < n_stress_components; ++k)
-        {
-          sys.r12.block(k * n, 2 * n, n, n_e) = bg.middleCols((4 + k) * n_e, n_e);
-          corner.noalias() += wx[k].transpose() * e.strain[k];
-        }
-      sys.r12.bottomRightCorner(n_e, n_e) = corner;
-      sys.r12.block(4 * n, 0, n_e, n) =
-        (bg.middleCols(8 * n_e, n_e) + bg_r.leftCols(n_e) + bg_z.leftCols(n_e)).transpose();
-      sys.r12.block(4 * n, n, n_e, n) =
-        (bg.middleCols(9 * n_e, n_e) + bg_r.rightCols(n_e) + bg_z.rightCols(n_e)).transpose();
-
-      // 3. p_s rows: int X_e . (e(u0) - C s0).
-      const Eigen::MatrixXd residual = initial_strain_residual(s, d, r, c);
-      for (int k = 0; k < n_stress_components; ++k)
-        sys.p_s.tail(n_e).noalias() += wx[k].transpose() * residual.col(k);
-
-      // 4. p_u rows: int s0 . e(Phi_e) - int_{S_t} t . Phi_e.
-      for (int k = 0; k < n_stress_components; ++k)
-        sys.p_u.tail(n_e).noalias() += e.strain[k].transpose() * mu.cwiseProduct(s.s0.col(k));
+      const Eigen::Index n_e = space.n_edge_columns();
+      add_enrichment_blocks(space.edge_measure(), space.edge_quadrature().r,
+                            space.edge_basis_values(), space.edge_stress_structure(),
+                            space.edge_displacement_structure(), space.edge_columns(), nullptr,
+                            nullptr, nullptr, material.compliance(), sys);
+      // p_u rows: - int_{S_t} t . Phi_e.
       const BoundaryQuadrature &bq = space.boundary_quadrature();
       const EdgeColumns be = space.enrichment()->evaluate(bq.r, bq.z);
       const std::array<Eigen::VectorXd, 2> wt = weighted_tractions(space);

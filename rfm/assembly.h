@@ -32,6 +32,8 @@
 
 #include <Eigen/Core>
 
+#include <array>
+
 namespace rfm
 {
   /// Sizes: n_s = 4N + n_e stress and n_u = 2N + n_e displacement unknowns
@@ -84,6 +86,21 @@ namespace rfm
                              const StressStructureValues &s, const DisplacementStructureValues &d,
                              const Eigen::Matrix4d &c, ReissnerSystem &sys,
                              Eigen::Index chunk_points = 0, bool full_r11 = true);
+
+  /// The products with enrichment columns (edge_modes.h) on a near-edge rule with points r
+  /// and per-radian measure mu, where b, s, d and e are the polynomial basis, the structures and
+  /// the enrichment columns: the borders of R11 and R12 with every other column and the
+  /// enrichment rows of p_s and p_u, written into `sys` (sized by the caller) in the layout
+  /// q_s = (4 N polynomial, n_b boundary columns, n_e enrichment), q_u = (2 N, n_e);
+  /// `boundary` the outline's boundary columns at the points (nullptr: n_b = 0), and the
+  /// thermal strain and body force at the points when there are body loads (nullptr: none).
+  /// The traction term of p_u (- int_St t . Phi_e) is the caller's: it is a boundary integral.
+  void add_enrichment_blocks(const Eigen::Ref<const Eigen::VectorXd> &mu,
+                             const Eigen::Ref<const Eigen::VectorXd> &r, const BasisValues &b,
+                             const StressStructureValues &s, const DisplacementStructureValues &d,
+                             const EdgeColumns &e, const std::array<Eigen::MatrixXd, 4> *boundary,
+                             const Eigen::VectorXd *thermal_strain, const Eigen::MatrixXd *body_force,
+                             const Eigen::Matrix4d &c, ReissnerSystem &sys);
 
   /// e(u0) - C s0 at points (n_points x 4): the data of p_s.
   Eigen::MatrixXd initial_strain_residual(const StressStructureValues &s,
