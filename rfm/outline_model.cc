@@ -1,5 +1,6 @@
 #include "rfm/outline_model.h"
 
+#include "rfm/contact.h"
 #include "rfm/section_quadrature.h"
 
 #include <Eigen/Eigenvalues>
@@ -7,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 namespace rfm
 {
@@ -37,7 +39,11 @@ namespace rfm
 
     // Gauss points along every edge (arcs in angle), with r ds weights. Points never fall on
     // the axis r = 0 itself except on axis edges, whose weight r ds is zero there anyway.
-    EdgeQuadrature edge_gauss(const axisym::Outline &outline, const int n_points)
+    // graded[e] (optional): edge e has a contact edge at its start (bit 1) or end (bit 2),
+    // where the stress has a rho^(-1/2) term: there t = s^2 from that end (on each half when
+    // both), so that the singular traces integrate as smooth functions of s.
+    EdgeQuadrature edge_gauss(const axisym::Outline &outline, const int n_points,
+                              const std::vector<int> &graded = {})
     {
       const GaussRule1D g = gauss_legendre(n_points);
       std::vector<double> r, z, w, nr, nz;
@@ -45,14 +51,36 @@ namespace rfm
       for (int e = 0; e < static_cast<int>(outline.edges().size()); ++e)
         {
           const axisym::OutlineEdge &edge = outline.edges()[e];
-          for (Eigen::Index k = 0; k < g.nodes.size(); ++k)
+          const int ends = graded.empty() ? 0 : graded[e];
+          // Panels of t: [0, 1], or its halves; each maps s in [0, 1] to t, graded or not.
+          struct Panel
+          {
+            double t0, t1;
+            int grade; // 0: none, -1: toward t0, +1: toward t1
+          };
+          std::vector<Panel> panels;
+          if (ends == 3)
             {
-              const double t = 0.5 * (g.nodes[k] + 1.0);
-              const axisym::Point p = edge.point_at(t), n = edge.outward_normal_at(t);
-              r.push_back(p.r), z.push_back(p.z), nr.push_back(n.r), nz.push_back(n.z);
-              w.push_back(0.5 * g.weights[k] * edge.length() * p.r);
-              q.edge.push_back(e);
+              panels.push_back({0.0, 0.5, -1});
+              panels.push_back({0.5, 1.0, 1});
             }
+          else
+            panels.push_back({0.0, 1.0, ends == 0 ? 0 : (ends == 1 ? -1 : 1)});
+          for (const Panel &panel : panels)
+            for (Eigen::Index k = 0; k < g.nodes.size(); ++k)
+              {
+                const double s = 0.5 * (g.nodes[k] + 1.0), ws = 0.5 * g.weights[k];
+                const double h = panel.t1 - panel.t0;
+                double t = panel.t0 + h * s, dt = h;
+                if (panel.grade < 0)
+                  t = panel.t0 + h * s * s, dt = 2 * h * s;
+                else if (panel.grade > 0)
+                  t = panel.t1 - h * (1 - s) * (1 - s), dt = 2 * h * (1 - s);
+                const axisym::Point p = edge.point_at(t), n = edge.outward_normal_at(t);
+                r.push_back(p.r), z.push_back(p.z), nr.push_back(n.r), nz.push_back(n.z);
+                w.push_back(ws * dt * edge.length() * p.r);
+                q.edge.push_back(e);
+              }
         }
       auto vec = [](const std::vector<double> &v) {
         return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
@@ -88,13 +116,42 @@ namespace rfm
     qo.n_points = 2 * options.degree + options.extra_gauss_points;
     // On the split body: a zone's ends are vertices of the triangulation and of the edges.
     quadrature_ = section_gauss(structures_.body().outline, qo);
-    edge_quadrature_ = edge_gauss(structures_.body().outline, qo.n_points);
+    const std::vector<int> graded = make_enrichments(problem, zones, options);
+    edge_quadrature_ = edge_gauss(structures_.body().outline, qo.n_points, graded);
+    // The near-edge rules: the half disc of each enrichment's support, polar with
+    // rho = rho_0 s^2 (quadrature.h), placed in its frame.
+    {
+      const int n_near = options.degree + options.extra_gauss_points + options.edge_extra_points;
+      std::vector<Quadrature2D> rules;
+      Eigen::Index total = 0;
+      for (const EdgeEnrichment &e : enrichments_)
+        {
+          Quadrature2D q = half_disc_gauss(0.0, 0.0, e.cutoff_radius(), n_near, n_near);
+          for (Eigen::Index k = 0; k < q.weights.size(); ++k)
+            {
+              const auto x = e.frame().point(-q.z[k], -q.r[k]);
+              q.r[k] = x[0], q.z[k] = x[1];
+            }
+          total += q.weights.size();
+          rules.push_back(std::move(q));
+        }
+      near_.r.resize(total), near_.z.resize(total), near_.weights.resize(total);
+      Eigen::Index at = 0;
+      for (const Quadrature2D &q : rules)
+        {
+          near_.r.segment(at, q.weights.size()) = q.r;
+          near_.z.segment(at, q.weights.size()) = q.z;
+          near_.weights.segment(at, q.weights.size()) = q.weights;
+          at += q.weights.size();
+        }
+    }
     // A mirrored section stands for itself and its image in z = 0: every integral twice (the
     // system scales as a whole; the functionals and forces refer to the whole body).
     if (problem.body->mirrored)
       {
         quadrature_.weights *= 2.0;
         edge_quadrature_.weights *= 2.0;
+        near_.weights *= 2.0;
       }
     std::array<Eigen::MatrixXd, 2> gram_u;
     const ReissnerSystem sys = assemble(gram_u);
@@ -150,9 +207,16 @@ namespace rfm
           weighted.transpose() * reduced.evaluate(samples.r, samples.z, false).value;
         tu[m] = inclusion * orthonormal(inclusion.transpose() * gram_u[m] * inclusion);
       }
-    Eigen::MatrixXd u_map = Eigen::MatrixXd::Zero(2 * n, tu[0].cols() + tu[1].cols());
-    u_map.topLeftCorner(n, tu[0].cols()) = tu[0];
-    u_map.bottomRightCorner(n, tu[1].cols()) = tu[1];
+    // The enrichment's displacement columns (vector fields): their own Gram matrix of values
+    // and strains on the near-edge rules (their support).
+    const Eigen::Index n_e = n_edge_columns();
+    const Eigen::MatrixXd te = n_e > 0 ? orthonormal(gram_e_) : Eigen::MatrixXd(0, 0);
+    Eigen::MatrixXd u_map =
+      Eigen::MatrixXd::Zero(2 * n + n_e, tu[0].cols() + tu[1].cols() + te.cols());
+    u_map.block(0, 0, n, tu[0].cols()) = tu[0];
+    u_map.block(n, tu[0].cols(), n, tu[1].cols()) = tu[1];
+    if (n_e > 0)
+      u_map.bottomRightCorner(n_e, te.cols()) = te;
     n_kept_ = {s_map.cols(), u_map.cols()};
 
     ReissnerSystem reduced;
@@ -170,10 +234,11 @@ namespace rfm
       }
   }
 
-  ReissnerSystem OutlineModel::assemble(std::array<Eigen::MatrixXd, 2> &gram_u) const
+  ReissnerSystem OutlineModel::assemble(std::array<Eigen::MatrixXd, 2> &gram_u)
   {
     const Eigen::Index n = basis_.n_basis_functions(), n_b = structures_.n_boundary_columns();
-    const Eigen::Index n_s = 4 * n + n_b, n_u = 2 * n;
+    const Eigen::Index n_e = n_edge_columns();
+    const Eigen::Index n_s = 4 * n + n_b + n_e, n_u = 2 * n + n_e;
     const Eigen::Matrix4d c = material_.compliance();
     const Quadrature2D &q = quadrature_;
     const Eigen::VectorXd mu = q.weights.cwiseProduct(q.r);
@@ -259,7 +324,45 @@ namespace rfm
         for (const int k : {rr, zz, tt})
           residual.col(k) -= e_th;
         for (int k = 0; k < n_stress_components; ++k)
-          sys.p_s.tail(n_b).noalias() += wxb[k].transpose() * residual.col(k);
+          sys.p_s.segment(4 * n, n_b).noalias() += wxb[k].transpose() * residual.col(k);
+      }
+
+    // The enrichment columns' products, on the near-edge rules (their support: no traction
+    // edge meets it, so the enrichment has no traction term in p_u).
+    if (n_e > 0)
+      {
+        const Quadrature2D &nq = near_;
+        const Eigen::VectorXd near_mu = nq.weights.cwiseProduct(nq.r);
+        const BasisValues nb = basis_.evaluate(nq.r, nq.z);
+        const OutlineStressValues ns = structures_.stress(nq.r, nq.z);
+        const DisplacementStructureValues nd = as_structure(structures_.displacement(nq.r, nq.z));
+        const EdgeColumns ec = edge_columns(nq.r, nq.z);
+        Eigen::VectorXd th;
+        Eigen::MatrixXd f;
+        if (loads_.thermal())
+          {
+            th.resize(nq.n_points());
+            for (Eigen::Index k = 0; k < nq.n_points(); ++k)
+              th[k] = axisym::thermal_strain(loads_, material_, nq.r[k], nq.z[k]);
+          }
+        if (loads_.body_force())
+          {
+            f.resize(nq.n_points(), 2);
+            for (Eigen::Index k = 0; k < nq.n_points(); ++k)
+              {
+                const auto fk = axisym::body_force(loads_, material_, nq.r[k], nq.z[k]);
+                f(k, 0) = fk[0], f(k, 1) = fk[1];
+              }
+          }
+        add_enrichment_blocks(near_mu, nq.r, nb, polynomial_part(ns), nd, ec,
+                              n_b > 0 ? &ns.boundary : nullptr, loads_.thermal() ? &th : nullptr,
+                              loads_.body_force() ? &f : nullptr, c, sys);
+        const double l = structures_.body().outline.size();
+        gram_e_ = (ec.u[0].transpose() * (near_mu.asDiagonal() * ec.u[0]) +
+                   ec.u[1].transpose() * (near_mu.asDiagonal() * ec.u[1])) /
+                  (l * l);
+        for (int k = 0; k < n_stress_components; ++k)
+          gram_e_.noalias() += ec.strain[k].transpose() * (near_mu.asDiagonal() * ec.strain[k]);
       }
 
     // p_u: - int_{S_t} t . Phi r ds on the traction edges.
@@ -293,6 +396,13 @@ namespace rfm
             }
         return f;
       }
+    return evaluate_parts(r, z, true);
+  }
+
+  FieldValues OutlineModel::evaluate_parts(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                           const Eigen::Ref<const Eigen::VectorXd> &z,
+                                           const bool with_enrichment) const
+  {
     const Eigen::Index n = basis_.n_basis_functions(), n_b = structures_.n_boundary_columns();
     const BasisValues b = basis_.evaluate(r, z);
     const OutlineStressValues s = structures_.stress(r, z);
@@ -304,7 +414,7 @@ namespace rfm
       {
         f.sigma.col(k) += s.omega.col(k).cwiseProduct(b.value * q_s_.segment(k * n, n));
         if (n_b > 0)
-          f.sigma.col(k) += s.boundary[k] * q_s_.tail(n_b);
+          f.sigma.col(k) += s.boundary[k] * q_s_.segment(4 * n, n_b);
       }
     f.u = d.u0;
     Eigen::MatrixXd du_dr = d.u0_r, du_dz = d.u0_z;
@@ -320,30 +430,174 @@ namespace rfm
     f.strain.col(zz) = du_dz.col(1);
     f.strain.col(tt) = f.u.col(0).cwiseQuotient(r);
     f.strain.col(rz) = du_dz.col(0) + du_dr.col(1);
+    const Eigen::Index n_e = n_edge_columns();
+    if (with_enrichment && n_e > 0)
+      {
+        const EdgeColumns e = edge_columns(r, z);
+        const auto qs = q_s_.tail(n_e), qu = q_u_.tail(n_e);
+        for (int k = 0; k < n_stress_components; ++k)
+          {
+            f.sigma.col(k) += e.stress[k] * qs;
+            f.strain.col(k) += e.strain[k] * qu;
+          }
+        for (int m = 0; m < 2; ++m)
+          f.u.col(m) += e.u[m] * qu;
+      }
     return f;
+  }
+
+  EdgeColumns OutlineModel::edge_columns(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                         const Eigen::Ref<const Eigen::VectorXd> &z) const
+  {
+    EdgeColumns all;
+    const Eigen::Index n_p = r.size(), n_e = n_edge_columns();
+    for (auto *m : {&all.stress[0], &all.stress[1], &all.stress[2], &all.stress[3], &all.u[0],
+                    &all.u[1], &all.strain[0], &all.strain[1], &all.strain[2], &all.strain[3]})
+      m->resize(n_p, n_e);
+    Eigen::Index at = 0;
+    for (const EdgeEnrichment &en : enrichments_)
+      {
+        const EdgeColumns e = en.evaluate(r, z);
+        const Eigen::Index w = en.n_columns();
+        for (int k = 0; k < 4; ++k)
+          all.stress[k].middleCols(at, w) = e.stress[k], all.strain[k].middleCols(at, w) = e.strain[k];
+        for (int m = 0; m < 2; ++m)
+          all.u[m].middleCols(at, w) = e.u[m];
+        at += w;
+      }
+    return all;
+  }
+
+  Eigen::Index OutlineModel::n_edge_columns() const
+  {
+    Eigen::Index n = 0;
+    for (const EdgeEnrichment &e : enrichments_)
+      n += e.n_columns();
+    return n;
+  }
+
+  namespace
+  {
+    // The distance from p to an edge: exact for a line, sampled for an arc (a bound within
+    // a fraction of a per cent, enough for a support radius with a margin).
+    double distance_to_edge(const axisym::OutlineEdge &e, const axisym::Point p)
+    {
+      if (e.kind == axisym::OutlineEdge::Kind::line)
+        {
+          const double dr = e.end.r - e.start.r, dz = e.end.z - e.start.z;
+          const double t = std::clamp(((p.r - e.start.r) * dr + (p.z - e.start.z) * dz) /
+                                        (dr * dr + dz * dz),
+                                      0.0, 1.0);
+          return std::hypot(p.r - e.start.r - t * dr, p.z - e.start.z - t * dz);
+        }
+      double d = std::numeric_limits<double>::infinity();
+      for (int k = 0; k <= 512; ++k)
+        {
+          const axisym::Point x = e.point_at(k / 512.0);
+          d = std::min(d, std::hypot(x.r - p.r, x.z - p.z));
+        }
+      return d;
+    }
+  } // namespace
+
+  std::vector<int> OutlineModel::make_enrichments(const axisym::Problem &problem,
+                                                  const std::vector<DieZone> &zones,
+                                                  const DiscretizationOptions &options)
+  {
+    const axisym::Outline &split = structures_.body().outline;
+    std::vector<int> graded(split.edges().size(), 0);
+    if (options.edge_modes == 0)
+      return graded;
+    std::vector<int> modes;
+    for (int k = 0; k < options.edge_modes; ++k)
+      modes.push_back(2 * k + 1);
+    const double tol = 1e-9 * split.size();
+    for (const DieZone &zone : zones)
+      {
+        const axisym::DieFrame f = axisym::die_frame(*problem.body, zone.part);
+        // Each free end of the zone: (s, the direction into the zone along t).
+        for (const auto &[s_edge, into] : {std::pair{zone.s_lo, 1.0}, std::pair{zone.s_hi, -1.0}})
+          {
+            const bool free = into > 0 ? s_edge > f.s_min + tol : s_edge < f.s_max - tol;
+            if (!free)
+              continue;
+            const axisym::Point p = f.point_at(s_edge);
+            // The largest support that stays off every other edge, the zone's other end and
+            // the part's end beyond the edge.
+            double room = std::min(zone.s_hi - zone.s_lo, into > 0 ? s_edge - f.s_min : f.s_max - s_edge);
+            for (const axisym::OutlineEdge &e : problem.body->outline.edges())
+              if (e.part != zone.part)
+                room = std::min(room, distance_to_edge(e, p));
+            EdgeFrame frame{p.r, p.z, {{into * f.tangent.r, into * f.tangent.z}},
+                            {{-f.normal.r, -f.normal.z}}};
+            enrichments_.emplace_back(frame, options.edge_cutoff * room, modes, material_,
+                                      options.edge_mode_degree);
+            edges_.push_back({zone, s_edge, into, room});
+            // The zone's sub-edge that ends there: its traces integrate graded toward it.
+            for (std::size_t e = 0; e < split.edges().size(); ++e)
+              {
+                const axisym::OutlineEdge &edge = split.edges()[e];
+                if (edge.part != zone.part)
+                  continue;
+                if (std::hypot(edge.start.r - p.r, edge.start.z - p.z) < tol)
+                  graded[e] |= 1;
+                if (std::hypot(edge.end.r - p.r, edge.end.z - p.z) < tol)
+                  graded[e] |= 2;
+              }
+          }
+      }
+    return graded;
+  }
+
+  double OutlineModel::edge_intensity(const std::size_t i) const
+  {
+    const ZoneEdge &edge = edges_.at(i);
+    const EdgeEnrichment &en = enrichments_.at(i);
+    const axisym::DieProfile profile = structures_.body().conditions.at(edge.zone.part).die.profile;
+    return edge_intensity_interaction(
+      [this](const Eigen::Ref<const Eigen::VectorXd> &r, const Eigen::Ref<const Eigen::VectorXd> &z) {
+        return evaluate(r, z);
+      },
+      en.frame(), material_, 0.9 * edge.room,
+      [&](double x) {
+        return profile.gap(std::abs(edge.s + edge.into * x)) - edge.zone.indentation;
+      });
   }
 
   Functionals OutlineModel::functionals() const
   {
     const Eigen::Matrix4d c = material_.compliance(), dmat = material_.stiffness();
-    const Quadrature2D &q = quadrature_;
-    const Eigen::VectorXd mu = q.weights.cwiseProduct(q.r);
-    const FieldValues f = evaluate(q.r, q.z);
-    // With the thermal strain e_th (elastic strain e - e_th) and the body force f in W.
-    double strain_energy = 0, complementary = 0, mixed = 0, thermal = 0, work = 0;
-    for (Eigen::Index k = 0; k < q.n_points(); ++k)
+    // With the thermal strain e_th (elastic strain e - e_th) and the body force f in W. The
+    // polynomial part on the section's rule; what the enrichment adds (supported in the
+    // near-edge half discs) on the near-edge rules: full field minus polynomial part there.
+    auto sums = [&](const Quadrature2D &q, const FieldValues &f) {
+      const Eigen::VectorXd mu = q.weights.cwiseProduct(q.r);
+      std::array<double, 5> out{0, 0, 0, 0, 0};
+      for (Eigen::Index k = 0; k < q.n_points(); ++k)
+        {
+          const double th = axisym::thermal_strain(loads_, material_, q.r[k], q.z[k]);
+          const Eigen::Vector4d e_th(th, th, th, 0.0);
+          const Eigen::Vector4d e = f.strain.row(k).transpose() - e_th,
+                                s = f.sigma.row(k).transpose();
+          out[0] += 0.5 * mu[k] * e.dot(dmat * e);
+          out[1] += 0.5 * mu[k] * s.dot(c * s);
+          out[2] += mu[k] * s.dot(e);
+          out[3] += mu[k] * s.dot(e_th);
+          const auto fk = axisym::body_force(loads_, material_, q.r[k], q.z[k]);
+          out[4] += mu[k] * (fk[0] * f.u(k, 0) + fk[1] * f.u(k, 1));
+        }
+      return out;
+    };
+    std::array<double, 5> total = sums(quadrature_, evaluate_parts(quadrature_.r, quadrature_.z, false));
+    if (n_edge_columns() > 0)
       {
-        const double th = axisym::thermal_strain(loads_, material_, q.r[k], q.z[k]);
-        const Eigen::Vector4d e_th(th, th, th, 0.0);
-        const Eigen::Vector4d e = f.strain.row(k).transpose() - e_th,
-                              s = f.sigma.row(k).transpose();
-        strain_energy += 0.5 * mu[k] * e.dot(dmat * e);
-        complementary += 0.5 * mu[k] * s.dot(c * s);
-        mixed += mu[k] * s.dot(e);
-        thermal += mu[k] * s.dot(e_th);
-        const auto fk = axisym::body_force(loads_, material_, q.r[k], q.z[k]);
-        work += mu[k] * (fk[0] * f.u(k, 0) + fk[1] * f.u(k, 1));
+        const auto full = sums(near_, evaluate_parts(near_.r, near_.z, true));
+        const auto poly = sums(near_, evaluate_parts(near_.r, near_.z, false));
+        for (int i = 0; i < 5; ++i)
+          total[i] += full[i] - poly[i];
       }
+    double strain_energy = total[0], complementary = total[1], mixed = total[2],
+           thermal = total[3], work = total[4];
     // Boundary terms: W(u) on the traction edges; (s n) . u_bar on the displacement edges.
     const EdgeQuadrature &eq = edge_quadrature_;
     const FieldValues fb = evaluate(eq.r, eq.z);
@@ -399,20 +653,27 @@ namespace rfm
           const axisym::Point x = e.point_at(k / 64.0);
           depth = std::max(depth, -((x.r - on_line.r) * n.r + (x.z - on_line.z) * n.z));
         }
-    const Quadrature2D &q = quadrature_;
-    const FieldValues f = evaluate(q.r, q.z);
-    double volume = 0.0;
-    for (Eigen::Index k = 0; k < q.n_points(); ++k)
-      {
-        const double d = -((q.r[k] - on_line.r) * n.r + (q.z[k] - on_line.z) * n.z);
-        const double psi = 1.0 - d / depth, psi_r = n.r / depth, psi_z = n.z / depth;
-        const double e_rr = psi_r * n.r, e_zz = psi_z * n.z, e_tt = psi * n.r / q.r[k],
-                     g_rz = psi_z * n.r + psi_r * n.z;
-        const auto fk = axisym::body_force(loads_, material_, q.r[k], q.z[k]);
-        volume += q.weights[k] * q.r[k] *
-                  (f.sigma(k, rr) * e_rr + f.sigma(k, zz) * e_zz + f.sigma(k, tt) * e_tt +
-                   f.sigma(k, rz) * g_rz - psi * (fk[0] * n.r + fk[1] * n.z));
-      }
+    // int s . e(v) - f . v: the polynomial part on the section's rule, the enrichment's on
+    // the near-edge rules.
+    auto integral = [&](const Quadrature2D &q, const FieldValues &f, const bool with_force) {
+      double sum = 0.0;
+      for (Eigen::Index k = 0; k < q.n_points(); ++k)
+        {
+          const double d = -((q.r[k] - on_line.r) * n.r + (q.z[k] - on_line.z) * n.z);
+          const double psi = 1.0 - d / depth, psi_r = n.r / depth, psi_z = n.z / depth;
+          const double e_rr = psi_r * n.r, e_zz = psi_z * n.z, e_tt = psi * n.r / q.r[k],
+                       g_rz = psi_z * n.r + psi_r * n.z;
+          const auto fk = axisym::body_force(loads_, material_, q.r[k], q.z[k]);
+          sum += q.weights[k] * q.r[k] *
+                 (f.sigma(k, rr) * e_rr + f.sigma(k, zz) * e_zz + f.sigma(k, tt) * e_tt +
+                  f.sigma(k, rz) * g_rz - (with_force ? psi * (fk[0] * n.r + fk[1] * n.z) : 0.0));
+        }
+      return sum;
+    };
+    double volume = integral(quadrature_, evaluate_parts(quadrature_.r, quadrature_.z, false), true);
+    if (n_edge_columns() > 0)
+      volume += integral(near_, evaluate_parts(near_.r, near_.z, true), false) -
+                integral(near_, evaluate_parts(near_.r, near_.z, false), false);
     const EdgeQuadrature &eq = edge_quadrature_;
     const FieldValues fb = evaluate(eq.r, eq.z);
     double traction_work = 0.0, trace = 0.0;

@@ -36,6 +36,7 @@
 #include "rfm/basis.h"
 #include "rfm/section_basis.h"
 #include "rfm/degree_sequence.h"
+#include "rfm/edge_modes.h"
 #include "rfm/outline_structures.h"
 #include "rfm/quadrature.h"
 #include "rfm/saddle_point_solver.h"
@@ -89,13 +90,39 @@ namespace rfm
       double domain = 0.0, trace = 0.0;
     };
     DieForce die_force(const std::string &part) const;
+
+    /// Contact-edge enrichment (DESIGN.md 4.4, edge_modes.h) at every free end of a zone: the
+    /// odd modes 1, 3, ... (rfm.edge_modes) times the monomials up to rfm.edge_mode_degree, in
+    /// the frame of the end (t into the zone, n into the body), cut off at rho_0 =
+    /// rfm.edge_cutoff times the room around the end (the zone's length, the part beyond the
+    /// end, the distance to every other edge), as extra columns of both spaces; their products
+    /// are integrated on a polar rule over the support's half disc, and the traces on the
+    /// zone's edge on a rule graded toward the end. n_zone_edges() such ends, in zone order
+    /// (low end first).
+    std::size_t n_zone_edges() const { return enrichments_.size(); }
+    Eigen::Index n_edge_columns() const;
+    /// The edge intensity K = sqrt(2 pi) a_1 [Pa m^1/2] at zone end i by the interaction
+    /// integral (contact.h) on the half disc of radius 0.9 times the end's room. K < 0: the
+    /// zone is too short there (compressive singular pressure), K > 0: too long.
+    double edge_intensity(std::size_t i) const;
     /// The split body the structures and the rules work on (OutlineStructures::body()).
     const axisym::Body &body() const { return structures_.body(); }
 
   private:
     /// The system, and the Gram matrices of the displacement columns (values and
-    /// gradients, per component) for the basis transform.
-    ReissnerSystem assemble(std::array<Eigen::MatrixXd, 2> &gram_u) const;
+    /// gradients, per component; the enrichment's in gram_e_) for the basis transform.
+    ReissnerSystem assemble(std::array<Eigen::MatrixXd, 2> &gram_u);
+    /// The fields, without the enrichment's part when !with_enrichment (no mirroring).
+    FieldValues evaluate_parts(const Eigen::Ref<const Eigen::VectorXd> &r,
+                               const Eigen::Ref<const Eigen::VectorXd> &z, bool with_enrichment) const;
+    /// The enrichment columns of every zone end side by side.
+    EdgeColumns edge_columns(const Eigen::Ref<const Eigen::VectorXd> &r,
+                             const Eigen::Ref<const Eigen::VectorXd> &z) const;
+    /// Builds enrichments_ and edges_; returns, per edge of the split body, which of its ends
+    /// (bit 1 start, bit 2 end) is a zone end (the edge rule is graded there).
+    std::vector<int> make_enrichments(const axisym::Problem &problem,
+                                      const std::vector<DieZone> &zones,
+                                      const DiscretizationOptions &options);
 
     Material material_;
     axisym::BodyLoads loads_; ///< body force in p_u and W, thermal strain in p_s and the functionals
@@ -108,6 +135,17 @@ namespace rfm
     SolveSummary summary_;
     double assembly_s_ = 0.0, solve_s_ = 0.0;
     std::array<Eigen::Index, 2> n_kept_{0, 0};
+    std::vector<EdgeEnrichment> enrichments_;
+    /// Per enrichment: its zone, the end's s along the part, the direction into the zone
+    /// (+1: increasing s) and the room around the end [m].
+    struct ZoneEdge
+    {
+      DieZone zone;
+      double s = 0, into = 1, room = 0;
+    };
+    std::vector<ZoneEdge> edges_;
+    Quadrature2D near_;      ///< the near-edge rules of all enrichments
+    Eigen::MatrixXd gram_e_; ///< Gram matrix of the enrichment's displacement columns
   };
 
   /// rfm.tolerance for an outline problem (degree_sequence.h).

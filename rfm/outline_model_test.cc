@@ -1,6 +1,7 @@
 #include "rfm/outline_model.h"
 
 #include "problem/test_problems.h"
+#include "rfm/contact.h"
 #include "rfm/model.h"
 
 #include <gtest/gtest.h>
@@ -307,5 +308,37 @@ namespace rfm
     EXPECT_NEAR(f.trace, g.trace, 1e-7 * g.trace);
     EXPECT_NEAR(a.reissner, b.reissner, 1e-8 * std::abs(b.reissner));
     EXPECT_NEAR(a.castigliano, b.castigliano, 1e-8 * std::abs(b.castigliano));
+  }
+} // namespace rfm
+
+namespace rfm
+{
+  // A zone that ends inside its part, with the contact edge's modes (DESIGN.md 4.4) on the
+  // outline path, against the rectangle model with its own: the paper's die at c = 0.09 m
+  // (K < 0, the zone too short) and 0.12 m (K > 0), p = 12. Measured when written: P 2.2e-5
+  // and 7.6e-6 apart, K 26 and 134 Pa m^1/2 apart (3.4e-4 and 1.5e-3 of K).
+  TEST(OutlineModel, ZoneWithEdgeModesMatchesTheRectangleModel)
+  {
+    const axisym::Problem problem = axisym::parse_problem(nlohmann::json::parse(R"({
+      "geometry": {"inner_radius": 0.1, "outer_radius": 0.2, "length": 0.4},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3},
+      "die": {"indentation": 1.0e-6}})"));
+    DiscretizationOptions o = problem.rfm;
+    o.degree = 12;
+    for (const double c : {0.09, 0.12})
+      {
+        const OutlineModel m(problem, o, {}, {DieZone{"outer", 0.0, c, 1e-6}});
+        ASSERT_TRUE(m.ok()) << m.summary().message;
+        ASSERT_EQ(m.n_zone_edges(), 1u);
+        EXPECT_EQ(m.n_edge_columns(), 12); // modes 1 and 3 times 6 monomials (degree 2)
+        const RfmModel legacy(problem, o, c);
+        ASSERT_TRUE(legacy.ok()) << legacy.summary().message;
+        const double p_legacy = legacy.contact_force().domain;
+        const double k_legacy =
+          edge_intensity_interaction(legacy, problem, c, interaction_radius(problem.geometry, c));
+        EXPECT_NEAR(m.die_force("outer").domain, p_legacy, 1e-4 * p_legacy) << c;
+        EXPECT_NEAR(m.edge_intensity(0), k_legacy, 1e-2 * std::abs(k_legacy)) << c;
+        EXPECT_GT(m.edge_intensity(0) * k_legacy, 0.0) << c; // the same sign: which way c moves
+      }
   }
 } // namespace rfm

@@ -22,7 +22,7 @@ namespace rfm
   } // namespace
 
   // 1. Edge omegas.
-  EdgeOmega::EdgeOmega(const axisym::Outline &outline, const int edge)
+  EdgeOmega::EdgeOmega(const axisym::Outline &outline, const int edge, const bool one_sided)
     : edge_(outline.edges().at(edge))
   {
     const bool arc = edge_.kind == OutlineEdge::Kind::arc;
@@ -74,13 +74,20 @@ namespace rfm
             const double s = dot(minus(corner, mid), tau);
             s_lo = std::min(s_lo, s), s_hi = std::max(s_hi, s);
           }
-        for (int k = 0; k <= n_samples && !trimmed_; ++k)
+        bool before = false, after = false; // the carrier meets the section beyond the start, end
+        for (int k = 0; k <= n_samples; ++k)
           {
             const double s = s_lo + (s_hi - s_lo) * k / n_samples;
             if (std::abs(s) <= 0.5 * length + margin)
               continue;
-            trimmed_ = outline.contains({mid.r + s * tau.r, mid.z + s * tau.z}, tol);
+            if (outline.contains({mid.r + s * tau.r, mid.z + s * tau.z}, tol))
+              (s < 0 ? before : after) = true;
           }
+        trimmed_ = before || after;
+        // One-sided: trimmed at the ends where the carrier goes on in the section only, a ray
+        // beyond the other (smooth there, as the rectangle's parts that reach a corner).
+        if (one_sided && trimmed_ && !(before && after))
+          trim_side_ = after ? 1 : -1;
       }
     else
       {
@@ -127,8 +134,13 @@ namespace rfm
         const double tr = d.r / length, tz = d.z / length;
         const double s = (r - 0.5 * (edge_.start.r + edge_.end.r)) * tr +
                          (z - 0.5 * (edge_.start.z + edge_.end.z)) * tz;
-        t = {(0.25 * length * length - s * s) / length, -2.0 * s * tr / length,
-             -2.0 * s * tz / length};
+        if (trim_side_ > 0) // trimmed at the end only: t = L/2 - s
+          t = {0.5 * length - s, -tr, -tz};
+        else if (trim_side_ < 0) // at the start only: t = s + L/2
+          t = {s + 0.5 * length, tr, tz};
+        else
+          t = {(0.25 * length * length - s * s) / length, -2.0 * s * tr / length,
+               -2.0 * s * tz / length};
       }
     else
       {
@@ -260,7 +272,13 @@ namespace rfm
       }
     for (int e = 0; e < static_cast<int>(edges.size()); ++e)
       {
-        omegas_.emplace_back(body_.outline, e);
+        // A die part's sub-edges (the zone and the free rest) are rays beyond the part's own
+        // corners (EdgeOmega: one-sided trimming).
+        const bool die_sub_edge =
+          zone_of_edge_[e] >= 0 ||
+          std::any_of(zones.begin(), zones.end(),
+                      [&](const DieZone &z) { return edges[e].part == z.part + "#free"; });
+        omegas_.emplace_back(body_.outline, e, die_sub_edge);
         const PartCondition &c = body_.condition_of_edge(e);
         const axisym::Point n = edges[e].outward_normal_at(0.5);
         const bool along_r = std::abs(std::abs(n.r) - 1.0) < 1e-12;

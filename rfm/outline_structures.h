@@ -85,7 +85,10 @@ namespace rfm
   class EdgeOmega
   {
   public:
-    EdgeOmega(const axisym::Outline &outline, int edge);
+    /// `one_sided` (a die part's sub-edges): a line trimmed at one end only, where its
+    /// carrier goes on in the section, is a ray beyond the other end (t linear), smooth at a
+    /// corner there instead of non-smooth.
+    EdgeOmega(const axisym::Outline &outline, int edge, bool one_sided = false);
 
     RValue operator()(double r, double z) const;
     /// The carrier function f (line or circle), normalized, positive on the body's side.
@@ -109,6 +112,7 @@ namespace rfm
   private:
     axisym::OutlineEdge edge_;
     bool trimmed_ = false;
+    int trim_side_ = 0; ///< one_sided lines: +1 trimmed at the end only, -1 at the start only
     double sign_ = 1.0; ///< arcs: +1 when the body is inside the circle
     double s_min_ = 0.0, s_max_ = 1.0; ///< the box's extent along the chord from the start
     bool angular_ = false;

@@ -124,6 +124,23 @@ namespace
     return {rfm::DieZone{parts[0], std::max(f.s_min, -c), std::min(f.s_max, c), *die.indentation}};
   }
 
+  bool zone_has_free_end(const axisym::Problem &problem, const rfm::DieZone &zone)
+  {
+    const axisym::DieFrame f = axisym::die_frame(*problem.body, zone.part);
+    const double tol = 1e-9 * problem.body->outline.size();
+    return zone.s_lo > f.s_min + tol || zone.s_hi < f.s_max - tol;
+  }
+
+  // K at each free end of the zone (null without one): one number, or [low end, high end].
+  nlohmann::json edge_intensity_json(const rfm::OutlineModel &m)
+  {
+    if (m.n_zone_edges() == 0)
+      return nullptr;
+    if (m.n_zone_edges() == 1)
+      return m.edge_intensity(0);
+    return {m.edge_intensity(0), m.edge_intensity(1)};
+  }
+
   // The die's record (DESIGN.md 7: `contact` and `dies`), for a bilateral zone: c, the zone
   // when it has two free ends, P two ways, the pressure trace along the part.
   nlohmann::json outline_die_to_json(const axisym::Problem &problem, const rfm::OutlineModel &m,
@@ -141,7 +158,7 @@ namespace
                         {"indentation", zone.indentation},
                         {"force", force.domain},
                         {"force_trace", force.trace},
-                        {"edge_intensity", nullptr},
+                        {"edge_intensity", edge_intensity_json(m)},
                         {"iterations",
                          {{{"half_width", half_width},
                            {"force", force.domain},
@@ -251,19 +268,15 @@ namespace
       {
         result["contact"] = outline_die_to_json(problem, *model, zones[0], phi);
         result["dies"] = nlohmann::json::array({result["contact"]});
-        // A zone that ends inside its part: the edge's singular field is not in the outline
-        // space yet (edge modes: issue 23), so P(c) is in doubt there.
-        const axisym::DieFrame f = axisym::die_frame(*problem.body, zones[0].part);
-        const double tol = 1e-9 * problem.body->outline.size();
-        if (zones[0].s_lo > f.s_min + tol || zones[0].s_hi < f.s_max - tol)
+        // A zone that ends inside its part without the edge modes (rfm.edge_modes = 0): the
+        // edge's singular field is missing, so P(c) is in doubt.
+        if (model->n_zone_edges() == 0 && zone_has_free_end(problem, zones[0]))
           {
             result["diagnostics"]["status"] = "warning";
             result["diagnostics"]["message"] =
               "the zone ends inside part " + zones[0].part +
-              ": the outline RFM has no edge modes yet, so the edge's singular field is missing "
-              "and P(c) is in doubt (the paper's die at c = 0.45a-0.6a: 0.2-0.7 % off at "
-              "p = 8-16; a zone small against the section far more: Hertz on a cylinder 23 "
-              "contact radii across, 15 % at p = 16)";
+              " and rfm.edge_modes = 0: the edge's singular field is missing and P(c) is in "
+              "doubt (the paper's die at c = 0.45a-0.6a: 0.2-0.7 % off at p = 8-16)";
             fmt::print(stderr, "rfm_solve: warning: {}\n",
                        result["diagnostics"]["message"].get<std::string>());
           }

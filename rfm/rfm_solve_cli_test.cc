@@ -269,14 +269,24 @@ namespace
     EXPECT_EQ(r.at("dies").size(), 1u);
     EXPECT_EQ(r.at("contact").at("pressure").size(), 101u);
 
-    // A zone that ends inside the part: solved, with a warning.
+    // A zone that ends inside the part: solved with the edge modes, K reported (c = 0.1 m is
+    // a little short of c*: K < 0); without the modes, with a warning.
     j["contact"]["half_width"] = 0.1;
     std::ofstream(in) << j.dump();
     o = run(in.string() + " --output " + out.string());
     ASSERT_EQ(o.status, 0) << o.err;
     r = nlohmann::json::parse(std::ifstream(out));
+    EXPECT_EQ(r.at("diagnostics").at("status"), "ok");
+    EXPECT_LT(r.at("contact").at("edge_intensity").get<double>(), 0.0);
+    j["rfm"]["edge_modes"] = 0;
+    std::ofstream(in) << j.dump();
+    o = run(in.string() + " --output " + out.string());
+    ASSERT_EQ(o.status, 0) << o.err;
+    r = nlohmann::json::parse(std::ifstream(out));
     EXPECT_EQ(r.at("diagnostics").at("status"), "warning");
-    EXPECT_NE(o.err.find("edge modes"), std::string::npos) << o.err;
+    EXPECT_TRUE(r.at("contact").at("edge_intensity").is_null());
+    EXPECT_NE(o.err.find("edge_modes"), std::string::npos) << o.err;
+    j["rfm"].erase("edge_modes");
 
     // The zone's search: not on the outline path yet.
     j.erase("contact");
