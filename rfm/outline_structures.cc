@@ -459,7 +459,8 @@ namespace rfm
                                                     const double z) const
   {
     const Zone &zone = zones_.at(zone_of_edge_.at(edge));
-    return zone.profile.gap(std::abs(zone.frame.coordinate({r, z}))) - zone.indentation;
+    const double s = std::min(std::abs(zone.frame.coordinate({r, z})), zone.profile.extent());
+    return zone.profile.gap(s) - zone.indentation;
   }
 
   RValue OutlineStructures::prescribed(const Prescribed &v, const double r, const double z) const
@@ -471,7 +472,9 @@ namespace rfm
     const Zone &zone = zones_[v.zone];
     const double s = zone.frame.coordinate({r, z});
     const double h = 1e-6 * (std::abs(s) + 1e-3 * (zone.frame.s_max - zone.frame.s_min));
-    const auto g = [&](double x) { return zone.profile.gap(std::abs(x)); };
+    // A flat punch's surface ends at its edge: its value there is continued beyond (the blend
+    // evaluates the prescribed value off the zone too).
+    const auto g = [&](double x) { return zone.profile.gap(std::min(std::abs(x), zone.profile.extent())); };
     const double value = zone.sign * (g(s) - zone.indentation);
     const double slope = zone.sign * (g(s + h) - g(s - h)) / (2 * h);
     return {value, slope * zone.frame.tangent.r, slope * zone.frame.tangent.z};
