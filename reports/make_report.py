@@ -1026,9 +1026,11 @@ def dies_section(dies, out_dir):
           "A rigid die on any straight part (`boundary.PART.die`, DESIGN.md 7.1), solved by the FEM "
           "reference: penalty active set on the part, force control by the linearity in the "
           "indentation, the mesh refined toward the zone and its free ends "
-          "(`fem_reference/README.md`). The RFM solves such a die on a given zone only so far "
-          "(`contact.method: fixed`; its contact edge modes are not on the outline path yet), so "
-          "these cases have no RFM columns yet.", ""]
+          "(`fem_reference/README.md`). The RFM's outline contact (`rfm/outline_contact.h`: the "
+          "edge modes in the frame of the zone's end, the zone's end where K vanishes) takes an "
+          "indentation and a zone with one free end so far: it has columns for the sharp flat "
+          "punch (7.3) and the paper's die written as an outline (7.5); Hertz (a force) and the "
+          "ring die (two free ends) are the FEM's alone.", ""]
     h = dies["hertz"]
     hz = h["hertz"]
     levels = sorted((k for k in h["fem"] if k.startswith("L")), key=lambda k: int(k[1:]))
@@ -1101,6 +1103,18 @@ def dies_section(dies, out_dir):
                                 for k, v in sorted(f["fem"]["edge_intensity"].items(), key=lambda kv: int(kv[0][1:])))
                     + ".", ""])
     md += fl
+    if "rfm" in f:
+        md.append("RFM on the outline path (the punch's face as the zone, K at its edge), against the "
+                  f"FEM's finest level; the indicator |Phi_L - Phi_C| / |Phi_R| shows that the global "
+                  "polynomials do not resolve a zone 1/20 of the face (rfm_solve warns above 1e-2):")
+        md.append("")
+        md.append("| p | P [N] | against the FEM | K [Pa m^1/2] | against the FEM | indicator | time [s] |")
+        md.append("|---|---|---|---|---|---|---|")
+        for k in sorted(f["rfm"], key=lambda k: int(k[1:])):
+            r = f["rfm"][k]
+            md.append(f"| {k[1:]} | {r['force']:.2f} | {r['force_vs_fem']:+.2e} | {r['edge_intensity']:.5e} | "
+                      f"{r['edge_intensity_vs_fem']:+.2e} | {r['indicator']:.2e} | {r['seconds']:.2f} |")
+        md.append("")
     s, p, pt = pressure_profile(f["fem"]["pressure"])
     b = f["fem"]["finest"]["half_width"]
     force = f["fem"]["finest"]["force"]
@@ -1132,6 +1146,32 @@ def dies_section(dies, out_dir):
               f"Hertz for the ring's line load gives b = {g['plane_strain_hertz_half_width'] * 1e3:.6f} mm "
               "(the shaft's curvature and finite size enter at the per cent level).")
     md.append("")
+    o = dies.get("paper_die_outline")
+    if o:
+        md.append(f"### 7.5 The paper's die written as an outline (`{o['problem_file']}`)")
+        md.append("")
+        md.append("The half section z >= 0 as an outline (not mirrored: the forces are the half body's), "
+                  "the die on part `outer` centred on the mid-plane. The RFM's zone search on the outline "
+                  "path against the rectangle model's on the hollow-cylinder form (its P halved), and the "
+                  "FEM on both geometry paths:")
+        md.append("")
+        md.append("| p | c outline [m] | P outline [N] | solves | time [s] | c rectangle [m] | P rectangle / 2 [N] | time [s] |")
+        md.append("|---|---|---|---|---|---|---|---|")
+        for k in sorted((k for k in o["rfm"] if k.startswith("p")), key=lambda k: int(k[1:])):
+            r = o["rfm"][k]
+            md.append(f"| {k[1:]} | {r['outline_half_width']:.7f} | {r['outline_force']:.2f} | "
+                      f"{r['outline_solves']} | {r['outline_seconds']:.2f} | {r['rectangle_half_width']:.7f} | "
+                      f"{r['rectangle_force_half']:.2f} | {r['rectangle_seconds']:.2f} |")
+        fe = o["fem"]
+        md.append("")
+        md.append(f"FEM Q2: outline path (L = {fe['level_outline']}) c = {fe['outline_half_width']:.7f} m, "
+                  f"P = {fe['outline_force']:.2f} N; rectangle path (L = {fe['level_rectangle']}) "
+                  f"c = {fe['rectangle_half_width']:.7f} m, P / 2 = {fe['rectangle_force_half']:.2f} N. "
+                  f"The outline RFM against the outline FEM: c {o['outline_rfm_vs_fem_half_width']:.1e}, "
+                  f"P {o['outline_rfm_vs_fem_force']:.1e}; against the rectangle RFM: P "
+                  f"{o['outline_vs_rectangle_rfm_force']:.1e}. The hollow-cylinder search also takes "
+                  "the stationary point of P(c) next to the root of K; the outline search stops at the root.")
+        md.append("")
     return md
 
 

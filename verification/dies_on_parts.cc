@@ -1,7 +1,6 @@
 // dies_on_parts: frictionless rigid dies on straight parts of an outline section (issue 23,
-// DESIGN.md 7.1), the FEM reference against closed forms and against independent models.
-// The RFM solves a die only on the hollow-cylinder form so far (die_contact, rfm_vs_fem); its
-// columns here come with the outline contact (issue 23 item 3).
+// DESIGN.md 7.1): the FEM reference against closed forms and against independent models, and
+// the RFM where its outline contact reaches (an indentation, one free end or a flat punch).
 //
 //   1. Hertz: a rigid paraboloid (R = 0.1 m) pressed with 2 kN on the end face of a solid
 //      steel cylinder (radius and height 23 times the contact radius) on a frictionless
@@ -16,19 +15,25 @@
 //   4. A ring die (R = 0.05 m, 2 um) at the mid-length of a shaft, modelled whole (two free
 //      edges) and as the mirrored half (one free edge): both ends of the zone against the
 //      half's c, and c against plane-strain Hertz for the ring's line load.
-//   5. The tolerance gate (verification/tolerances.json, entry "dies_on_parts").
+//      The RFM (outline path, the punch's face as the zone) beside the FEM: P and K against p.
+//   5. The paper's die written as an outline (the half section, not mirrored): the RFM's
+//      zone search on the outline path, the rectangle model's search on the hollow-cylinder
+//      form (its P halved), and the FEM on both geometry paths.
+//   6. The tolerance gate (verification/tolerances.json, entry "dies_on_parts").
 //
 // Sample run:
 //   build/bin/dies_on_parts --mode quick --output-dir build/verification-output
 #include "fem_reference/axisymmetric_fem.h"
 #include "problem/problem.h"
 #include "rfm/contact.h"
+#include "rfm/outline_contact.h"
 #include "verification/driver.h"
 #include "verification/fem_samples.h"
 
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <vector>
@@ -212,6 +217,32 @@ nlohmann::json run(const verification::DriverContext &context)
     c["fem"]["edge_intensity"] = k_levels;
     c["fem"]["edge_intensity_finest"] = k_levels["L" + std::to_string(levels.back())];
     c["fem"]["edge_intensity_change_last_relative"] = std::abs(k_fem - k_prev) / std::abs(k_fem);
+    // The RFM: the punch's face as the zone, K at its edge (rfm/outline_contact.h).
+    fmt::print("RFM: {:>3} {:>13} {:>10} {:>15} {:>10} {:>10} {:>8}\n", "p", "P [N]", "vs FEM",
+               "K [Pa m^1/2]", "vs FEM", "indicator", "time [s]");
+    for (const int p : full ? std::vector<int>{8, 12, 16, 20} : std::vector<int>{8, 12})
+      {
+        rfm::DiscretizationOptions o = problem.rfm;
+        o.degree = p;
+        const auto t0 = std::chrono::steady_clock::now();
+        const rfm::OutlineContactResult r = rfm::solve_outline_contact(problem, o);
+        const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        if (!r.success)
+          throw verification::NumericalFailure("flat punch RFM, p = " + std::to_string(p) + ": " +
+                                               r.message);
+        const double rfm_force = r.model->die_force("top").domain;
+        const double rfm_k = r.model->edge_intensity(0);
+        const double indicator = r.model->functionals().indicator();
+        fmt::print("     {:>3} {:>13.6e} {:>10.2e} {:>15.6e} {:>10.2e} {:>10.2e} {:>8.2f}\n", p,
+                   rfm_force, rfm_force / force - 1, rfm_k, rfm_k / k_fem - 1, indicator, seconds);
+        c["rfm"]["p" + std::to_string(p)] = {{"force", rfm_force},
+                                             {"force_vs_fem", rfm_force / force - 1},
+                                             {"edge_intensity", rfm_k},
+                                             {"edge_intensity_vs_fem", rfm_k / k_fem - 1},
+                                             {"indicator", indicator},
+                                             {"seconds", seconds}};
+      }
     results["flat"] = c;
   }
 
@@ -252,6 +283,77 @@ nlohmann::json run(const verification::DriverContext &context)
                "2 P = {:.6g} N; plane-strain Hertz b = {:.6e} m\n",
                lo, hi, fw.contact->force, c_half, 2 * fh.contact->force, b_line);
     results["ring"] = c;
+  }
+
+  // 5. The paper's die as an outline: both RFM paths and both FEM paths.
+  {
+    const std::string file = "die_paper_outline.json";
+    const axisym::Problem outline = axisym::read_problem_file(context.problem_path(file));
+    nlohmann::json legacy_json = {{"geometry", {{"inner_radius", 0.1}, {"outer_radius", 0.2},
+                                                {"length", 0.4}}},
+                                  {"material", outline.source["material"]},
+                                  {"die", {{"indentation", 1.0e-6}}}};
+    const axisym::Problem legacy = axisym::parse_problem(legacy_json);
+    nlohmann::json c = {{"problem_file", "verification/problems/" + file}};
+    fmt::print("\n== The paper's die written as an outline (half section; forces of the half) ==\n");
+    fmt::print("RFM: {:>3} {:>13} {:>13} {:>13} {:>13} {:>8} {:>8}\n", "p", "c outline", "P outline",
+               "c rectangle", "P rect. / 2", "t out.", "t rect.");
+    for (const int p : full ? std::vector<int>{8, 12, 16} : std::vector<int>{8, 12})
+      {
+        rfm::DiscretizationOptions o = outline.rfm;
+        o.degree = p;
+        auto t0 = std::chrono::steady_clock::now();
+        const rfm::OutlineContactResult r = rfm::solve_outline_contact(outline, o);
+        const double t_outline =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        t0 = std::chrono::steady_clock::now();
+        const rfm::ContactResult l = rfm::solve_contact(legacy, o, rfm::ContactOptions{});
+        const double t_rect =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        if (!r.success || !l.success)
+          throw verification::NumericalFailure("paper's die as an outline, p = " + std::to_string(p) +
+                                               ": " + (r.success ? l.message : r.message));
+        const double p_outline = r.model->die_force("outer").domain;
+        fmt::print("     {:>3} {:>13.7e} {:>13.7e} {:>13.7e} {:>13.7e} {:>8.2f} {:>8.2f}\n", p,
+                   r.zone.s_hi, p_outline, l.final.half_width, 0.5 * l.final.force, t_outline,
+                   t_rect);
+        c["rfm"]["p" + std::to_string(p)] = {{"outline_half_width", r.zone.s_hi},
+                                             {"outline_force", p_outline},
+                                             {"outline_edge_intensity", r.model->edge_intensity(0)},
+                                             {"outline_solves", r.history.size()},
+                                             {"outline_seconds", t_outline},
+                                             {"rectangle_half_width", l.final.half_width},
+                                             {"rectangle_force_half", 0.5 * l.final.force},
+                                             {"rectangle_solves", l.history.size()},
+                                             {"rectangle_seconds", t_rect}};
+        c["rfm"]["last"] = c["rfm"]["p" + std::to_string(p)];
+      }
+    const int level = levels.back();
+    const fem::FemResult fo = solve_fem(outline, level, "paper's die as an outline (FEM)");
+    const fem::FemResult fl = solve_fem(legacy, level + 1, "paper's die (FEM, rectangle)");
+    c["fem"] = {{"level_outline", level},
+                {"outline_half_width", fo.contact->half_width},
+                {"outline_force", fo.contact->force},
+                {"level_rectangle", level + 1},
+                {"rectangle_half_width", fl.contact->half_width},
+                {"rectangle_force_half", 0.5 * fl.contact->force}};
+    fmt::print("FEM: outline path L = {}: c = {:.7e} m, P = {:.7e} N; rectangle path L = {}: c = "
+               "{:.7e} m, P / 2 = {:.7e} N\n",
+               level, fo.contact->half_width, fo.contact->force, level + 1, fl.contact->half_width,
+               0.5 * fl.contact->force);
+    const nlohmann::json &last = c["rfm"]["last"];
+    c["outline_rfm_vs_fem_half_width"] =
+      std::abs(last["outline_half_width"].get<double>() - fo.contact->half_width) / fo.contact->half_width;
+    c["outline_rfm_vs_fem_force"] =
+      std::abs(last["outline_force"].get<double>() - fo.contact->force) / fo.contact->force;
+    c["outline_vs_rectangle_rfm_force"] =
+      std::abs(last["outline_force"].get<double>() - last["rectangle_force_half"].get<double>()) /
+      last["rectangle_force_half"].get<double>();
+    c["fem_outline_vs_rectangle_half_width"] =
+      std::abs(fo.contact->half_width - fl.contact->half_width) / fl.contact->half_width;
+    c["fem_outline_vs_rectangle_force"] =
+      std::abs(fo.contact->force - 0.5 * fl.contact->force) / (0.5 * fl.contact->force);
+    results["paper_die_outline"] = c;
   }
   return results;
 }
