@@ -199,24 +199,30 @@ namespace fem::internal
   }
 
   // 4. Linear solve; throws on failure (the caller turns it into a numerical outcome).
+  void AxisymmetricSolver::solve_system(const Vector<double> &rhs, Vector<double> &x,
+                                        const bool factorize)
+  {
+    if (options_.linear_solver == FemOptions::LinearSolver::direct)
+      {
+        if (factorize || !umfpack_)
+          {
+            umfpack_ = std::make_unique<SparseDirectUMFPACK>();
+            umfpack_->initialize(system_matrix_);
+          }
+        umfpack_->vmult(x, rhs);
+        return;
+      }
+    SolverControl control(20 * dof_handler_.n_dofs() + 100, options_.linear_tolerance * rhs.l2_norm());
+    SolverCG<Vector<double>> cg(control);
+    PreconditionSSOR<SparseMatrix<double>> ssor;
+    ssor.initialize(system_matrix_, 1.2);
+    cg.solve(system_matrix_, x, rhs, ssor);
+  }
+
   void AxisymmetricSolver::solve_linear()
   {
     const auto t0 = Clock::now();
-    if (options_.linear_solver == FemOptions::LinearSolver::direct)
-      {
-        umfpack_ = std::make_unique<SparseDirectUMFPACK>();
-        umfpack_->initialize(system_matrix_);
-        umfpack_->vmult(solution_, system_rhs_);
-      }
-    else
-      {
-        SolverControl control(20 * dof_handler_.n_dofs() + 100,
-                              options_.linear_tolerance * system_rhs_.l2_norm());
-        SolverCG<Vector<double>> cg(control);
-        PreconditionSSOR<SparseMatrix<double>> ssor;
-        ssor.initialize(system_matrix_, 1.2);
-        cg.solve(system_matrix_, solution_, system_rhs_, ssor);
-      }
+    solve_system(system_rhs_, solution_, true);
     constraints_.distribute(solution_);
     for (const double x : solution_)
       if (!std::isfinite(x))
@@ -228,17 +234,7 @@ namespace fem::internal
   {
     const auto t0 = Clock::now();
     Vector<double> x(dof_handler_.n_dofs()), zero(dof_handler_.n_dofs());
-    if (options_.linear_solver == FemOptions::LinearSolver::direct)
-      umfpack_->vmult(x, rhs);
-    else
-      {
-        SolverControl control(20 * dof_handler_.n_dofs() + 100,
-                              options_.linear_tolerance * rhs.l2_norm());
-        SolverCG<Vector<double>> cg(control);
-        PreconditionSSOR<SparseMatrix<double>> ssor;
-        ssor.initialize(system_matrix_, 1.2);
-        cg.solve(system_matrix_, x, rhs, ssor);
-      }
+    solve_system(rhs, x, false); // the factorization of solve_linear
     constraints_.distribute(x);
     constraints_.distribute(zero); // the inhomogeneities alone
     x -= zero;

@@ -394,6 +394,9 @@ namespace fem::internal
     void active_set_loop(FemResult &result, int pass, const Finish &finish);
     void assemble_base();
     void add_penalty(const std::vector<char> &active);
+    /// x = A^-1 rhs with the system matrix: UMFPACK (factorized anew when asked, else the
+    /// last factorization) or CG + SSOR; no constraints distributed.
+    void solve_system(const Vector<double> &rhs, Vector<double> &x, bool factorize);
     void solve_linear();
     /// Solves the factorized system (solve_linear) for another right-hand side; the
     /// constraints' homogeneous part only (no inhomogeneity).

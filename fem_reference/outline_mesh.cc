@@ -44,25 +44,9 @@ namespace fem
 
   double distance_to_edge(const axisym::OutlineEdge &e, const axisym::Point p)
   {
-    if (e.kind == axisym::OutlineEdge::Kind::line)
-      {
-        const double dr = e.end.r - e.start.r, dz = e.end.z - e.start.z;
-        const double t = std::clamp(((p.r - e.start.r) * dr + (p.z - e.start.z) * dz) /
-                                      (dr * dr + dz * dz),
-                                    0.0, 1.0);
-        return std::hypot(p.r - e.start.r - t * dr, p.z - e.start.z - t * dz);
-      }
-    // Arc: the radial distance if p's angle lies within the sweep, else the nearer end.
-    const double pi = 3.14159265358979323846;
-    const double theta0 = std::atan2(e.start.z - e.center.z, e.start.r - e.center.r);
-    double phi = std::atan2(p.z - e.center.z, p.r - e.center.r) - theta0;
-    const double sweep = e.sweep();
-    phi = std::remainder(phi, 2 * pi); // in [-pi, pi]
-    if (sweep >= 0 ? (phi >= 0 && phi <= sweep) : (phi <= 0 && phi >= sweep))
-      return std::abs(std::hypot(p.r - e.center.r, p.z - e.center.z) - e.radius());
-    return std::min(std::hypot(p.r - e.start.r, p.z - e.start.z),
-                    std::hypot(p.r - e.end.r, p.z - e.end.z));
+    return e.distance_to(p);
   }
+
 
   int edge_of_boundary_segment(const axisym::Outline &outline, const std::string &part,
                                const axisym::Point a, const axisym::Point b)

@@ -66,18 +66,7 @@ namespace axisym
       return breaks;
     }
 
-    double distance_to_edge(const OutlineEdge &e, const Point p)
-    {
-      if (e.kind == Kind::line)
-        {
-          const Point d = e.end - e.start;
-          const double t = std::clamp(dot(p - e.start, d) / dot(d, d), 0.0, 1.0);
-          return norm(p - (e.start + t * d));
-        }
-      if (within_sweep(angle_from_start(e, p - e.center), e.sweep()))
-        return std::abs(norm(p - e.center) - e.radius());
-      return std::min(norm(p - e.start), norm(p - e.end));
-    }
+    double distance_to_edge(const OutlineEdge &e, const Point p) { return e.distance_to(p); }
 
     BoundingBox bounding_box_of(const std::vector<OutlineEdge> &edges)
     {
@@ -193,6 +182,19 @@ namespace axisym
       return 0.0;
     const Point a = start - center, b = end - center;
     return std::atan2(cross(a, b), dot(a, b));
+  }
+
+  double OutlineEdge::distance_to(const Point p) const
+  {
+    if (kind == Kind::line)
+      {
+        const Point d = end - start;
+        const double t = std::clamp(dot(p - start, d) / dot(d, d), 0.0, 1.0);
+        return norm(p - (start + t * d));
+      }
+    if (within_sweep(angle_from_start(*this, p - center), sweep()))
+      return std::abs(norm(p - center) - radius());
+    return std::min(norm(p - start), norm(p - end));
   }
 
   double OutlineEdge::length() const

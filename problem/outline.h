@@ -52,6 +52,8 @@ namespace axisym
     Point tangent_at(double t) const;
     /// The right-hand normal (t_z, -t_r): outward for a counter-clockwise outline.
     Point outward_normal_at(double t) const;
+    /// Distance from p to the edge as a curve (segment or arc) [m].
+    double distance_to(Point p) const;
     /// A line with both ends at |r| <= tol (an edge on the axis of revolution).
     bool on_axis(double tol) const;
   };

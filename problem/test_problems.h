@@ -66,6 +66,22 @@ namespace axisym::testing
       "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})");
   }
 
+  /// The paper's die (DESIGN.md 4) written as an outline: the half section z >= 0 of the
+  /// hollow cylinder (not mirrored), the die on part `outer` centred on the mid-plane, the
+  /// paraboloid R = a^2 / (4 delta) = 10 km of the paper's u_r* at delta = 1 um, p = 8.
+  inline nlohmann::json paper_die_outline()
+  {
+    return nlohmann::json::parse(R"({
+      "geometry": {"outline": [{"start": [0.1, 0.0]}, {"line_to": [0.2, 0.0], "part": "mid_plane"},
+        {"line_to": [0.2, 0.2], "part": "outer"}, {"line_to": [0.1, 0.2], "part": "end"},
+        {"line_to": [0.1, 0.0], "part": "inner"}]},
+      "boundary": {"mid_plane": {"symmetry": true},
+                   "outer": {"die": {"indentation": 1e-6,
+                                     "profile": {"shape": "paraboloid", "radius": 10000.0}}}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3},
+      "rfm": {"degree": 8}})");
+  }
+
   struct CommandOutcome
   {
     int status;      ///< exit status (-1 if the command did not exit normally)

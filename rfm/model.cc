@@ -107,16 +107,9 @@ namespace rfm
   FieldValues RfmModel::evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
                                  const Eigen::Ref<const Eigen::VectorXd> &z) const
   {
-    FieldValues f = solution_->evaluate(r, z.cwiseAbs());
-    // Mirror: u_z and sigma_rz (and gamma_rz) are odd in z.
-    for (Eigen::Index k = 0; k < z.size(); ++k)
-      if (z[k] < 0)
-        {
-          f.u(k, 1) = -f.u(k, 1);
-          f.sigma(k, rz) = -f.sigma(k, rz);
-          f.strain(k, rz) = -f.strain(k, rz);
-        }
-    return f;
+    return mirrored_fields(r, z, [this](const auto &rr_, const auto &zz_) {
+      return solution_->evaluate(rr_, zz_);
+    });
   }
 
   ContactForce RfmModel::contact_force() const

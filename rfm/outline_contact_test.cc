@@ -6,30 +6,14 @@
 
 namespace rfm
 {
-  namespace
-  {
-    // The paper's die written as an outline: the half section z >= 0, the die on `outer`
-    // centred on the mid-plane (one free end).
-    nlohmann::json paper_die()
-    {
-      return nlohmann::json::parse(R"({
-        "geometry": {"outline": [{"start": [0.1, 0.0]}, {"line_to": [0.2, 0.0], "part": "mid_plane"},
-          {"line_to": [0.2, 0.2], "part": "outer"}, {"line_to": [0.1, 0.2], "part": "end"},
-          {"line_to": [0.1, 0.0], "part": "inner"}]},
-        "boundary": {"mid_plane": {"symmetry": true},
-                     "outer": {"die": {"indentation": 1e-6,
-                                       "profile": {"shape": "paraboloid", "radius": 10000.0}}}},
-        "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3},
-        "rfm": {"degree": 8}})");
-    }
-  } // namespace
+  using axisym::testing::paper_die_outline;
 
   // The search: K changes sign across the bracket, the Illinois steps close it, and the end
   // found is where K vanishes (|K| small against the bracket's), near the finest FEM's c =
   // 0.1038561 m (Q2, L = 5; measured 2.8e-4 from it at p = 8).
   TEST(OutlineContact, FindsTheRootOfTheEdgeIntensity)
   {
-    const axisym::Problem p = axisym::parse_problem(paper_die());
+    const axisym::Problem p = axisym::parse_problem(paper_die_outline());
     const OutlineContactResult r = solve_outline_contact(p, p.rfm);
     ASSERT_TRUE(r.success) << r.message;
     ASSERT_GE(r.history.size(), 3u);
@@ -47,19 +31,19 @@ namespace rfm
   // force are refused (the search takes one end and an indentation so far).
   TEST(OutlineContact, RefusesWhatItCannotSearch)
   {
-    auto j = paper_die();
+    auto j = paper_die_outline();
     j["rfm"]["edge_modes"] = 0;
     const axisym::Problem no_modes = axisym::parse_problem(j);
     const OutlineContactResult r = solve_outline_contact(no_modes, no_modes.rfm);
     EXPECT_FALSE(r.success);
     EXPECT_NE(r.message.find("edge modes"), std::string::npos) << r.message;
 
-    j = paper_die();
+    j = paper_die_outline();
     j["boundary"]["outer"]["die"]["center"] = {0.2, 0.1};
     const axisym::Problem two_ends = axisym::parse_problem(j);
     EXPECT_THROW(solve_outline_contact(two_ends, two_ends.rfm), axisym::InputError);
 
-    j = paper_die();
+    j = paper_die_outline();
     j["boundary"]["outer"]["die"].erase("indentation");
     j["boundary"]["outer"]["die"]["force"] = 1e5;
     const axisym::Problem force = axisym::parse_problem(j);

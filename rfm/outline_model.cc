@@ -384,18 +384,9 @@ namespace rfm
                                      const Eigen::Ref<const Eigen::VectorXd> &z) const
   {
     if (mirrored_ && (z.array() < 0.0).any())
-      {
-        // The image z < 0 of a mirrored section: u_z, sigma_rz and gamma_rz are odd in z.
-        FieldValues f = evaluate(r, z.cwiseAbs());
-        for (Eigen::Index k = 0; k < z.size(); ++k)
-          if (z[k] < 0)
-            {
-              f.u(k, 1) = -f.u(k, 1);
-              f.sigma(k, rz) = -f.sigma(k, rz);
-              f.strain(k, rz) = -f.strain(k, rz);
-            }
-        return f;
-      }
+      return mirrored_fields(r, z, [this](const auto &rr_, const auto &zz_) {
+        return evaluate_parts(rr_, zz_, true);
+      });
     return evaluate_parts(r, z, true);
   }
 
@@ -476,29 +467,6 @@ namespace rfm
     return n;
   }
 
-  namespace
-  {
-    // The distance from p to an edge: exact for a line, sampled for an arc (a bound within
-    // a fraction of a per cent, enough for a support radius with a margin).
-    double distance_to_edge(const axisym::OutlineEdge &e, const axisym::Point p)
-    {
-      if (e.kind == axisym::OutlineEdge::Kind::line)
-        {
-          const double dr = e.end.r - e.start.r, dz = e.end.z - e.start.z;
-          const double t = std::clamp(((p.r - e.start.r) * dr + (p.z - e.start.z) * dz) /
-                                        (dr * dr + dz * dz),
-                                      0.0, 1.0);
-          return std::hypot(p.r - e.start.r - t * dr, p.z - e.start.z - t * dz);
-        }
-      double d = std::numeric_limits<double>::infinity();
-      for (int k = 0; k <= 512; ++k)
-        {
-          const axisym::Point x = e.point_at(k / 512.0);
-          d = std::min(d, std::hypot(x.r - p.r, x.z - p.z));
-        }
-      return d;
-    }
-  } // namespace
 
   std::vector<int> OutlineModel::make_enrichments(const axisym::Problem &problem,
                                                   const std::vector<DieZone> &zones,
@@ -527,7 +495,7 @@ namespace rfm
             double room = std::min(zone.s_hi - zone.s_lo, into > 0 ? s_edge - f.s_min : f.s_max - s_edge);
             for (const axisym::OutlineEdge &e : problem.body->outline.edges())
               if (e.part != zone.part)
-                room = std::min(room, distance_to_edge(e, p));
+                room = std::min(room, e.distance_to(p));
             EdgeFrame frame{p.r, p.z, {{into * f.tangent.r, into * f.tangent.z}},
                             {{-f.normal.r, -f.normal.z}}};
             enrichments_.emplace_back(frame, options.edge_cutoff * room, modes, material_,

@@ -245,16 +245,8 @@ namespace
     const fs::path dir = fs::temp_directory_path() / "rfm_cli_outline_die";
     fs::remove_all(dir);
     fs::create_directories(dir);
-    nlohmann::json j = nlohmann::json::parse(R"({
-      "geometry": {"outline": [{"start": [0.1, 0.0]}, {"line_to": [0.2, 0.0], "part": "mid_plane"},
-        {"line_to": [0.2, 0.2], "part": "outer"}, {"line_to": [0.1, 0.2], "part": "end"},
-        {"line_to": [0.1, 0.0], "part": "inner"}]},
-      "boundary": {"mid_plane": {"symmetry": true},
-                   "outer": {"die": {"indentation": 1e-6,
-                                     "profile": {"shape": "paraboloid", "radius": 10000.0}}}},
-      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3},
-      "contact": {"method": "fixed"},
-      "rfm": {"degree": 8}})");
+    nlohmann::json j = axisym::testing::paper_die_outline();
+    j["contact"] = {{"method", "fixed"}};
     const fs::path in = dir / "problem.json", out = dir / "result.json";
     std::ofstream(in) << j.dump();
     Outcome o = run(in.string() + " --output " + out.string());

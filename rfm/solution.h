@@ -26,6 +26,23 @@ namespace rfm
     Eigen::MatrixXd strain; ///< n x 4: e(u) of the displacement field [-]
   };
 
+  /// The fields of a body mirrored in z = 0 at its image points: evaluates at |z| and flips
+  /// u_z, sigma_rz and gamma_rz (odd in z) where z < 0.
+  template <typename Evaluate>
+  FieldValues mirrored_fields(const Eigen::Ref<const Eigen::VectorXd> &r,
+                              const Eigen::Ref<const Eigen::VectorXd> &z, const Evaluate &evaluate)
+  {
+    FieldValues f = evaluate(r, z.cwiseAbs());
+    for (Eigen::Index k = 0; k < z.size(); ++k)
+      if (z[k] < 0)
+        {
+          f.u(k, 1) = -f.u(k, 1);
+          f.sigma(k, 3) = -f.sigma(k, 3); // rz
+          f.strain(k, 3) = -f.strain(k, 3);
+        }
+    return f;
+  }
+
   /// Fields at points (r, z), as RfmModel::evaluate: the RFM's, or another solver's sampled
   /// at the same points (the verification drivers).
   using FieldEvaluator = std::function<FieldValues(const Eigen::Ref<const Eigen::VectorXd> &,
