@@ -14,6 +14,39 @@ namespace rfm
 
   namespace
   {
+    // The transfinite weights of the edges e with in_set(e) at a point where their omegas are
+    // w: W_e = prod_{f != e} w_f / sum_g prod_{h != g} w_h (1 on e, 0 on the set's other edges;
+    // on a corner of two edges of the set, shared equally); 0 off the set.
+    template <typename InSet>
+    void transfinite_weights(const std::vector<double> &w, std::vector<double> &weight,
+                             const InSet &in_set)
+    {
+      const std::size_t n = w.size();
+      double den = 0.0;
+      for (std::size_t e = 0; e < n; ++e)
+        {
+          weight[e] = 0.0;
+          if (!in_set(e))
+            continue;
+          double p = 1.0;
+          for (std::size_t f = 0; f < n; ++f)
+            if (f != e && in_set(f))
+              p *= w[f];
+          den += (weight[e] = p);
+        }
+      if (den > 0.0)
+        for (double &x : weight)
+          x /= den;
+      else
+        {
+          double zeros = 0.0;
+          for (std::size_t e = 0; e < n; ++e)
+            zeros += in_set(e) && w[e] == 0.0;
+          for (std::size_t e = 0; e < n; ++e)
+            weight[e] = in_set(e) && w[e] == 0.0 ? 1.0 / zeros : 0.0;
+        }
+    }
+
     double dot(const axisym::Point &a, const axisym::Point &b) { return a.r * b.r + a.z * b.z; }
     axisym::Point minus(const axisym::Point &a, const axisym::Point &b)
     {
@@ -519,30 +552,7 @@ namespace rfm
                                          const int component) const
   {
     const std::size_t n_s = stress_edges_.size();
-    double den = 0.0;
-    for (std::size_t e = 0; e < n_s; ++e)
-      {
-        weight[e] = 0.0;
-        if (stress_kind_[e] == skip)
-          continue;
-        double p = 1.0;
-        for (std::size_t f = 0; f < n_s; ++f)
-          if (f != e && stress_kind_[f] != skip)
-            p *= w[f];
-        den += (weight[e] = p);
-      }
-    if (den > 0.0)
-      for (double &x : weight)
-        x /= den;
-    else
-      {
-        // On a corner of two edges of the set: shared equally.
-        double zeros = 0.0;
-        for (std::size_t e = 0; e < n_s; ++e)
-          zeros += stress_kind_[e] != skip && w[e] == 0.0;
-        for (std::size_t e = 0; e < n_s; ++e)
-          weight[e] = stress_kind_[e] != skip && w[e] == 0.0 ? 1.0 / zeros : 0.0;
-      }
+    transfinite_weights(w, weight, [&](std::size_t e) { return stress_kind_[e] != skip; });
     double value = 0.0;
     for (std::size_t e = 0; e < n_s; ++e)
       if (weight[e] != 0.0)
@@ -598,24 +608,7 @@ namespace rfm
           continue;
 
         // Transfinite weights W_e (on an S corner, shared equally by the edges through it).
-        double den = 0.0;
-        for (Eigen::Index e = 0; e < n_s; ++e)
-          {
-            double p = 1.0;
-            for (Eigen::Index f = 0; f < n_s; ++f)
-              if (f != e)
-                p *= w[f];
-            den += (weight[e] = p);
-          }
-        if (den > 0.0)
-          for (double &x : weight)
-            x /= den;
-        else
-          {
-            const double zeros = static_cast<double>(std::count(w.begin(), w.end(), 0.0));
-            for (Eigen::Index e = 0; e < n_s; ++e)
-              weight[e] = w[e] == 0.0 ? 1.0 / zeros : 0.0;
-          }
+        transfinite_weights(w, weight, [](std::size_t) { return true; });
 
         // The normal components blend over the edges that prescribe them only (a lone edge
         // along z leaves sigma_zz free, one along r sigma_rr), so that at a corner between
