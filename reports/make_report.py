@@ -1022,7 +1022,7 @@ def pressure_profile(profile):
 def dies_section(dies, out_dir):
     """Dies on parts of outline sections (issue 23): the FEM against closed forms and
     independent models (`dies_on_parts`)."""
-    md = ["## 7. Dies on parts of an outline section (`dies_on_parts`, FEM)", "",
+    md = ["## 7. Dies on parts of an outline section (`dies_on_parts`: FEM, and the RFM where it reaches)", "",
           "A rigid die on any straight part (`boundary.PART.die`, DESIGN.md 7.1), solved by the FEM "
           "reference: penalty active set on the part, force control by the linearity in the "
           "indentation, the mesh refined toward the zone and its free ends "
