@@ -1,6 +1,7 @@
 #include "rfm/outline_contact.h"
 
 #include <cmath>
+#include <limits>
 
 namespace rfm
 {
@@ -40,7 +41,8 @@ namespace rfm
       step.phase = phase;
       const OutlineModel::DieForce force = model->die_force(part);
       step.force = force.domain, step.force_trace = force.trace;
-      step.edge_intensity = model->n_zone_edges() > 0 ? model->edge_intensity(0) : NAN;
+      step.edge_intensity = model->n_zone_edges() > 0 ? model->edge_intensity(0)
+                                                             : std::numeric_limits<double>::quiet_NaN();
       const Functionals phi = model->functionals();
       step.lagrange = phi.lagrange, step.castigliano = phi.castigliano, step.reissner = phi.reissner;
       result.history.push_back(step);
