@@ -425,14 +425,7 @@ namespace rfm
     if (with_enrichment && n_e > 0)
       {
         const EdgeColumns e = edge_columns(r, z);
-        const auto qs = q_s_.tail(n_e), qu = q_u_.tail(n_e);
-        for (int k = 0; k < n_stress_components; ++k)
-          {
-            f.sigma.col(k) += e.stress[k] * qs;
-            f.strain.col(k) += e.strain[k] * qu;
-          }
-        for (int m = 0; m < 2; ++m)
-          f.u.col(m) += e.u[m] * qu;
+        add_enrichment_fields(e, q_s_.tail(n_e), q_u_.tail(n_e), f);
       }
     return f;
   }

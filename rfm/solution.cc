@@ -6,6 +6,18 @@
 
 namespace rfm
 {
+  void add_enrichment_fields(const EdgeColumns &e, const Eigen::Ref<const Eigen::VectorXd> &q_s,
+                             const Eigen::Ref<const Eigen::VectorXd> &q_u, FieldValues &f)
+  {
+    for (int k = 0; k < n_stress_components; ++k)
+      {
+        f.sigma.col(k) += e.stress[k] * q_s;
+        f.strain.col(k) += e.strain[k] * q_u;
+      }
+    for (int m = 0; m < 2; ++m)
+      f.u.col(m) += e.u[m] * q_u;
+  }
+
   double Functionals::indicator() const
   {
     return std::abs(lagrange - castigliano) / std::abs(reissner);
@@ -53,14 +65,7 @@ namespace rfm
     if (part != FieldPart::polynomial && n_e > 0)
       {
         const EdgeColumns e = space_.enrichment()->evaluate(r, z);
-        const auto qs = q_s_.tail(n_e), qu = q_u_.tail(n_e);
-        for (int k = 0; k < n_stress_components; ++k)
-          {
-            f.sigma.col(k) += e.stress[k] * qs;
-            f.strain.col(k) += e.strain[k] * qu;
-          }
-        for (int m = 0; m < 2; ++m)
-          f.u.col(m) += e.u[m] * qu;
+        add_enrichment_fields(e, q_s_.tail(n_e), q_u_.tail(n_e), f);
       }
     return f;
   }

@@ -43,6 +43,11 @@ namespace rfm
     return f;
   }
 
+  /// Adds the enrichment's part, columns e with coefficients q_s (stress) and q_u
+  /// (displacement), to the fields f at the same points.
+  void add_enrichment_fields(const EdgeColumns &e, const Eigen::Ref<const Eigen::VectorXd> &q_s,
+                             const Eigen::Ref<const Eigen::VectorXd> &q_u, FieldValues &f);
+
   /// Fields at points (r, z), as RfmModel::evaluate: the RFM's, or another solver's sampled
   /// at the same points (the verification drivers).
   using FieldEvaluator = std::function<FieldValues(const Eigen::Ref<const Eigen::VectorXd> &,
