@@ -111,9 +111,4 @@ namespace rfm
     DisplacementStructureValues edge_displacement_;
     EdgeColumns edge_columns_;
   };
-
-  /// Uniform cells on [a, b], then split and graded at the break points.
-  std::vector<double> section_cells(double a, double b, int n_uniform,
-                                    const std::vector<double> &break_points,
-                                    int n_graded_layers, double grading_ratio);
 } // namespace rfm

@@ -106,7 +106,18 @@ namespace rfm
     , loads_(problem.body_loads)
     , mirrored_(problem.body->mirrored)
     , structures_(*problem.body, (options.validate(), options.degree), zones)
-    , basis_(basis_of(problem.body->outline, options.degree, options.degree))
+    , basis_([&]() -> std::variant<TensorLegendreBasis, SectionPolynomialBasis> {
+      const axisym::Outline &o = problem.body->outline;
+      bool reduced = false;
+      for (int m = 0; m < 2; ++m)
+        reduced |= structures_.displacement_degree_reduction(m) != std::array<int, 2>{0, 0};
+      if (is_axis_aligned_rectangle(o) && !reduced)
+        {
+          const axisym::BoundingBox b = o.bounding_box();
+          return TensorLegendreBasis(options.degree, b.r_min, b.r_max, b.z_min, b.z_max);
+        }
+      return basis_of(o, options.degree, options.degree);
+    }())
   {
     const auto t0 = std::chrono::steady_clock::now();
     // Products of two coordinate functions reach total degree 4p in (r, z), times the
@@ -114,8 +125,16 @@ namespace rfm
     // triangles.
     SectionQuadratureOptions qo;
     qo.n_points = 2 * options.degree + options.extra_gauss_points;
-    // On the split body: a zone's ends are vertices of the triangulation and of the edges.
-    quadrature_ = section_gauss(structures_.body().outline, qo);
+    // On the split body: a zone's ends are vertices of the triangulation and of the edges. A
+    // rectangle with sides along r and z takes the tensor rule with p + extra_gauss_points
+    // points per direction, graded toward the zone's ends (section_quadrature.h).
+    const axisym::Outline &split = structures_.body().outline;
+    if (is_axis_aligned_rectangle(split))
+      quadrature_ = rectangle_gauss(split, options.degree + options.extra_gauss_points,
+                                    {options.n_cells_r, options.n_cells_z,
+                                     options.n_graded_layers, options.grading_ratio});
+    else
+      quadrature_ = section_gauss(split, qo);
     const std::vector<int> graded = make_enrichments(problem, zones, options);
     edge_quadrature_ = edge_gauss(structures_.body().outline, qo.n_points, graded);
     // The near-edge rules: the half disc of each enrichment's support, polar with
@@ -153,13 +172,38 @@ namespace rfm
         edge_quadrature_.weights *= 2.0;
         near_.weights *= 2.0;
       }
-    std::array<Eigen::MatrixXd, 2> gram_u;
-    const ReissnerSystem sys = assemble(gram_u);
+    ReissnerSystem sys = assemble();
     assembly_s_ = seconds_since(t0);
 
-    // The basis orthonormal on the section (see the header).
     const auto t1 = std::chrono::steady_clock::now();
-    const Eigen::Index n = basis_.n_basis_functions();
+    const int p = options.degree;
+    // A system whose scaled blocks are well conditioned is solved as assembled: when no
+    // displacement component is reduced in degree and the rcond estimates of the scaled M and
+    // K are both above raw_min_rcond (the rectangles, the annuli; the failed attempt stops
+    // after the factorizations, before any diagnostics).
+    bool reduced_degree = false;
+    for (int m = 0; m < 2; ++m)
+      reduced_degree |= structures_.displacement_degree_reduction(m) != std::array<int, 2>{0, 0};
+    if (!reduced_degree)
+      {
+        SolverOptions raw = solver_options;
+        raw.min_rcond = std::max(solver_options.min_rcond, raw_min_rcond);
+        SaddlePointSolution sol = solve_saddle_point(sys, raw);
+        if (sol.summary.success)
+          {
+            solve_s_ = seconds_since(t1);
+            summary_ = sol.summary;
+            n_kept_ = {sys.r11.rows(), sys.r12.cols()};
+            q_s_ = std::move(sol.q_s);
+            q_u_ = std::move(sol.q_u);
+            return;
+          }
+      }
+
+    // Otherwise in the basis orthonormal in the system's own norms (see the header).
+    const Eigen::Index n = n_basis_functions();
+    sys.r11.triangularView<Eigen::StrictlyUpper>() = sys.r11.transpose();
+    const std::array<Eigen::MatrixXd, 2> gram_u = displacement_grams();
     // V L^-1/2 of the Jacobi-scaled Gram matrix D G D (D = diag(G)^-1/2), the directions
     // with l > 1e-14 max l kept: T = D V L^-1/2, so that T^T G T = I.
     auto orthonormal = [](const Eigen::MatrixXd &gram) {
@@ -183,7 +227,6 @@ namespace rfm
     // orthonormal basis of those degrees on the same samples, whose coefficients in the
     // full basis are its inner products with it there (both orthonormal, one space inside
     // the other): a well-conditioned N x N_m matrix.
-    const int p = options.degree;
     std::array<Eigen::MatrixXd, 2> tu;
     Quadrature2D samples;     // the full basis's samples, and
     Eigen::MatrixXd weighted; // its values there times w, once for both components
@@ -199,7 +242,7 @@ namespace rfm
           {
             samples = basis_samples(problem.body->outline, p);
             weighted = samples.weights.cwiseProduct(samples.r).asDiagonal() *
-                       basis_.evaluate(samples.r, samples.z, false).value;
+                       std::get<SectionPolynomialBasis>(basis_).evaluate(samples.r, samples.z, false).value;
           }
         const int p_r = std::max(0, p - k[0]), p_z = std::max(0, p - k[1]);
         const SectionPolynomialBasis reduced = basis_of(problem.body->outline, p_r, p_z);
@@ -234,15 +277,34 @@ namespace rfm
       }
   }
 
-  ReissnerSystem OutlineModel::assemble(std::array<Eigen::MatrixXd, 2> &gram_u)
+  std::array<Eigen::MatrixXd, 2> OutlineModel::displacement_grams() const
   {
-    const Eigen::Index n = basis_.n_basis_functions(), n_b = structures_.n_boundary_columns();
+    // Values / l^2 plus gradients (l the size of the section, so both terms weigh alike).
+    const Quadrature2D &q = quadrature_;
+    const Eigen::VectorXd mu = q.weights.cwiseProduct(q.r);
+    const DisplacementBasisValues v = displacement_basis(
+      basis_values(q.r, q.z), as_structure(structures_.displacement(q.r, q.z)));
+    const double l = structures_.body().outline.size();
+    std::array<Eigen::MatrixXd, 2> gram;
+    for (int m = 0; m < 2; ++m)
+      {
+        const Eigen::MatrixXd wv = mu.asDiagonal() * v.value[m];
+        gram[m] = (wv.transpose() * v.value[m]) / (l * l);
+        gram[m].noalias() += v.d_r[m].transpose() * (mu.asDiagonal() * v.d_r[m]);
+        gram[m].noalias() += v.d_z[m].transpose() * (mu.asDiagonal() * v.d_z[m]);
+      }
+    return gram;
+  }
+
+  ReissnerSystem OutlineModel::assemble()
+  {
+    const Eigen::Index n = n_basis_functions(), n_b = structures_.n_boundary_columns();
     const Eigen::Index n_e = n_edge_columns();
     const Eigen::Index n_s = 4 * n + n_b + n_e, n_u = 2 * n + n_e;
     const Eigen::Matrix4d c = material_.compliance();
     const Quadrature2D &q = quadrature_;
     const Eigen::VectorXd mu = q.weights.cwiseProduct(q.r);
-    const BasisValues b = basis_.evaluate(q.r, q.z);
+    const BasisValues b = basis_values(q.r, q.z);
     const OutlineStressValues s = structures_.stress(q.r, q.z);
     const DisplacementStructureValues d = as_structure(structures_.displacement(q.r, q.z));
 
@@ -252,7 +314,8 @@ namespace rfm
     sys.p_s.setZero(n_s);
     sys.p_u.setZero(n_u);
     const StressStructureValues sp = polynomial_part(s);
-    add_polynomial_blocks(mu, q.r, b, sp, d, c, sys);
+    // R11's lower triangle (what the solver reads; the transform fills the rest).
+    add_polynomial_blocks(mu, q.r, b, sp, d, c, sys, 0, false);
     const DisplacementBasisValues v = displacement_basis(b, d);
 
     // Body loads: - int X . e_th in p_s (normal components), - int f . Phi in p_u.
@@ -276,18 +339,6 @@ namespace rfm
         for (int m = 0; m < 2; ++m)
           sys.p_u.segment(m * n, n).noalias() -= v.value[m].transpose() * mu.cwiseProduct(f.col(m));
       }
-    {
-      // Gram matrices of the displacement columns: values / l^2 plus gradients (l the size of
-      // the section, so both terms weigh alike).
-      const double l = structures_.body().outline.size();
-      for (int m = 0; m < 2; ++m)
-        {
-          const Eigen::MatrixXd wv = mu.asDiagonal() * v.value[m];
-          gram_u[m] = (wv.transpose() * v.value[m]) / (l * l);
-          gram_u[m].noalias() += v.d_r[m].transpose() * (mu.asDiagonal() * v.d_r[m]);
-          gram_u[m].noalias() += v.d_z[m].transpose() * (mu.asDiagonal() * v.d_z[m]);
-        }
-    }
 
     // The boundary columns B_e (vector fields in rr, zz, rz): the borders of R11 and R12
     // and their rows of p_s.
@@ -333,7 +384,7 @@ namespace rfm
       {
         const Quadrature2D &nq = near_;
         const Eigen::VectorXd near_mu = nq.weights.cwiseProduct(nq.r);
-        const BasisValues nb = basis_.evaluate(nq.r, nq.z);
+        const BasisValues nb = basis_values(nq.r, nq.z);
         const OutlineStressValues ns = structures_.stress(nq.r, nq.z);
         const DisplacementStructureValues nd = as_structure(structures_.displacement(nq.r, nq.z));
         const EdgeColumns ec = edge_columns(nq.r, nq.z);
@@ -367,7 +418,7 @@ namespace rfm
 
     // p_u: - int_{S_t} t . Phi r ds on the traction edges.
     const EdgeQuadrature &eq = edge_quadrature_;
-    const BasisValues bb = basis_.evaluate(eq.r, eq.z);
+    const BasisValues bb = basis_values(eq.r, eq.z);
     const OutlineDisplacementValues bd = structures_.displacement(eq.r, eq.z);
     for (int m = 0; m < 2; ++m)
       {
@@ -394,8 +445,8 @@ namespace rfm
                                            const Eigen::Ref<const Eigen::VectorXd> &z,
                                            const bool with_enrichment) const
   {
-    const Eigen::Index n = basis_.n_basis_functions(), n_b = structures_.n_boundary_columns();
-    const BasisValues b = basis_.evaluate(r, z);
+    const Eigen::Index n = n_basis_functions(), n_b = structures_.n_boundary_columns();
+    const BasisValues b = basis_values(r, z);
     const OutlineStressValues s = structures_.stress(r, z);
     const DisplacementStructureValues d = as_structure(structures_.displacement(r, z));
     const DisplacementBasisValues v = displacement_basis(b, d);
@@ -450,6 +501,17 @@ namespace rfm
         at += w;
       }
     return all;
+  }
+
+  Eigen::Index OutlineModel::n_basis_functions() const
+  {
+    return std::visit([](const auto &b) { return b.n_basis_functions(); }, basis_);
+  }
+
+  BasisValues OutlineModel::basis_values(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                         const Eigen::Ref<const Eigen::VectorXd> &z) const
+  {
+    return std::visit([&](const auto &b) { return b.evaluate(r, z); }, basis_);
   }
 
   Eigen::Index OutlineModel::n_edge_columns() const

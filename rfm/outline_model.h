@@ -28,7 +28,17 @@
 // per displacement component with the Gram matrix of values and gradients. With the box's
 // Legendre basis this step dropped directions (203 of 1806 at p = 20 on the sphere) and the
 // sphere's stress error flattened near 5e-5 from p = 14; with the section basis it keeps
-// them all there.
+// them all there. The transform costs three symmetric eigendecompositions (5 of the 6 s of a
+// p = 20 solve on the rectangle), so a system is first solved as assembled, and transformed
+// only when the rcond estimate of its scaled M or K falls below raw_min_rcond (or a
+// displacement component is reduced in degree).
+//
+// Coordinate functions and quadrature: the polynomials orthonormal on the section and its
+// curved-triangle rule; on a rectangle with sides along r and z the tensor Legendre
+// polynomials of the box (orthogonal there, with no N x N transform to evaluate them) and
+// the tensor rule with p + extra_gauss_points points per direction on cells graded toward
+// the zones' ends (section_quadrature.h): the same functions and points as the rectangle
+// stack had, a quarter of the triangles' points and a third of the time at p = 20.
 #pragma once
 
 #include "problem/problem.h"
@@ -44,6 +54,7 @@
 
 #include <array>
 #include <memory>
+#include <variant>
 
 namespace rfm
 {
@@ -53,6 +64,10 @@ namespace rfm
     Eigen::VectorXd r, z, weights, n_r, n_z;
     std::vector<int> edge;
   };
+
+  /// The smallest rcond estimate of the scaled M and K at which OutlineModel solves the
+  /// system as assembled, without the orthonormalizing transform.
+  inline constexpr double raw_min_rcond = 1e-10;
 
   class OutlineModel
   {
@@ -67,7 +82,7 @@ namespace rfm
     const SolveSummary &summary() const { return summary_; }
     double assembly_seconds() const { return assembly_s_; }
     double solve_seconds() const { return solve_s_; }
-    Eigen::Index n_basis_functions() const { return basis_.n_basis_functions(); }
+    Eigen::Index n_basis_functions() const;
     Eigen::Index n_boundary_columns() const { return structures_.n_boundary_columns(); }
     Eigen::Index n_quadrature_points() const { return quadrature_.n_points(); }
     /// Unknowns after the orthonormalization (stress, displacement).
@@ -109,9 +124,12 @@ namespace rfm
     const axisym::Body &body() const { return structures_.body(); }
 
   private:
-    /// The system, and the Gram matrices of the displacement columns (values and
-    /// gradients, per component; the enrichment's in gram_e_) for the basis transform.
-    ReissnerSystem assemble(std::array<Eigen::MatrixXd, 2> &gram_u);
+    /// The system (R11: its lower triangle; the enrichment's displacement Gram matrix in
+    /// gram_e_).
+    ReissnerSystem assemble();
+    /// The Gram matrices of the displacement columns (values and gradients, per component)
+    /// for the basis transform.
+    std::array<Eigen::MatrixXd, 2> displacement_grams() const;
     /// The fields, without the enrichment's part when !with_enrichment (no mirroring).
     FieldValues evaluate_parts(const Eigen::Ref<const Eigen::VectorXd> &r,
                                const Eigen::Ref<const Eigen::VectorXd> &z, bool with_enrichment) const;
@@ -128,7 +146,13 @@ namespace rfm
     axisym::BodyLoads loads_; ///< body force in p_u and W, thermal strain in p_s and the functionals
     bool mirrored_ = false;   ///< integrals twice (the section and its image in z = 0)
     OutlineStructures structures_;
-    SectionPolynomialBasis basis_;
+    /// The coordinate functions: the tensor Legendre polynomials of the box on a rectangle
+    /// with sides along r and z (orthogonal there; their values cost no N x N transform) when
+    /// no displacement component is reduced in degree, else the polynomials orthonormal on the
+    /// section.
+    std::variant<TensorLegendreBasis, SectionPolynomialBasis> basis_;
+    BasisValues basis_values(const Eigen::Ref<const Eigen::VectorXd> &r,
+                             const Eigen::Ref<const Eigen::VectorXd> &z) const;
     Quadrature2D quadrature_;
     EdgeQuadrature edge_quadrature_;
     Eigen::VectorXd q_s_, q_u_;

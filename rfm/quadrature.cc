@@ -223,4 +223,22 @@ namespace rfm
         }
     return q;
   }
+
+  std::vector<double> section_cells(const double a, const double b, const int n_uniform,
+                                    const std::vector<double> &break_points,
+                                    const int n_graded_layers, const double grading_ratio)
+  {
+    std::vector<double> ends;
+    for (int i = 1; i < n_uniform; ++i)
+      ends.push_back(a + (b - a) * i / n_uniform);
+    std::vector<double> cells = graded_partition(a, b, break_points, n_graded_layers,
+                                                 grading_ratio);
+    // Merge the uniform ends into the graded partition (sorted, unique).
+    cells.insert(cells.end(), ends.begin(), ends.end());
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end(),
+                            [&](double x, double y) { return std::abs(x - y) < 1e-14 * (b - a); }),
+                cells.end());
+    return cells;
+  }
 } // namespace rfm

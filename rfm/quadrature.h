@@ -29,6 +29,12 @@ namespace rfm
                                        const std::vector<double> &break_points,
                                        int n_graded_layers, double ratio);
 
+  /// n_uniform uniform cells on [a, b], then split and graded at the break points
+  /// (graded_partition); the cell ends, sorted.
+  std::vector<double> section_cells(double a, double b, int n_uniform,
+                                    const std::vector<double> &break_points,
+                                    int n_graded_layers, double grading_ratio);
+
   /// Quadrature points in the meridian plane: coordinates (r, z) and plain area
   /// weights dr dz (the r of the axisymmetric measure is not included).
   struct Quadrature2D

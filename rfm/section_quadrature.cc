@@ -345,4 +345,47 @@ namespace rfm
             n_pieces[i] *= 2;
       }
   }
+
+  bool is_axis_aligned_rectangle(const axisym::Outline &outline)
+  {
+    const axisym::BoundingBox b = outline.bounding_box();
+    const double tol = 1e-12 * outline.size();
+    auto on = [&](double x, double side) { return std::abs(x - side) <= tol; };
+    for (const axisym::OutlineEdge &e : outline.edges())
+      {
+        if (e.kind != axisym::OutlineEdge::Kind::line)
+          return false;
+        const bool vertical = on(e.start.r, e.end.r) && (on(e.start.r, b.r_min) || on(e.start.r, b.r_max));
+        const bool horizontal =
+          on(e.start.z, e.end.z) && (on(e.start.z, b.z_min) || on(e.start.z, b.z_max));
+        if (!vertical && !horizontal)
+          return false;
+      }
+    return !outline.edges().empty();
+  }
+
+  Quadrature2D rectangle_gauss(const axisym::Outline &outline, const int n_points,
+                               const RectangleCells &cells)
+  {
+    if (!is_axis_aligned_rectangle(outline) || n_points < 1)
+      throw std::invalid_argument("rectangle_gauss: not an axis-aligned rectangle, or n_points < 1");
+    const axisym::BoundingBox b = outline.bounding_box();
+    // The vertices inside a side: r of those on the bottom and top, z of those on the inner
+    // and outer side (not the corners: section_cells would grade toward them).
+    const double tol = 1e-12 * outline.size();
+    std::vector<double> r_breaks, z_breaks;
+    for (const axisym::OutlineEdge &e : outline.edges())
+      for (const axisym::Point &v : {e.start, e.end})
+        {
+          if (v.r > b.r_min + tol && v.r < b.r_max - tol)
+            r_breaks.push_back(v.r);
+          if (v.z > b.z_min + tol && v.z < b.z_max - tol)
+            z_breaks.push_back(v.z);
+        }
+    return tensor_gauss(section_cells(b.r_min, b.r_max, cells.n_uniform_r, r_breaks,
+                                      cells.n_graded_layers, cells.grading_ratio),
+                        section_cells(b.z_min, b.z_max, cells.n_uniform_z, z_breaks,
+                                      cells.n_graded_layers, cells.grading_ratio),
+                        n_points);
+  }
 } // namespace rfm

@@ -81,4 +81,26 @@ namespace rfm
   /// triangle and its curved outline edges, 0-based indices into Outline::edges()).
   Quadrature2D section_gauss(const axisym::Outline &outline,
                              const SectionQuadratureOptions &options = {});
+
+  /// The cells of a tensor rule on a rectangular section.
+  struct RectangleCells
+  {
+    int n_uniform_r = 1, n_uniform_z = 1; ///< uniform cells before splitting
+    int n_graded_layers = 8;              ///< geometric layers toward each break point
+    double grading_ratio = 0.35;          ///< width ratio between successive layers
+  };
+
+  /// True if every edge of the outline is a line on its bounding box, i.e. the section is
+  /// a rectangle with sides along r and z (its sides may be split into several edges).
+  bool is_axis_aligned_rectangle(const axisym::Outline &outline);
+
+  /// The tensor Gauss rule of such a rectangle: n_points x n_points points on every cell of
+  /// section_cells (quadrature.h) in r and in z, split and graded (cells) at every vertex
+  /// inside a side, where a boundary condition changes (a contact zone's end). For polynomials
+  /// of degree <= p in each variable (the coordinate functions), n_points = p + 4 integrates
+  /// their products times r and the structures' low-degree factors exactly on every cell with
+  /// (p + 4)^2 points instead of the triangles' 2 (2 p + 4)^2. Precondition:
+  /// is_axis_aligned_rectangle(outline), n_points >= 1.
+  Quadrature2D rectangle_gauss(const axisym::Outline &outline, int n_points,
+                               const RectangleCells &cells = {});
 } // namespace rfm

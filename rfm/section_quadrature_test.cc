@@ -179,6 +179,45 @@ namespace rfm
       }
   }
 
+  TEST(SectionQuadrature, RectangleGaussIsTensorGaussGradedAtSideVertices)
+  {
+    // A rectangle whose outer side is split at z = 0.25 (a contact zone's end): the cells in z
+    // are graded toward 0.25, those in r are one cell; corners grade nothing.
+    const Outline split({0.1, 0}, {line({0.3, 0}), line({0.3, 0.25}), line({0.3, 0.4}),
+                                   line({0.1, 0.4}), line({0.1, 0})});
+    ASSERT_TRUE(is_axis_aligned_rectangle(split));
+    RectangleCells cells;
+    cells.n_graded_layers = 3, cells.grading_ratio = 0.5;
+    const Quadrature2D q = rectangle_gauss(split, 6, cells);
+    // z: [0, 0.25] and [0.25, 0.4] with 3 layers each toward 0.25: 8 cells; r: 1 cell.
+    EXPECT_EQ(q.n_points(), 8 * 36);
+    expect_inside_with_positive_weights(q, split);
+    // Gauss with 6 points per cell: exact for degree 11 in each variable.
+    expect_moments(q, [](int i, int j) { return rectangle_moment(0.1, 0.3, 0, 0.4, i, j); },
+                   11, polygon_exact, "rectangle_gauss, split side");
+    double z_min_above = 1.0, z_max_below = 0.0; // the nodes nearest 0.25 from either side
+    for (Eigen::Index k = 0; k < q.n_points(); ++k)
+      {
+        if (q.z[k] > 0.25)
+          z_min_above = std::min(z_min_above, q.z[k]);
+        else
+          z_max_below = std::max(z_max_below, q.z[k]);
+      }
+    // The cell at 0.25 is 0.5^3 of its sub-interval (0.15 above, 0.25 below); its first
+    // Gauss node of 6 lies within 0.1 of the cell's width from its end.
+    EXPECT_LT(z_min_above - 0.25, 0.1 * 0.125 * 0.15);
+    EXPECT_LT(0.25 - z_max_below, 0.1 * 0.125 * 0.25);
+
+    // Not rectangles: an L-shape, a trapezium, an arc.
+    EXPECT_FALSE(is_axis_aligned_rectangle(Outline(
+      {0.1, 0}, {line({0.3, 0}), line({0.3, 0.1}), line({0.2, 0.1}), line({0.2, 0.3}),
+                 line({0.1, 0.3}), line({0.1, 0})})));
+    EXPECT_FALSE(is_axis_aligned_rectangle(
+      Outline({0.1, 0}, {line({0.3, 0}), line({0.2, 0.3}), line({0.1, 0.3}), line({0.1, 0})})));
+    EXPECT_FALSE(is_axis_aligned_rectangle(quarter_annulus()));
+    EXPECT_THROW(rectangle_gauss(quarter_annulus(), 4), std::invalid_argument);
+  }
+
   TEST(SectionQuadrature, LShapeMomentsExact)
   {
     // [0.1, 0.3] x [0, 0.1] united with [0.1, 0.2] x [0.1, 0.3]: one reflex vertex.
