@@ -589,7 +589,7 @@ namespace axisym
     }
 
     // The legacy hollow cylinder as an outline: the half section z >= 0.
-    Body legacy_body(const Problem &p)
+    Body make_legacy_body(const Problem &p)
     {
       const double r1 = p.geometry.inner_radius, r2 = p.geometry.outer_radius;
       const double a = p.geometry.half_length();
@@ -691,6 +691,11 @@ namespace axisym
   }
   } // namespace
 
+  Body legacy_body(const Problem &p)
+  {
+    return make_legacy_body(p);
+  }
+
   Problem parse_problem(const json &j)
   {
     Problem p;
@@ -777,7 +782,7 @@ namespace axisym
           }
       }
 
-    p.body = legacy_body(p);
+    p.body = make_legacy_body(p);
     parse_settings(top, p);
     return p;
   }

@@ -118,7 +118,8 @@ namespace axisym
       axis           ///< r = 0: u_r = 0, sigma_rz = 0 (implied, never given)
     };
     Kind kind = Kind::traction_free;
-    double pressure = 0.0;                      ///< [Pa]
+    double pressure = 0.0;                      ///< [Pa]; kind die: on the part beyond the zone
+                                                ///< (the legacy outer pressure)
     std::array<double, 2> traction{{0.0, 0.0}};   ///< (t_r, t_z) [Pa]
     std::array<double, 2> displacement{{0.0, 0.0}}; ///< (u_r, u_z) [m]
     DieCondition die;                           ///< kind == die
@@ -196,6 +197,10 @@ namespace axisym
 
   /// Parses and validates; throws InputError.
   Problem parse_problem(const nlohmann::json &j);
+  /// The legacy hollow cylinder's outline Body (the half section z >= 0, mirrored) from its
+  /// geometry, loading and die: what parse_problem sets as problem.body for the legacy form.
+  /// Code that changes those fields of a parsed problem rebuilds the body with it.
+  Body legacy_body(const Problem &p);
   /// Reads a file (InputError if missing or malformed) and parses it.
   Problem read_problem_file(const std::string &path);
 

@@ -22,10 +22,26 @@ namespace rfm
     }
   } // namespace
 
-  std::vector<std::pair<double, double>> contact_pressure(const RfmModel &model, const double c,
+  std::unique_ptr<OutlineModel> solve_cylinder_zone(const Problem &problem,
+                                                    const DiscretizationOptions &discretization,
+                                                    const double c, const SolverOptions &solver)
+  {
+    // The body from the legacy fields, which callers may have changed after parsing.
+    axisym::Problem q = problem;
+    q.body = axisym::legacy_body(problem);
+    return std::make_unique<OutlineModel>(q, discretization, solver,
+                                          std::vector<DieZone>{{"outer", 0.0, c, problem.die->indentation}});
+  }
+
+  double zone_half_width(const OutlineModel &model)
+  {
+    return model.zones().at(0).s_hi;
+  }
+
+  std::vector<std::pair<double, double>> contact_pressure(const OutlineModel &model, const double c,
                                                           const int n)
   {
-    const double r2 = model.space().structures().section().r_max();
+    const double r2 = model.body().outline.bounding_box().r_max;
     const Eigen::VectorXd z = Eigen::VectorXd::LinSpaced(n, 0.0, c);
     const FieldValues f = model.evaluate(Eigen::VectorXd::Constant(n, r2), z);
     std::vector<std::pair<double, double>> out;
@@ -34,7 +50,7 @@ namespace rfm
     return out;
   }
 
-  double edge_intensity_reciprocal_work(const RfmModel &model, const Problem &problem,
+  double edge_intensity_reciprocal_work(const OutlineModel &model, const Problem &problem,
                                         const double c, const double rho_1)
   {
     const double r2 = problem.geometry.outer_radius;
@@ -98,7 +114,7 @@ namespace rfm
     return interaction_quadrature(EdgeFrame::outer_side(g.outer_radius, c), rho_1);
   }
 
-  double edge_intensity_interaction(const RfmModel &model, const Problem &problem,
+  double edge_intensity_interaction(const OutlineModel &model, const Problem &problem,
                                     const double c, const double rho_1)
   {
     return edge_intensity_interaction(
@@ -213,13 +229,12 @@ namespace rfm
   }
 
 
-  std::vector<std::pair<double, double>> consistent_contact_pressure(const RfmModel &model,
+  std::vector<std::pair<double, double>> consistent_contact_pressure(const OutlineModel &model,
                                                                      const Problem &problem,
                                                                      const double c, const int n,
                                                                      const int n_moments)
   {
     const double r1 = problem.geometry.inner_radius, r2 = problem.geometry.outer_radius;
-    const DiscreteSpace &space = model.space();
     // U_m(x) and U_m'(x) for m = 0..2 (n_moments - 1) by the recurrence
     // U_{m+1} = 2 x U_m - U_{m-1} (and its derivative).
     const int m_max = 2 * (n_moments - 1);
@@ -246,7 +261,7 @@ namespace rfm
     std::vector<double> u, du;
 
     // 1. Domain part: int s_h . e(V_k) for all k at once, on the assembly's rules.
-    Eigen::VectorXd moments = -model.solution().integrate(
+    Eigen::VectorXd moments = -model.integrate(
       [&](const FieldValues &f, const Eigen::VectorXd &r, const Eigen::VectorXd &z) -> Eigen::MatrixXd {
         Eigen::MatrixXd g(r.size(), n_moments);
         for (Eigen::Index q = 0; q < r.size(); ++q)
@@ -259,19 +274,17 @@ namespace rfm
           }
         return g;
       });
-    // 2. Work of the prescribed tractions on V_k (only sigma_nn n_r on radial sides works).
-    const BoundaryQuadrature &bq = space.boundary_quadrature();
-    const auto &parts = space.structures().section().parts();
-    for (Eigen::Index q = 0; q < bq.weights.size(); ++q)
-      {
-        const BoundaryPart &part = parts[bq.part[q]];
-        if (part.condition != Condition::traction || bq.n_r[q] == 0.0)
-          continue;
-        chebyshev_u(bq.z[q] / c, u, du);
-        const double psi = (bq.r[q] - r1) / (r2 - r1);
-        for (int k = 0; k < n_moments; ++k)
-          moments[k] += bq.weights[q] * part.normal_stress * bq.n_r[q] * u[2 * k] * psi;
-      }
+    // 2. Work of the prescribed tractions on V_k.
+    moments += model.traction_work([&](const Eigen::VectorXd &r, const Eigen::VectorXd &z) {
+      Eigen::MatrixXd v = Eigen::MatrixXd::Zero(r.size(), 2 * n_moments);
+      for (Eigen::Index q = 0; q < r.size(); ++q)
+        {
+          chebyshev_u(z[q] / c, u, du);
+          for (int k = 0; k < n_moments; ++k)
+            v(q, 2 * k) = u[2 * k] * (r[q] - r1) / (r2 - r1);
+        }
+      return v;
+    });
     // 3. p(z) from the orthogonal expansion.
     std::vector<std::pair<double, double>> out;
     for (int i = 0; i < n; ++i)
@@ -362,22 +375,25 @@ namespace rfm
     return out;
   }
 
-  ContactIterate check_contact(const Problem &problem, const RfmModel &model,
+  ContactIterate check_contact(const Problem &problem, const OutlineModel &model,
                                const ContactOptions &options)
   {
     const double a = problem.geometry.half_length(), r2 = problem.geometry.outer_radius;
-    const double c = *model.half_width();
+    const double c = zone_half_width(model);
     ContactIterate it;
     it.half_width = c;
-    const ContactForce force = model.contact_force();
+    const OutlineModel::DieForce force = model.die_force("outer");
     it.force = force.domain;
     it.force_trace = force.trace;
-    const Functionals phi = model.solution().functionals();
+    const Functionals phi = model.functionals();
     it.lagrange = phi.lagrange, it.castigliano = phi.castigliano, it.reissner = phi.reissner;
     it.assembly_s = model.assembly_seconds(), it.solve_s = model.solve_seconds();
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    it.edge_intensity_coefficient = c < a ? model.edge_intensity() : nan;
-    const EdgeEnrichment *e = model.space().enrichment();
+    const EdgeEnrichment *e = model.n_zone_edges() > 0 ? &model.zone_edge_enrichment(0) : nullptr;
+    it.edge_intensity_coefficient =
+      c < a && e && e->singular_column() >= 0
+        ? std::sqrt(2.0 * M_PI) * model.edge_column_coefficients(0, e->singular_column())[0]
+        : nan;
     const bool unloaded_free_part =
       !problem.loading || problem.loading->outer_pressure == 0.0;
     it.edge_intensity_reciprocal_work =
@@ -412,10 +428,9 @@ namespace rfm
     // decides conditions 1.2 and 1.3 there, is that amplitude's.
     if (e && std::isfinite(it.edge_intensity) && e->singular_column() >= 0)
       {
-        const Eigen::Index j = e->singular_column(), n_e = e->n_columns();
+        const Eigen::Index j = e->singular_column();
         const double a_1 = it.edge_intensity / std::sqrt(2.0 * M_PI);
-        const Eigen::VectorXd &q_s = model.solution().stress_coefficients(),
-                              &q_u = model.solution().displacement_coefficients();
+        const auto [q_s, q_u] = model.edge_column_coefficients(0, j);
         // Only the points in the columns' support |z - c| < rho_0 (z is sorted).
         const double rho_0 = e->cutoff_radius();
         const auto first = std::lower_bound(zs.begin(), zs.end(), c - rho_0) - zs.begin();
@@ -424,10 +439,8 @@ namespace rfm
           {
             const Eigen::Index n_near = last - first;
             const EdgeColumns cols = e->evaluate(r.segment(first, n_near), z.segment(first, n_near));
-            f.sigma.col(rr).segment(first, n_near) +=
-              (a_1 - q_s[q_s.size() - n_e + j]) * cols.stress[rr].col(j);
-            f.u.col(0).segment(first, n_near) +=
-              (a_1 - q_u[q_u.size() - n_e + j]) * cols.u[0].col(j);
+            f.sigma.col(rr).segment(first, n_near) += (a_1 - q_s) * cols.stress[rr].col(j);
+            f.u.col(0).segment(first, n_near) += (a_1 - q_u) * cols.u[0].col(j);
           }
       }
 
@@ -495,7 +508,7 @@ namespace rfm
       // Solves at c; returns false (and sets the message) on a numerical failure.
       bool solve(const double c, ContactIterate &it, const char *phase)
       {
-        auto model = std::make_unique<RfmModel>(problem, discretization, c);
+        auto model = solve_cylinder_zone(problem, discretization, c);
         if (!model->ok())
           {
             std::ostringstream msg;

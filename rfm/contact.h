@@ -40,12 +40,18 @@
 //              on P(c), then conditions 1.2 and 1.3 checked at the maximizer. P(c) is flat
 //              at its maximum, so c is located less sharply than by `iterate`.
 //
-// Contact force P (full 360 degrees, N): `force` is the domain integral
-// -2 pi int s . e(v) r dr dz with v = ((r - R1)/(R2 - R1), 0) (energetically consistent;
-// DESIGN.md section 4.3); `force_trace` is eq. 4.6, -2 pi R2 int sigma_rr(R2, z) dz.
+// Contact force P (full 360 degrees, N): the die's force, OutlineModel::die_force on part
+// `outer`: `force` is the domain integral -2 pi [int s . e(v) r dr dz - int_St t . v r ds]
+// with v = ((r - R1)/(R2 - R1), 0) (energetically consistent; DESIGN.md section 4.3);
+// `force_trace` is eq. 4.6, -2 pi R2 int (sigma_rr(R2, z) + p_out) dz over the outer side.
+// (Up to issue 23 both counted an outer pressure on the free part in P too.)
+//
+// Every solve is the outline model (outline_model.h) of the problem's body (axisym::
+// legacy_body: the half section, mirrored) with the zone [0, c] on the part `outer`.
 #pragma once
 
 #include "rfm/model.h"
+#include "rfm/outline_model.h"
 
 #include <functional>
 #include <memory>
@@ -91,7 +97,7 @@ namespace rfm
     /// on the half disc of radius interaction_radius(c)); NaN without the edge modes or at
     /// c = a.
     double edge_intensity = 0.0;
-    /// K from the n = 1 coefficient of the stress space (RfmModel::edge_intensity): a
+    /// K from the n = 1 coefficient of the stress space (sqrt(2 pi) times it): a
     /// pointwise quantity into which the unresolved edge terms leak (its root lies 0.4-0.8 %
     /// above the FEM's c at p = 8-16, against 0.04-0.08 % for the interaction integral).
     double edge_intensity_coefficient = 0.0;
@@ -121,7 +127,7 @@ namespace rfm
     std::optional<std::pair<double, double>> half_width_range;
     /// edge-intensity: the root of K(c) [m] (c itself is the stationary point of P next to it)
     std::optional<double> edge_intensity_root;
-    std::unique_ptr<RfmModel> model;     ///< the model at the accepted c
+    std::unique_ptr<OutlineModel> model; ///< the model at the accepted c (zone [0, c] on `outer`)
   };
 
   /// Solves at c and checks the conditions (precondition: problem.die set, 0 < c <= a).
@@ -137,8 +143,15 @@ namespace rfm
   /// field, and the traces' sign at the edge is that amplitude's). Measured at p = 8, nu =
   /// 0.3: `iterate` then finds c 0.14 % from the FEM's (0.80 % on the raw traces), and
   /// both conditions hold at the default method's c (both were violated on the raw traces).
-  ContactIterate check_contact(const axisym::Problem &problem, const RfmModel &model,
+  ContactIterate check_contact(const axisym::Problem &problem, const OutlineModel &model,
                                const ContactOptions &options);
+  /// The hollow cylinder's bilateral solve at c: the outline model of the problem's body with
+  /// the zone [0, c] on the part `outer` (the legacy die's part).
+  std::unique_ptr<OutlineModel> solve_cylinder_zone(const axisym::Problem &problem,
+                                                    const DiscretizationOptions &discretization,
+                                                    double c, const SolverOptions &solver = {});
+  /// The zone's half-width c of such a solve (its first zone's end).
+  double zone_half_width(const OutlineModel &model);
 
   /// One iterate as JSON (result files and drivers): c [m], c/a, P and P trace [N], the
   /// functionals [J/rad], the violations (absolute and relative to the peak pressure and
@@ -160,7 +173,7 @@ namespace rfm
 
   /// Contact pressure p(z) = -sigma_rr(R2, z) for z in [0, c] at n points (the trace of
   /// the stress field, with the edge modes).
-  std::vector<std::pair<double, double>> contact_pressure(const RfmModel &model, double c, int n);
+  std::vector<std::pair<double, double>> contact_pressure(const OutlineModel &model, double c, int n);
 
   /// Edge intensity from a reciprocal-work (Betti) integral with the n = -1 edge mode
   /// (u*, s*), independent of the n = 1 coefficient: on the half circle rho = rho_1 about the
@@ -173,7 +186,7 @@ namespace rfm
   /// axisymmetric body the hoop terms make it approximate, to O(rho_1 / R2).
   /// Returns K = sqrt(2 pi) a_1 [Pa m^1/2]. Precondition: model.ok(), 0 < c < a, the free
   /// part unloaded, 0 < rho_1 < min(c, a - c, R2 - R1).
-  double edge_intensity_reciprocal_work(const RfmModel &model, const axisym::Problem &problem, double c,
+  double edge_intensity_reciprocal_work(const OutlineModel &model, const axisym::Problem &problem, double c,
                                         double rho_1);
 
   /// Edge intensity from the axisymmetric interaction integral (a domain form of Betti's
@@ -191,7 +204,7 @@ namespace rfm
   /// field error smoothly, and unlike the contour form it keeps the hoop terms.
   /// Returns K = sqrt(2 pi) a_1 [Pa m^1/2]. Precondition: model.ok(), 0 < c < a, no body
   /// loads, 0 < rho_1 < min(c, a - c, R2 - R1).
-  double edge_intensity_interaction(const RfmModel &model, const axisym::Problem &problem,
+  double edge_intensity_interaction(const OutlineModel &model, const axisym::Problem &problem,
                                     double c, double rho_1);
 
   /// The same integral for any field (u and sigma; the strain is not used), e.g. the FEM's
@@ -234,7 +247,7 @@ namespace rfm
   /// the true edge) the U_2k are orthogonal and b_k = 2 m_k / (pi R2 c). k = 0 gives the
   /// domain-integral force: P = 2 pi m_0. Returns (z, p) at n points of [0, c].
   /// Precondition: model.ok(), 0 < c < a, n_moments >= 1.
-  std::vector<std::pair<double, double>> consistent_contact_pressure(const RfmModel &model,
+  std::vector<std::pair<double, double>> consistent_contact_pressure(const OutlineModel &model,
                                                                      const axisym::Problem &problem,
                                                                      double c, int n, int n_moments);
   /// Moments used by default: 3 (the pressure is sqrt(1 - z^2/c^2) times a polynomial of

@@ -74,11 +74,14 @@ namespace rfm
 
   EdgeEnrichment::EdgeEnrichment(const EdgeFrame &frame, const double cutoff_radius,
                                  std::vector<int> modes, const Material &material,
-                                 const int multiplier_degree)
+                                 const int multiplier_degree, const double end_distance)
     : EdgeEnrichment(frame.r, frame.z, cutoff_radius, std::move(modes), material,
                      multiplier_degree)
   {
+    if (!(end_distance > 0.0))
+      throw std::invalid_argument("EdgeEnrichment: the clipping end must lie beyond the edge");
     frame_ = frame;
+    end_distance_ = end_distance;
   }
 
   EdgeEnrichment::EdgeEnrichment(const double r_edge, const double z_edge,
@@ -93,6 +96,7 @@ namespace rfm
     , material_(material)
     , multiplier_degree_(multiplier_degree)
     , end_z_(end_z)
+    , end_distance_(end_z - z_edge)
   {
     if (!(end_z > z_edge))
       throw std::invalid_argument("EdgeEnrichment: the clipping end must lie beyond the edge");
@@ -142,7 +146,9 @@ namespace rfm
         const double chi_z = rho > 0.0 ? chi.derivative * dz / rho : 0.0;
         const double xi = dz / cutoff_radius_, eta = dr / cutoff_radius_;
         // The stress columns' end factor (1 without clipping).
-        const double g = std::isfinite(end_z_) ? (end_z_ - z[k]) / (end_z_ - z_edge_) : 1.0;
+        const double g = std::isfinite(end_distance_)
+                           ? 1.0 + (dr * frame_.t[0] + dz * frame_.t[1]) / end_distance_
+                           : 1.0;
         xi_pow[0] = eta_pow[0] = 1.0;
         for (int i = 1; i <= d; ++i)
           {

@@ -118,16 +118,22 @@ namespace rfm
     EdgeEnrichment(double r_edge, double z_edge, double cutoff_radius, std::vector<int> modes,
                    const Material &material, int multiplier_degree = 0,
                    double end_z = std::numeric_limits<double>::infinity());
-    /// At an edge of any straight part (no clipping): the modes in `frame`.
+    /// At an edge of any straight part: the modes in `frame`. With a traction-free end at the
+    /// distance end_distance beyond the edge (across the part's line at a right angle, at x =
+    /// -end_distance; +inf: none) the support may cross it, clipped, and the stress columns
+    /// are multiplied by g = 1 + x / end_distance (x along frame.t), as above.
     EdgeEnrichment(const EdgeFrame &frame, double cutoff_radius, std::vector<int> modes,
-                   const Material &material, int multiplier_degree = 0);
+                   const Material &material, int multiplier_degree = 0,
+                   double end_distance = std::numeric_limits<double>::infinity());
     const EdgeFrame &frame() const { return frame_; }
 
     double r_edge() const { return r_edge_; }
     double z_edge() const { return z_edge_; }
     double cutoff_radius() const { return cutoff_radius_; }
-    /// The end where the support is clipped (+inf when it is not).
+    /// The end where the support is clipped (+inf when it is not): its z (the legacy form)
+    /// and its distance from the edge along -t.
     double end_z() const { return end_z_; }
+    double end_distance() const { return end_distance_; }
     const std::vector<int> &modes() const { return modes_; }
     int multiplier_degree() const { return multiplier_degree_; }
     /// Columns: for each mode (in the given order) every monomial xi^i eta^j, i + j <= d,
@@ -155,6 +161,6 @@ namespace rfm
     std::vector<int> modes_;
     Material material_;
     int multiplier_degree_;
-    double end_z_;
+    double end_z_, end_distance_;
   };
 } // namespace rfm

@@ -9,6 +9,8 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace rfm
 {
@@ -102,7 +104,8 @@ namespace rfm
   OutlineModel::OutlineModel(const axisym::Problem &problem, const DiscretizationOptions &options,
                              const SolverOptions &solver_options,
                              const std::vector<DieZone> &zones)
-    : material_(problem.material)
+    : zones_(zones)
+    , material_(problem.material)
     , loads_(problem.body_loads)
     , mirrored_(problem.body->mirrored)
     , structures_(*problem.body, (options.validate(), options.degree), zones)
@@ -145,7 +148,9 @@ namespace rfm
       Eigen::Index total = 0;
       for (const EdgeEnrichment &e : enrichments_)
         {
-          Quadrature2D q = half_disc_gauss(0.0, 0.0, e.cutoff_radius(), n_near, n_near);
+          // Clipped at a crossed end (edge_modes.h): beyond the edge is local z > 0.
+          Quadrature2D q = half_disc_gauss(0.0, 0.0, e.cutoff_radius(), n_near, n_near,
+                                           std::min(e.end_distance(), e.cutoff_radius()));
           for (Eigen::Index k = 0; k < q.weights.size(); ++k)
             {
               const auto x = e.frame().point(-q.z[k], -q.r[k]);
@@ -378,8 +383,8 @@ namespace rfm
           sys.p_s.segment(4 * n, n_b).noalias() += wxb[k].transpose() * residual.col(k);
       }
 
-    // The enrichment columns' products, on the near-edge rules (their support: no traction
-    // edge meets it, so the enrichment has no traction term in p_u).
+    // The enrichment columns' products, on the near-edge rules (their support); their traction
+    // term in p_u (a loaded free part beyond a zone) with the polynomial ones' below.
     if (n_e > 0)
       {
         const Quadrature2D &nq = near_;
@@ -420,13 +425,15 @@ namespace rfm
     const EdgeQuadrature &eq = edge_quadrature_;
     const BasisValues bb = basis_values(eq.r, eq.z);
     const OutlineDisplacementValues bd = structures_.displacement(eq.r, eq.z);
+    const EdgeColumns be = n_e > 0 ? edge_columns(eq.r, eq.z) : EdgeColumns{};
     for (int m = 0; m < 2; ++m)
       {
-        Eigen::VectorXd wt(eq.r.size());
-        for (Eigen::Index k = 0; k < wt.size(); ++k)
-          wt[k] = eq.weights[k] * bd.omega(k, m) *
-                  structures_.prescribed_traction(eq.edge[k], eq.r[k], eq.z[k])[m];
-        sys.p_u.segment(m * n, n).noalias() -= bb.value.transpose() * wt;
+        Eigen::VectorXd t(eq.r.size());
+        for (Eigen::Index k = 0; k < t.size(); ++k)
+          t[k] = eq.weights[k] * structures_.prescribed_traction(eq.edge[k], eq.r[k], eq.z[k])[m];
+        sys.p_u.segment(m * n, n).noalias() -= bb.value.transpose() * t.cwiseProduct(bd.omega.col(m));
+        if (n_e > 0)
+          sys.p_u.tail(n_e).noalias() -= be.u[m].transpose() * t;
       }
     return sys;
   }
@@ -545,16 +552,46 @@ namespace rfm
             if (!free)
               continue;
             const axisym::Point p = f.point_at(s_edge);
-            // The largest support that stays off every other edge, the zone's other end and
-            // the part's end beyond the edge.
-            double room = std::min(zone.s_hi - zone.s_lo, into > 0 ? s_edge - f.s_min : f.s_max - s_edge);
+            // The room around the end: the largest half disc that stays off every other edge,
+            // the zone's other end and the part's end beyond the edge (the interaction
+            // integral's domain).
+            const double beyond = into > 0 ? s_edge - f.s_min : f.s_max - s_edge;
+            double room = std::min(zone.s_hi - zone.s_lo, beyond);
             for (const axisym::OutlineEdge &e : problem.body->outline.edges())
               if (e.part != zone.part)
                 room = std::min(room, e.distance_to(p));
+            // The enrichment's support may cross a traction-free straight end that meets the
+            // part at a right angle beyond the edge, clipped there (edge_modes.h; the legacy
+            // cylinder's end z = a): then the part beyond and that end do not limit it, so
+            // that the space changes smoothly with the zone (a support limited by the part
+            // beyond put a kink into P(c) and K(c) where that limit takes over).
+            const axisym::Point far = f.point_at(into > 0 ? f.s_min : f.s_max);
+            const axisym::OutlineEdge *end_edge = nullptr;
+            for (const axisym::OutlineEdge &e : problem.body->outline.edges())
+              {
+                if (e.part == zone.part || e.kind != axisym::OutlineEdge::Kind::line ||
+                    problem.body->conditions.at(e.part).kind !=
+                      axisym::PartCondition::Kind::traction_free)
+                  continue;
+                const bool at_far = std::hypot(e.start.r - far.r, e.start.z - far.z) < tol ||
+                                    std::hypot(e.end.r - far.r, e.end.z - far.z) < tol;
+                const axisym::Point t = e.tangent_at(0.5);
+                if (at_far && std::abs(t.r * f.tangent.r + t.z * f.tangent.z) < 1e-12)
+                  end_edge = &e;
+              }
+            double support_room = room;
+            if (end_edge)
+              {
+                support_room = zone.s_hi - zone.s_lo;
+                for (const axisym::OutlineEdge &e : problem.body->outline.edges())
+                  if (e.part != zone.part && &e != end_edge)
+                    support_room = std::min(support_room, e.distance_to(p));
+              }
             EdgeFrame frame{p.r, p.z, {{into * f.tangent.r, into * f.tangent.z}},
                             {{-f.normal.r, -f.normal.z}}};
-            enrichments_.emplace_back(frame, options.edge_cutoff * room, modes, material_,
-                                      options.edge_mode_degree);
+            enrichments_.emplace_back(frame, options.edge_cutoff * support_room, modes, material_,
+                                      options.edge_mode_degree,
+                                      end_edge ? beyond : std::numeric_limits<double>::infinity());
             edges_.push_back({zone, s_edge, into, room});
             // The zone's sub-edge that ends there: its traces integrate graded toward it.
             for (std::size_t e = 0; e < split.edges().size(); ++e)
@@ -572,11 +609,53 @@ namespace rfm
     return graded;
   }
 
+  std::array<double, 2> OutlineModel::edge_column_coefficients(const std::size_t i,
+                                                                const Eigen::Index j) const
+  {
+    Eigen::Index offset = 0; // the columns of the enrichments before i
+    for (std::size_t k = 0; k < i; ++k)
+      offset += enrichments_.at(k).n_columns();
+    if (j < 0 || j >= enrichments_.at(i).n_columns())
+      throw std::out_of_range("OutlineModel::edge_column_coefficients: no column " + std::to_string(j));
+    const Eigen::Index n_e = n_edge_columns();
+    return {q_s_[q_s_.size() - n_e + offset + j], q_u_[q_u_.size() - n_e + offset + j]};
+  }
+
+  Eigen::VectorXd OutlineModel::integrate(const Integrand &g) const
+  {
+    auto weighted = [&](const Quadrature2D &q, const bool with_enrichment) {
+      const Eigen::MatrixXd values = g(evaluate_parts(q.r, q.z, with_enrichment), q.r, q.z);
+      return Eigen::VectorXd(values.transpose() * q.weights.cwiseProduct(q.r));
+    };
+    Eigen::VectorXd sum = weighted(quadrature_, false);
+    if (n_edge_columns() > 0)
+      sum += weighted(near_, true) - weighted(near_, false);
+    return sum;
+  }
+
+  Eigen::VectorXd OutlineModel::traction_work(
+    const std::function<Eigen::MatrixXd(const Eigen::VectorXd &, const Eigen::VectorXd &)> &v) const
+  {
+    const EdgeQuadrature &eq = edge_quadrature_;
+    const Eigen::MatrixXd values = v(eq.r, eq.z);
+    Eigen::VectorXd work = Eigen::VectorXd::Zero(values.cols() / 2);
+    for (Eigen::Index k = 0; k < eq.r.size(); ++k)
+      {
+        const auto t = structures_.prescribed_traction(eq.edge[k], eq.r[k], eq.z[k]);
+        if (t[0] == 0.0 && t[1] == 0.0)
+          continue;
+        for (Eigen::Index m = 0; m < work.size(); ++m)
+          work[m] += eq.weights[k] * (t[0] * values(k, 2 * m) + t[1] * values(k, 2 * m + 1));
+      }
+    return work;
+  }
+
   double OutlineModel::edge_intensity(const std::size_t i) const
   {
     const ZoneEdge &edge = edges_.at(i);
     const EdgeEnrichment &en = enrichments_.at(i);
-    const axisym::DieProfile profile = structures_.body().conditions.at(edge.zone.part).die.profile;
+    const axisym::PartCondition &part = structures_.body().conditions.at(edge.zone.part);
+    const axisym::DieProfile profile = part.die.profile;
     return edge_intensity_interaction(
       [this](const Eigen::Ref<const Eigen::VectorXd> &r, const Eigen::Ref<const Eigen::VectorXd> &z) {
         return evaluate(r, z);
@@ -584,7 +663,8 @@ namespace rfm
       en.frame(), material_, 0.9 * edge.room,
       [&](double x) {
         return profile.gap(std::abs(edge.s + edge.into * x)) - edge.zone.indentation;
-      });
+      },
+      part.pressure);
   }
 
   Functionals OutlineModel::functionals() const
@@ -706,9 +786,10 @@ namespace rfm
         const double d = -((eq.r[k] - on_line.r) * n.r + (eq.z[k] - on_line.z) * n.z);
         const auto t = structures_.prescribed_traction(eq.edge[k], eq.r[k], eq.z[k]);
         traction_work += eq.weights[k] * (1.0 - d / depth) * (t[0] * n.r + t[1] * n.z);
+        // The die's share of sigma_nn: less the prescribed normal traction (a loaded free part).
         if (edge_part == part || edge_part == part + "#free")
           trace += eq.weights[k] * (fb.sigma(k, rr) * n.r * n.r + 2 * fb.sigma(k, rz) * n.r * n.z +
-                                    fb.sigma(k, zz) * n.z * n.z);
+                                    fb.sigma(k, zz) * n.z * n.z - (t[0] * n.r + t[1] * n.z));
       }
     return {-2.0 * M_PI * (volume - traction_work), -2.0 * M_PI * trace};
   }

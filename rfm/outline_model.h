@@ -53,6 +53,7 @@
 #include "rfm/solution.h"
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <variant>
 
@@ -99,7 +100,10 @@ namespace rfm
     /// with v = psi n (n the part's outward normal, psi = 1 - d / D, d the distance from the
     /// part's line into the body and D its largest value over the section, so that v vanishes
     /// at the far side; exact for the exact solution when v . n = 0 on every support), and as
-    /// the trace -2 pi int sigma_nn r ds over the part. Precondition: ok(), a zone on `part`.
+    /// the trace -2 pi int (sigma_nn - t* . n) r ds over the part (t* the prescribed traction
+    /// of a loaded free part beyond the zone). The die's force alone: the hollow cylinder's
+    /// form (contact.h) counted the outer pressure on the free part in P as well (the same
+    /// when it is 0, as in every problem of the paper). Precondition: ok(), a zone on `part`.
     struct DieForce
     {
       double domain = 0.0, trace = 0.0;
@@ -120,6 +124,27 @@ namespace rfm
     /// integral (contact.h) on the half disc of radius 0.9 times the end's room. K < 0: the
     /// zone is too short there (compressive singular pressure), K > 0: too long.
     double edge_intensity(std::size_t i) const;
+    /// The contact zones of the solve, as given.
+    const std::vector<DieZone> &zones() const { return zones_; }
+    /// The enrichment at zone end i (its frame, cutoff and columns).
+    const EdgeEnrichment &zone_edge_enrichment(std::size_t i) const { return enrichments_.at(i); }
+    /// The coefficients (in q_s, in q_u) of column j of the enrichment at zone end i.
+    std::array<double, 2> edge_column_coefficients(std::size_t i, Eigen::Index j) const;
+
+    /// int g(f, r, z) r dr dz over the section (per radian; twice for a mirrored body) on the
+    /// assembly's rules: g of the polynomial part on the section's rule plus g(all) -
+    /// g(polynomial part) on the near-edge rules, so exact in the assembly's sense for g
+    /// linear in the fields. g returns n_points x m (m integrands at once); the result has m
+    /// entries. Precondition: ok().
+    using Integrand = std::function<Eigen::MatrixXd(const FieldValues &, const Eigen::VectorXd &,
+                                                    const Eigen::VectorXd &)>;
+    Eigen::VectorXd integrate(const Integrand &g) const;
+    /// int_{S_t} t . V_k r ds over the traction edges (per radian; twice for a mirrored body)
+    /// for m test fields: v(r, z) returns n_points x 2 m, the r and z components of field k
+    /// in columns 2 k and 2 k + 1; the result has m entries.
+    Eigen::VectorXd traction_work(
+      const std::function<Eigen::MatrixXd(const Eigen::VectorXd &, const Eigen::VectorXd &)> &v) const;
+
     /// The split body the structures and the rules work on (OutlineStructures::body()).
     const axisym::Body &body() const { return structures_.body(); }
 
@@ -142,6 +167,7 @@ namespace rfm
                                       const std::vector<DieZone> &zones,
                                       const DiscretizationOptions &options);
 
+    std::vector<DieZone> zones_;
     Material material_;
     axisym::BodyLoads loads_; ///< body force in p_u and W, thermal strain in p_s and the functionals
     bool mirrored_ = false;   ///< integrals twice (the section and its image in z = 0)

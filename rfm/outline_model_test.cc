@@ -334,8 +334,11 @@ namespace rfm
         const RfmModel legacy(problem, o, c);
         ASSERT_TRUE(legacy.ok()) << legacy.summary().message;
         const double p_legacy = legacy.contact_force().domain;
-        const double k_legacy =
-          edge_intensity_interaction(legacy, problem, c, interaction_radius(problem.geometry, c));
+        const double k_legacy = edge_intensity_interaction(
+          [&](const Eigen::Ref<const Eigen::VectorXd> &r, const Eigen::Ref<const Eigen::VectorXd> &z) {
+            return legacy.evaluate(r, z);
+          },
+          problem, c, interaction_radius(problem.geometry, c));
         EXPECT_NEAR(m.die_force("outer").domain, p_legacy, 1e-4 * p_legacy) << c;
         EXPECT_NEAR(m.edge_intensity(0), k_legacy, 1e-2 * std::abs(k_legacy)) << c;
         EXPECT_GT(m.edge_intensity(0) * k_legacy, 0.0) << c; // the same sign: which way c moves

@@ -219,7 +219,8 @@ namespace rfm
   namespace
   {
     // The body with every die part's edges split at its zone's ends: the zone keeps the part's
-    // name, the free sub-edges go to part "<part>#free" (traction free).
+    // name, the free sub-edges go to part "<part>#free" (traction free, or under the die
+    // part's pressure).
     axisym::Body split_at_zones(const axisym::Body &body, const std::vector<DieZone> &zones)
     {
       if (zones.empty())
@@ -238,7 +239,12 @@ namespace rfm
             }
           const axisym::DieFrame f = axisym::die_frame(body, e.part);
           const std::string free_part = e.part + "#free";
-          conditions[free_part] = PartCondition{};
+          // Traction free, or the die part's pressure (the legacy outer pressure) beyond the zone.
+          PartCondition beyond;
+          if (body.conditions.at(e.part).pressure != 0.0)
+            beyond.kind = PartCondition::Kind::pressure,
+            beyond.pressure = body.conditions.at(e.part).pressure;
+          conditions[free_part] = beyond;
           // Cut points along the edge (t in [0, 1]) at the zone's ends.
           const double s0 = f.coordinate(e.start), s1 = f.coordinate(e.end);
           std::vector<double> cuts{0.0, 1.0};

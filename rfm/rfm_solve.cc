@@ -80,13 +80,13 @@ namespace
     for (int k = 1; k <= n; ++k)
       {
         const double c = a * k / n;
-        const rfm::RfmModel m(problem, problem.rfm, c);
-        if (!m.ok())
+        const std::unique_ptr<rfm::OutlineModel> m = rfm::solve_cylinder_zone(problem, problem.rfm, c);
+        if (!m->ok())
           continue;
-        const rfm::ContactForce f = m.contact_force();
+        const rfm::OutlineModel::DieForce f = m->die_force("outer");
         const double k_edge =
-          c < a && m.space().enrichment()
-            ? rfm::edge_intensity_interaction(m, problem, c, rfm::interaction_radius(problem.geometry, c))
+          c < a && m->n_zone_edges() > 0
+            ? rfm::edge_intensity_interaction(*m, problem, c, rfm::interaction_radius(problem.geometry, c))
             : std::numeric_limits<double>::quiet_NaN();
         out.push_back({{"half_width", c},
                        {"force", f.domain},
@@ -450,17 +450,17 @@ int main(int argc, char **argv)
 
       // 3. Solve: one linear solve, a degree sequence to a tolerance, or the contact search
       //    for a die problem.
-      std::unique_ptr<rfm::RfmModel> model_ptr;
+      std::unique_ptr<rfm::OutlineModel> model_ptr;
       rfm::ContactResult contact;
       nlohmann::json result;
       result["solver"] = "rfm";
       result["problem"] = problem.source;
-      std::optional<rfm::ToleranceSolve> to_tolerance;
+      std::optional<rfm::DegreeSequence<rfm::OutlineModel>> to_tolerance;
       if (target_indicator)
         {
           fmt::print(stderr, "rfm_solve: p = 2, 4, ... until the indicator < {:.1e} (up to p = {})\n",
                      *target_indicator, problem.rfm.max_degree);
-          to_tolerance = rfm::solve_to_tolerance(problem, problem.rfm, *target_indicator);
+          to_tolerance = rfm::solve_outline_to_tolerance(problem, problem.rfm, *target_indicator);
           model_ptr = std::move(to_tolerance->model);
           problem.rfm.degree = to_tolerance->steps.empty() ? 2 : to_tolerance->steps.back().degree;
           print_sequence(to_tolerance->steps);
@@ -477,10 +477,10 @@ int main(int argc, char **argv)
           model_ptr = std::move(contact.model);
         }
       else
-        model_ptr = std::make_unique<rfm::RfmModel>(problem, problem.rfm, std::nullopt);
+        model_ptr = std::make_unique<rfm::OutlineModel>(problem, problem.rfm);
 
       const auto n_basis = static_cast<long>((p + 1) * (p + 1));
-      const long n_edge = model_ptr ? static_cast<long>(model_ptr->space().n_edge_columns()) : 0;
+      const long n_edge = model_ptr ? static_cast<long>(model_ptr->n_edge_columns()) : 0;
       result["discretization"] = {
         {"degree", p},
         {"N", n_basis},
@@ -488,7 +488,7 @@ int main(int argc, char **argv)
         {"stress_unknowns", 4 * n_basis + n_edge},
         {"displacement_unknowns", 2 * n_basis + n_edge},
         {"edge_modes", n_edge},
-        {"edge_cutoff_radius", n_edge > 0 ? nlohmann::json(model_ptr->space().enrichment()->cutoff_radius())
+        {"edge_cutoff_radius", n_edge > 0 ? nlohmann::json(model_ptr->zone_edge_enrichment(0).cutoff_radius())
                                           : nlohmann::json(nullptr)},
         {"gauss_points_per_cell", p + problem.rfm.extra_gauss_points},
         {"n_graded_layers", problem.rfm.n_graded_layers},
@@ -510,7 +510,7 @@ int main(int argc, char **argv)
       if (model_ptr)
         {
           const rfm::SolveSummary &s = model_ptr->summary();
-          result["discretization"]["quadrature_points"] = model_ptr->space().quadrature().n_points();
+          result["discretization"]["quadrature_points"] = model_ptr->n_quadrature_points();
           result["diagnostics"] = {{"status", solved ? "ok" : "failed"},
                                    {"message", problem.die ? contact.message : s.message},
                                    {"rcond_stress_block", s.rcond_stress},
@@ -531,10 +531,10 @@ int main(int argc, char **argv)
           fmt::print(stderr, "rfm_solve: numerical failure: {}\n", msg);
           return 3;
         }
-      const rfm::RfmModel &model = *model_ptr;
+      const rfm::OutlineModel &model = *model_ptr;
 
       // 4. Post-processing.
-      const rfm::Functionals phi = model.solution().functionals();
+      const rfm::Functionals phi = model.functionals();
       result["functionals"] = {{"lagrange", phi.lagrange},
                                {"castigliano", phi.castigliano},
                                {"reissner", phi.reissner},
@@ -560,7 +560,10 @@ int main(int argc, char **argv)
           grid.r_min = problem.geometry.inner_radius, grid.r_max = problem.geometry.outer_radius;
           grid.z_min = 0.0, grid.z_max = problem.geometry.half_length();
           const std::string path = vtu_directory + "/rfm_solution.vtu";
-          axisym::write_text_atomically(path, rfm::fields_vtu(model, grid));
+          axisym::write_text_atomically(
+            path, rfm::fields_vtu([&](const Eigen::Ref<const Eigen::VectorXd> &r,
+                                      const Eigen::Ref<const Eigen::VectorXd> &z) { return model.evaluate(r, z); },
+                                  grid));
           fmt::print(stderr, "rfm_solve: wrote {}\n", path);
         }
       fmt::print(stderr, "rfm_solve: Phi_L = {:.6e}, Phi_C = {:.6e}, Phi_R = {:.6e} J/rad; "

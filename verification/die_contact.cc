@@ -55,7 +55,7 @@ namespace
   // The paper prints P to 0.1 kN: in N exactly (128.7 * 1e3 is not 128700 in binary).
   double paper_force_newton(const double force_kn) { return std::round(10.0 * force_kn) * 100.0; }
 
-  nlohmann::json pressure_json(const rfm::RfmModel &model, double c)
+  nlohmann::json pressure_json(const rfm::OutlineModel &model, double c)
   {
     nlohmann::json z = nlohmann::json::array(), p = nlohmann::json::array();
     for (const auto &[zz, pp] : rfm::contact_pressure(model, c, 121))
@@ -200,8 +200,8 @@ nlohmann::json run(const verification::DriverContext &context)
             if (it.phase == "iteration" || it.phase == "final")
               {
                 axisym::Problem fixed = pr;
-                const rfm::RfmModel m(fixed, pr.rfm, it.half_width);
-                nlohmann::json pj = pressure_json(m, it.half_width);
+                const auto m = rfm::solve_cylinder_zone(fixed, pr.rfm, it.half_width);
+                nlohmann::json pj = pressure_json(*m, it.half_width);
                 pj["phase"] = it.phase;
                 results["pressure_per_iteration"].push_back(pj);
               }
@@ -292,8 +292,8 @@ nlohmann::json run(const verification::DriverContext &context)
     for (int k = 0; k <= n; ++k)
       {
         const double c = a * (0.3 + 0.7 * k / n);
-        const rfm::RfmModel m(pr, pr.rfm, c);
-        const rfm::ContactForce f = m.contact_force();
+        const auto m = rfm::solve_cylinder_zone(pr, pr.rfm, c);
+        const rfm::OutlineModel::DieForce f = m->die_force("outer");
         results["force_curve"].push_back(
           {{"half_width_ratio", c / a}, {"force", f.domain}, {"force_trace", f.trace}});
       }

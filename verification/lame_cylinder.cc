@@ -16,7 +16,7 @@
 //
 // Sample run:
 //   build/bin/lame_cylinder --mode quick --output-dir build/verification
-#include "rfm/model.h"
+#include "rfm/outline_model.h"
 #include "problem/problem.h"
 #include "problem/json_io.h"
 #include "verification/lame_errors.h"
@@ -35,7 +35,7 @@ namespace
     std::string name, file;
   };
 
-  nlohmann::json profile(const rfm::RfmModel &model, double z, int n, double r1, double r2,
+  nlohmann::json profile(const rfm::OutlineModel &model, double z, int n, double r1, double r2,
                          const verification::LameCylinder &exact)
   {
     const Eigen::VectorXd r = Eigen::VectorXd::LinSpaced(n, r1, r2);
@@ -104,12 +104,12 @@ nlohmann::json run(const verification::DriverContext &context)
         {
           rfm::DiscretizationOptions options = problem.rfm;
           options.degree = p;
-          const rfm::RfmModel model(problem, options, std::nullopt);
+          const rfm::OutlineModel model(problem, options);
           if (!model.ok())
             throw verification::NumericalFailure("case " + cf.name + ", p = " +
                                                  std::to_string(p) + ": " +
                                                  model.summary().message);
-          const rfm::Functionals phi = model.solution().functionals();
+          const rfm::Functionals phi = model.functionals();
           const auto [l2, mx] = verification::stress_errors(model, exact);
           const rfm::SolveSummary &s = model.summary();
           const int n = (p + 1) * (p + 1);

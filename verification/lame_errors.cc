@@ -13,7 +13,7 @@ namespace verification
             p.loading->outer_pressure};
   }
 
-  std::pair<double, double> stress_errors(const rfm::RfmModel &model,
+  std::pair<double, double> stress_errors(const rfm::OutlineModel &model,
                                           const LameCylinder &exact)
   {
     const double a = 0.5 * exact.length;

@@ -2,7 +2,7 @@
 // a problem file, and the relative stress errors of an RFM model against it.
 #pragma once
 
-#include "rfm/model.h"
+#include "rfm/outline_model.h"
 #include "problem/problem.h"
 #include "verification/lame_exact.h"
 
@@ -17,5 +17,5 @@ namespace verification
   /// on a 4 x 4-cell, 24-point Gauss rule independent of the assembly rule, and the max
   /// component error on a 41 x 41 grid including the boundary, relative to the max
   /// exact stress component.
-  std::pair<double, double> stress_errors(const rfm::RfmModel &model, const LameCylinder &exact);
+  std::pair<double, double> stress_errors(const rfm::OutlineModel &model, const LameCylinder &exact);
 } // namespace verification

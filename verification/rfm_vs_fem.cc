@@ -70,7 +70,7 @@ nlohmann::json run(const verification::DriverContext &context)
     o.refinements = 0;
     o.progress = false;
     (void)fem::solve(lame, o);
-    (void)rfm::RfmModel(lame, lame.rfm, std::nullopt, rfm::SolverOptions{});
+    (void)rfm::OutlineModel(lame, lame.rfm, rfm::SolverOptions{});
   }
   for (const int degree : {1, 2})
     for (int level = 0; level <= (full ? 5 : 4); ++level)
@@ -119,7 +119,7 @@ nlohmann::json run(const verification::DriverContext &context)
       rfm::SolverOptions so;
       so.compute_diagnostics = false; // time the solve itself, as a user would run it
       const auto t0 = std::chrono::steady_clock::now();
-      const rfm::RfmModel m(lame, o, std::nullopt, so);
+      const rfm::OutlineModel m(lame, o, so);
       const double t = seconds_since(t0);
       const auto [err, err_max] = verification::stress_errors(m, exact);
       fmt::print("RFM p={:>2} N={:>3} unknowns={:>5} L2 err={:.3e} max err={:.3e} time={:.4f} s\n",
