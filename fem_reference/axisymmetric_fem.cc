@@ -1,14 +1,14 @@
 // The FEM reference (axisymmetric_fem.h): its options, fem::solve, and the passes and the
 // active-set loop that drive the solver's parts (axisymmetric_solver.h lists the units).
 // The story follows deal.II step-8 (elasticity) and step-41 (active sets):
-//   1. mesh of the half section (gmsh or structured) with boundary ids,
-//   2. degrees of freedom and constraints (symmetry plane, bilateral die zone),
-//   3. assembly of the r-weighted axisymmetric stiffness and the pressures,
+//   1. the gmsh mesh of the section's outline (the hollow-cylinder form: its half section),
+//      manifolds on the arcs, refinement toward the dies,
+//   2. degrees of freedom and constraints per part (symmetry, displacement, axis, a
+//      prescribed die zone),
+//   3. assembly of the r-weighted axisymmetric stiffness, pressures, tractions, body loads,
 //   4. linear solve (UMFPACK or CG + SSOR),
 //   5. unilateral contact: penalty on the active set at the face quadrature points,
-//   6. post-processing: functionals, contact force three ways, half-width, samples, VTU.
-// Outline problems (DESIGN.md 7.1) share 2-4 and 6; their mesh (1o) carries manifolds on the
-// arcs and their conditions are per part (2o, 3o, 6o).
+//   6. post-processing: functionals, contact forces, zones, samples, reactions, VTU.
 #include "fem_reference/axisymmetric_fem.h"
 
 #include "fem_reference/axisymmetric_solver.h"
@@ -39,30 +39,28 @@ namespace fem
       fail("max_active_set_iterations", std::to_string(max_active_set_iterations), "must be >= 1");
     if (!(linear_tolerance > 0 && linear_tolerance < 1e-2))
       fail("linear_tolerance", std::to_string(linear_tolerance), "must be in (0, 1e-2)");
-    if (base_cells_r < 1 || base_cells_z < 2)
-      fail("base_cells_r/base_cells_z", std::to_string(base_cells_r) + "/" +
-                                          std::to_string(base_cells_z),
-           "need base_cells_r >= 1, base_cells_z >= 2");
-    if (!(radial_grading >= 1 && axial_grading >= 1))
-      fail("radial_grading/axial_grading", std::to_string(radial_grading), "must be >= 1");
     if (!(outline_cells_on_shortest_edge >= 1 && outline_cells_on_shortest_edge <= 64))
       fail("outline_cells_on_shortest_edge", std::to_string(outline_cells_on_shortest_edge),
            "must be in [1, 64]");
   }
 
-  void check_supported(const axisym::Problem &problem, const FemOptions &options)
+  void check_supported(const axisym::Problem &problem, const FemOptions &)
   {
-    if (problem.legacy_cylinder)
-      return;
     if (!problem.body)
-      throw axisym::InputError("problem: an outline problem without its body (parser bug?)");
-    if (!problem.body->die_parts().empty() && problem.contact.method == "fixed")
-      throw axisym::InputError("contact.method = \"fixed\": a prescribed zone is only for the "
-                               "hollow-cylinder form's die so far; a die on an outline part is "
-                               "solved for its zone (penalty active set)");
-    if (options.mesh == FemOptions::MeshGenerator::structured)
-      throw axisym::InputError("FEM option mesh (--mesh) = structured: only for the "
-                               "hollow-cylinder form (an outline section is meshed by gmsh)");
+      throw axisym::InputError("problem: no body (parser bug?)");
+    if (problem.contact.method == "fixed")
+      for (const std::string &part : problem.body->die_parts())
+        if (problem.body->conditions.at(part).die.force)
+          throw axisym::InputError("boundary." + part + ".die.force with contact.method = "
+                                   "\"fixed\": a prescribed zone needs the die's indentation "
+                                   "(force control is for the unilateral problem)");
+    // The hollow-cylinder form's outer side is the die's part: it carries no pressure too.
+    if (problem.legacy_cylinder && problem.die && problem.loading &&
+        problem.loading->outer_pressure != 0)
+      throw axisym::InputError("loading.outer_pressure = " +
+                               std::to_string(problem.loading->outer_pressure) +
+                               " with a die: the outer side r = R2 is the die's part, which "
+                               "carries no pressure besides (set outer_pressure to 0)");
   }
 
   FemOptions options_from_problem(const axisym::Problem &problem)
@@ -81,17 +79,14 @@ namespace fem
       FemResult result;
       result.degree = options_.degree;
       result.refinements = options_.refinements;
-      result.mesh_generator =
-        options_.mesh == FemOptions::MeshGenerator::gmsh ? "gmsh" : "structured";
-      result.outline = outline_;
-      if (problem_.die || !dies_.empty())
+      result.mesh_generator = "gmsh";
+      if (!dies_.empty())
         {
           result.contact.emplace();
-          result.contact->part = outline_ ? dies_.front().part : "outer";
+          result.contact->part = dies_.front().part;
           result.contact->method = problem_.contact.method;
           result.contact->unilateral = mode_ == Mode::unilateral;
-          if (problem_.die)
-            result.contact->indentation = problem_.die->indentation;
+          result.contact->indentation = dies_.front().delta;
         }
 
       auto finish = [&](const Evaluation &ev) {
@@ -139,15 +134,14 @@ namespace fem
         result.total_seconds = seconds_since(t_start);
       };
 
-      // Unilateral: pass 0 on a mesh without a split; each further pass remeshes with the
-      // outer line split (and graded) at the half-width found by the previous pass.
-      const double a = problem_.geometry.half_length();
+      // Unilateral: pass 0 on the mesh refined around the estimated zones; each further pass
+      // remeshes, refined around the zones the previous pass found.
       const int n_passes = mode_ == Mode::unilateral ? 1 + options_.edge_fitting_passes : 1;
       try
         {
           for (int pass = 0; pass < n_passes; ++pass)
             {
-              if (pass > 0 && outline_)
+              if (pass > 0)
                 {
                   // Refine around the zones found (a lost contact keeps the estimate).
                   for (std::size_t d = 0; d < dies_.size(); ++d)
@@ -162,15 +156,6 @@ namespace fem
                       if (hi > lo)
                         dies_[d].zone_lo = lo, dies_[d].zone_hi = hi;
                     }
-                  dof_handler_.clear();
-                  triangulation_.clear();
-                }
-              else if (pass > 0)
-                {
-                  const double c = result.contact->half_width;
-                  if (!(c > 1e-3 * a && c < a * (1 - 1e-3)))
-                    break; // no interior edge to fit
-                  split_ = c;
                   dof_handler_.clear();
                   triangulation_.clear();
                 }
@@ -189,20 +174,17 @@ namespace fem
               result.base_mesh_flat_corners = base_mesh_flat_corners_;
               std::ostringstream line;
               line.precision(6);
-              if (outline_)
-                line << "outline section: base mesh " << n_base_cells_ << " cells (h0 = "
-                     << base_mesh_size_ << " m" << (base_mesh_subdivided_ ? ", subdivided" : "")
-                     << "), ";
-              if (outline_ && base_mesh_flat_corners_ > 0)
+              line << (body_.mirrored ? "half section (mirrored)" : "outline section")
+                   << ": base mesh " << n_base_cells_ << " cells (h0 = " << base_mesh_size_
+                   << " m" << (base_mesh_subdivided_ ? ", subdivided" : "") << "), ";
+              if (base_mesh_flat_corners_ > 0)
                 progress("warning: " + std::to_string(base_mesh_flat_corners_) +
                          " base cell(s) with two faces on one outline edge (a 180 degree "
                          "corner): the stress next to that boundary vertex converges slowly");
               line << "pass " << pass << ", L = " << level_ << ", Q" << options_.degree << ": "
                    << result.n_cells << " cells, " << result.n_dofs << " dofs ("
-                   << result.mesh_generator << " mesh";
-              if (split_)
-                line << ", outer side split at z = " << *split_ << " = " << *split_ / a << " a";
-              progress(line.str() + ")");
+                   << result.mesh_generator << " mesh)";
+              progress(line.str());
               if (result.contact)
                 result.contact->h_min = h_min_;
 
@@ -227,7 +209,8 @@ namespace fem
             }
           if (result.success)
             result.samples = samples();
-          if (result.success && outline_)
+          // A mirrored section's mid-plane is no support of the body: no reactions.
+          if (result.success && !body_.mirrored)
             result.reactions = reactions();
         }
       catch (const std::exception &e)
@@ -247,32 +230,25 @@ namespace fem
     void AxisymmetricSolver::active_set_loop(FemResult &result, int pass, const Finish &finish)
     {
       ContactResult &contact = *result.contact;
-      // Start: all in contact (pass 0), or z < c of the previous pass (the split point).
-      // Outline dies: the zone the mesh was refined for, where the die has a surface.
+      // Start: the zone the mesh was refined for, where the die has a surface.
       std::vector<char> start(contact_faces_.size() * face_quadrature_.size(), 1);
-      if ((pass > 0 && split_) || outline_)
-        {
-          FEFaceValues<2> fv(mapping(), fe_, face_quadrature_, update_quadrature_points);
-          const unsigned int n_q = face_quadrature_.size();
-          for (std::size_t k = 0; k < contact_faces_.size(); ++k)
-            {
-              const ContactFace &face = contact_faces_[k];
-              fv.reinit(face.cell, face.face);
-              for (unsigned int q = 0; q < n_q; ++q)
-                {
-                  const Point<2> x = fv.quadrature_point(q);
-                  if (!outline_)
-                    start[k * n_q + q] = x[1] < *split_;
-                  else
-                    {
-                      const OutlineDie &d = dies_[face.die];
-                      const double s = d.frame.coordinate({x[0], x[1]});
-                      start[k * n_q + q] = s >= d.zone_lo && s <= d.zone_hi &&
-                                           std::isfinite(d.condition.profile.gap(std::abs(s)));
-                    }
-                }
-            }
-        }
+      {
+        FEFaceValues<2> fv(mapping(), fe_, face_quadrature_, update_quadrature_points);
+        const unsigned int n_q = face_quadrature_.size();
+        for (std::size_t k = 0; k < contact_faces_.size(); ++k)
+          {
+            const ContactFace &face = contact_faces_[k];
+            fv.reinit(face.cell, face.face);
+            for (unsigned int q = 0; q < n_q; ++q)
+              {
+                const Point<2> x = fv.quadrature_point(q);
+                const OutlineDie &d = dies_[face.die];
+                const double s = d.frame.coordinate({x[0], x[1]});
+                start[k * n_q + q] = s >= d.zone_lo && s <= d.zone_hi &&
+                                     std::isfinite(d.condition.profile.gap(std::abs(s)));
+              }
+          }
+      }
       std::vector<std::vector<char>> history{start};
       for (int it = 0;; ++it)
         {
@@ -299,14 +275,10 @@ namespace fem
           line.precision(6);
           line << "pass " << pass << ", active-set step " << it << ": |A| = " << step.n_active
                << " of " << active.size() << ", changed " << step.n_changed;
-          if (outline_)
-            for (std::size_t d = 0; d < ev.dies.size(); ++d)
-              line << "; " << dies_[d].part << ": c = " << ev.dies[d].half_width
-                   << " m, delta = " << ev.dies[d].indentation << " m, P = " << ev.dies[d].force
-                   << " N (trace " << ev.dies[d].force_trace << ")";
-          else
-            line << ", c/a = " << ev.half_width / problem_.geometry.half_length()
-                 << ", P = " << ev.force << " N (trace " << ev.force_trace << ")";
+          for (std::size_t d = 0; d < ev.dies.size(); ++d)
+            line << "; " << dies_[d].part << ": c = " << ev.dies[d].half_width
+                 << " m, delta = " << ev.dies[d].indentation << " m, P = " << ev.dies[d].force
+                 << " N (trace " << ev.dies[d].force_trace << ")";
           progress(line.str());
           finish(ev);
           if (step.n_changed == 0)

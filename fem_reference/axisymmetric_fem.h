@@ -2,71 +2,46 @@
 // 7.1. Plain structs only (no deal.II headers), so drivers and tests compile fast; all deal.II
 // code lives in the axisymmetric_fem*.cc units (axisymmetric_solver.h).
 //
-// Model (DESIGN.md sections 1 and 6): dim = 2 with x = r, y = z. The legacy hollow cylinder
-// (problem.legacy_cylinder) is solved on the half section r in [R1, R2], z in [0, a] with the
-// symmetry plane z = 0 (u_z = 0, zero shear), as described below; an outline problem on the
-// section as given (see "Outline problems" at the end of this comment).
+// Model (DESIGN.md sections 1 and 6): dim = 2 with x = r, y = z, one geometry path (DESIGN.md
+// 8): every problem is the section given by an outline with a condition per part
+// (problem.body). The hollow cylinder of the legacy form (problem.legacy_cylinder) is its
+// half section r in [R1, R2], z in [0, a] as an outline (parts mid_plane: symmetry, outer,
+// end, inner), mirrored (Body::mirrored: the section and its image in z = 0 are the body),
+// its die a die on part `outer` (the paraboloid R = a^2 / (4 delta) centred at (R2, 0),
+// which is u_r* = -delta (1 - 2 z^2/a^2) of paper eq. 4.1).
 // Q_p x Q_p Lagrange elements, strain e(u) = (du_r/dr, du_z/dz, u_r/r, du_r/dz + du_z/dr),
 // s = D e, bilinear form int e(v).D e(u) r dr dz, pressures as int t.v r ds.
 //
-// Die (paper eq. 4.1, axisym::die_u_r): u_r*(z) = -delta (1 - 2 z^2/a^2) on r = R2.
-//  * contact.method "fixed": bilateral zone, u_r = u_r* strongly on z in [0, c], free beyond.
-//  * "iterate" / "max-force": unilateral contact u_r <= u_r* by penalty at the face
-//    quadrature points of r = R2, kappa int_A (u_r - u_r*) v_r r ds over the active set
-//    A = {u_r - u_r* > 0}; the active-set (semi-smooth Newton) loop starts from the whole
-//    outer side (the paper's iteration 0) and stops when A repeats its previous state.
-//    The contact points are the p + 1 Gauss-Lobatto points of each outer face (the nodes of
-//    FE_Q(p) for p <= 2): a nodal, lumped penalty with one constraint per node; more points
-//    over-constrain the trace (with p = 1 and 3 points the active set never settles).
-//    kappa = penalty_factor * E / h_min, h_min the smallest cell edge on r = R2.
-//    Pass 0 uses a mesh without a split on r = R2; each edge-fitting pass remeshes with the
-//    outer line split at (and graded toward) the c of the previous pass and solves again,
-//    starting from the active set z < c. With n passes in all, pass k runs on level
-//    max(0, L - (n-1-k)): the earlier passes only locate the edge, the last is at level L.
-//
-// Functionals (J per radian, full body = 2 x half section), computed with s_h = D e(u_h):
-//   lagrange    = U_h - W(u_h),           U_h = 1/2 int e.De r, W = work of the pressures
-//   castigliano = -U_h + int_{S_c} (s_h n).u* r ds
-//   reissner    = U_h - W(u_h) - int_{S_c} (s_h n).(u_h - u*) r ds
-// S_c = the prescribed zone (fixed) or the active quadrature points (penalty); s_h n is the
-// element trace. For pure traction problems the three are -U_h; in the bilateral mode with
-// p >= 2 u_h = u* on S_c exactly, so reissner == lagrange. The penalty energy
-// 1/2 kappa int_A (u_r - u_r*)^2 r ds is reported apart (penalty_energy), not in lagrange.
-//
-// Contact force P (N, full 360 degree body), three ways:
-//   force          = -2 pi * 2 int s_h . e(v) r dr dz,  v = (psi, 0), psi = (r-R1)/(R2-R1)
-//                    (energetically consistent reaction; DESIGN.md 4.3)
-//   force_trace    = -2 pi R2 * 2 int_0^a sigma_rr(R2, z) dz over the element traces
-//   force_penalty  =  2 pi R2 * 2 int_0^a kappa (u_r - u_r*)_+ dz   (penalty only)
-// For the penalty problem force == force_penalty up to the linear-solver accuracy
-// (v is in the FE space). c = where the penalty pressure kappa g_+ vanishes, g = u_r - u_r*
-// along r = R2 sampled at the contact points: bracketed by the last positive sample and the
-// next one (the zone is connected and starts at z = 0), and located inside the
-// bracket by the square-root law p^2 ~ (c - z) of a smooth contact edge (half_width) or by
-// linear interpolation of g (half_width_gap).
-//
-// Outline problems (DESIGN.md 7.1, !problem.legacy_cylinder):
 //  * Mesh: the gmsh base mesh of fem_reference/outline_mesh.h (all quadrilaterals, base size
 //    h0 = shortest edge / outline_cells_on_shortest_edge, boundary id = 1 + part index), then
 //    L = refinements global refinements. Every boundary face carries the manifold of its
 //    outline edge (PolarManifold about the center for an arc, flat for a line) and every cell
 //    a TransfiniteInterpolationManifold, so new vertices land on the arcs and the interior
 //    stays untangled; the mapping is MappingQ(p) (cached), so the curved boundary is
-//    represented at the element degree and Q_p keeps its order.
+//    represented at the element degree and Q_p keeps its order (MappingQ1 on a polygon:
+//    every cell is then the bilinear image of its vertices).
 //  * Conditions per part: pressure (t = -p n with n the normal of the mapped face at each
 //    quadrature point) and traction (t_r, t_z) as int t.v r ds; displacement (u_r, u_z),
 //    axis (u_r = 0; sigma_rz = 0 is natural) and symmetry (u.n = 0 with n the normal of the
 //    straight edge) as constraints on the boundary nodes: u_r = 0 or u_z = 0 when n is along
 //    e_r or e_z, else the line n_r u_r + n_z u_z = 0 on the larger component. Where parts
 //    meet, a node collects the conditions of all its faces (displacement before axis before
-//    symmetry); two independent ones fix both components. The hoop strain u_r/r is formed
-//    at quadrature points only (never on r = 0); at r = 0 (samples, VTU points) it is
-//    du_r/dr, its limit.
-//  * Functionals per radian of the section as given (no mirroring):
+//    symmetry and a prescribed die zone); two independent ones fix both components. The hoop
+//    strain u_r/r is formed at quadrature points only (never on r = 0); at r = 0 (samples, VTU
+//    points) it is du_r/dr, its limit.
+//  * Mirrored bodies: every integral reported (functionals, energies, forces, the L2 error
+//    norms) is the whole body's, twice the section's; a sample at z < 0 is the mirror image
+//    of (r, -z) (u_z and sigma_rz change sign); no support reactions (the mid-plane is no
+//    support of the body).
+//  * Functionals (J per radian) with s_h = D (e(u_h) - e_th):
 //      lagrange = U_h - W(u_h), castigliano = -U_h + int_{S_u} (s_h n).u* r ds,
 //      reissner = U_h - W(u_h) - int_{S_u} (s_h n).(u_h - u*) r ds,
-//    S_u the displacement parts (symmetry and axis parts add nothing: u*.n = 0 there and
-//    u_h.n = 0 exactly). Samples, stress and displacement errors: the section as given.
+//    S_u the displacement parts and the die zones (the prescribed zone, or the active points
+//    of the penalty: there u.n = t, u* = t n); symmetry and axis parts add nothing (u*.n = 0
+//    there and u_h.n = 0 exactly). s_h n is the element trace. For pure traction problems the
+//    three are -U_h; with a prescribed zone and p >= 2 u_h = u* on S_u exactly, so reissner ==
+//    lagrange. The penalty energy 1/2 kappa int_A g^2 r ds is reported apart (penalty_energy),
+//    not in lagrange.
 //  * Body loads (DESIGN.md 7.1; pointwise in fem_reference/body_loads.h): the body force
 //    f = (density omega^2 r, -density g) enters as int f.v r dr dz, the thermal strain
 //    e_th = alpha T (1, 1, 1, 0), T = T0 + T_r r + T_z z, as an initial strain:
@@ -82,26 +57,45 @@
 //    potential energy at the exact solution; without body loads they are the formulas above.
 //  * Reactions: the force each symmetry or displacement part exerts on the body (N, full
 //    360 degree body), from the residual of the discrete equilibrium at the dofs it holds
-//    (PartReaction).
-//  * Dies (boundary.PART.die on a straight part; DESIGN.md 7.1): frictionless unilateral contact
-//    by the same penalty active set as the legacy die, on the part's face points, with the
+//    (PartReaction), in the conforming basis (hanging nodes distributed to their masters).
+//  * Dies (boundary.PART.die on a straight part; DESIGN.md 7.1; the legacy die), with the
 //    outward normal n of the part and the target outward displacement u.n = g0(s) - delta (s
-//    the distance from the die's centre along the part; no contact beyond a flat punch's
-//    edge). Every die part is its own contact set; several dies are solved together.
-//    Force control (die.force = P): for a fixed active set the solution is affine in the
-//    indentations, u = u_0 + sum_k delta_k u_k (one factorization, one solve per force-
-//    controlled die), and the deltas that give the asked forces follow from a small linear
-//    system at every active-set step: no outer iteration. The force on a die is the penalty
-//    reaction P = 2 pi int_A kappa (u.n - g0 + delta) r ds (consistent: it is the residual of
-//    the discrete equilibrium at the die's dofs); force_trace = -2 pi int (n.s_h n) r ds over
-//    the part. The zone is the interval of active points around the centre; each free end
-//    is located as the legacy c (square-root law of a smooth edge, else linear gap).
+//    the distance from the die's centre along the part; no die surface beyond a flat
+//    punch's edge). Every die part is its own contact set; several dies are solved together.
+//    - contact.method "fixed" (bilateral): the zone is prescribed, [-c, c] about the centre
+//      clipped to the part (c = contact.half_width; the whole part without it; the legacy
+//      die: [0, c] from the mid-plane, one free end), u.n = g0 - delta strongly at the nodes
+//      of its faces, traction free beyond. Each free end of the zone is made a mesh vertex
+//      (the nearest boundary vertex of the part is moved onto it after the refinement below).
+//      P = -2 pi R.n summed over the zone's constrained dofs (R the residual of the discrete
+//      equilibrium: the consistent reaction, the legacy domain integral -2 pi int s_h.e(v) r
+//      with v = (psi, 0) for the hollow cylinder); pressure = the trace -n.s_h n. A force-
+//      controlled die cannot have a prescribed zone (InputError).
+//    - "iterate" / "max-force" / none (unilateral): penalty at the face points of the part,
+//      kappa int_A (u.n - t) v.n r ds over the active set A = {u.n - t > 0}; the active-set
+//      (semi-smooth Newton) loop starts from the estimated or previous zone and stops when A
+//      repeats its previous state. The contact points are the p + 1 Gauss-Lobatto points of
+//      each face (the nodes of FE_Q(p) for p <= 2): a nodal, lumped penalty with one
+//      constraint per node; more points over-constrain the trace (with p = 1 and 3 points
+//      the active set never settles). kappa = penalty_factor * E / h_min, h_min the smallest
+//      face on the die parts. The force on a die is the penalty reaction P = 2 pi int_A kappa
+//      (u.n - g0 + delta) r ds (consistent: it is the residual of the discrete equilibrium
+//      at the die's dofs). The zone is the interval of active points around the centre; each
+//      free end c is bracketed by the last point with positive gap and the next one, and
+//      located inside the bracket by the square-root law p^2 ~ (c - s) of a smooth contact
+//      edge (half_width) or by linear interpolation of the gap (half_width_gap).
+//      Force control (die.force = P): for a fixed active set the solution is affine in the
+//      indentations, u = u_0 + sum_k delta_k u_k (one factorization, one solve per force-
+//      controlled die), and the deltas that give the asked forces follow from a small linear
+//      system at every active-set step: no outer iteration.
+//    force_trace = -2 pi int (n.s_h n) r ds over the part in both modes.
 //    Mesh: after the L global refinements, the cells within half the zone's length of the
-//    zone are refined until they are die_zone_cells * 2^L across the zone, then the cells at
-//    each free end of the zone die_edge_refinements times more (hanging nodes constrained).
-//    Pass 0 refines around an estimate of the zone (indentation: where g0 < delta; force:
-//    Hertz's radius, or the flat face), each edge-fitting pass around the zone of the
-//    previous pass, one level coarser per pass before the last as for the legacy die.
+//    zone are refined until they are die_zone_cells * 2^L across the zone (unless the global
+//    mesh already has at least half that density there), then the cells at each free end of
+//    the zone die_edge_refinements times more (hanging nodes constrained). Unilateral: pass 0
+//    refines around an estimate of the zone (indentation: where g0 < delta; force: Hertz's
+//    radius, or the flat face), each edge-fitting pass around the zone of the previous pass;
+//    with n passes in all, pass k runs on level max(0, L - (n-1-k)).
 #pragma once
 
 #include "problem/problem.h"
@@ -118,12 +112,7 @@ namespace fem
   struct FemOptions
   {
     int degree = 2;      ///< p of FE_Q(p); default from problem.fem.degree
-    int refinements = 4; ///< mesh level L (cells per line x 2^L, nested grading)
-    enum class MeshGenerator
-    {
-      gmsh,      ///< gmsh API -> .msh -> GridIn::read_msh
-      structured ///< GridGenerator::subdivided_hyper_rectangle, same vertices
-    } mesh = MeshGenerator::gmsh;
+    int refinements = 4; ///< mesh level L: L global refinements of the gmsh base mesh
     enum class LinearSolver
     {
       direct, ///< SparseDirectUMFPACK
@@ -134,20 +123,18 @@ namespace fem
     /// at L = 5, Q2, |P(1e3) - P(1e4)| = 0.2 N of 192.6 kN (fem_convergence penalty study).
     double penalty_factor = 1e3;
     int max_active_set_iterations = 50;
-    int contact_points = 0; ///< Gauss-Lobatto points per outer face; 0: p + 1 (nodal)
-    /// Unilateral: after the active-set loop on the unsplit mesh, remesh this many times with
-    /// the outer line split and graded at the half-width found, and solve again.
+    int contact_points = 0; ///< Gauss-Lobatto points per die face; 0: p + 1 (nodal)
+    /// Unilateral: after the active-set loop, remesh this many times refined around the zones
+    /// found (axisymmetric_fem.h, "Dies"), and solve again.
     int edge_fitting_passes = 1;
     /// Dies on outline parts: cells across the contact zone (times 2^L), and the extra
     /// halvings of the cells at each free end of the zone (axisymmetric_fem.h, "Dies").
     int die_zone_cells = 4;
     int die_edge_refinements = 3;
-    int base_cells_r = 4, base_cells_z = 8; ///< level-0 mesh
-    double radial_grading = 3.0, axial_grading = 3.0; ///< largest/smallest cell, level 0
-    /// Outline problems: cells along the shortest outline edge in the base mesh (h0 = its
-    /// length / this; outline_mesh.h).
+    /// Cells along the shortest outline edge in the base mesh (h0 = its length / this;
+    /// outline_mesh.h).
     double outline_cells_on_shortest_edge = 4;
-    /// Outline problems: how the arcs are represented. Only `curved` keeps the order of Q_p;
+    /// How the arcs are represented. Only `curved` keeps the order of Q_p;
     /// the others exist to study the geometry error.
     enum class OutlineGeometry
     {
@@ -164,9 +151,9 @@ namespace fem
 
   FemOptions options_from_problem(const axisym::Problem &problem);
 
-  /// Throws axisym::InputError for what the FEM reference cannot solve yet: a die on an
-  /// outline section, the structured mesh generator for an outline section. (Body loads
-  /// exist only on outline sections and are applied.)
+  /// Throws axisym::InputError for what the FEM reference cannot solve: a force-controlled
+  /// die with contact.method = "fixed" (a prescribed zone needs the indentation), and the
+  /// hollow-cylinder form's die with an outer pressure (the outer side is the die's part).
   void check_supported(const axisym::Problem &problem, const FemOptions &options);
 
   struct Functionals
@@ -181,7 +168,7 @@ namespace fem
 
   struct ActiveSetStep
   {
-    int pass = 0; ///< mesh pass (0: unsplit mesh, k: split at the c of pass k-1)
+    int pass = 0; ///< mesh pass (0: refined around the estimated zone, k: around pass k-1's)
     int iteration = 0;
     int n_active = 0, n_changed = 0; ///< active quadrature points, changes vs previous step
     double half_width = 0;           ///< c [m] from the gap of this step's solution
@@ -194,9 +181,9 @@ namespace fem
     double s = 0; ///< distance from the die's centre along the part [m] (legacy: s = z)
     double r = 0; ///< the point [m]
     double z = 0;
-    double p = 0;       ///< penalty traction kappa g_+ (unilateral) or -sigma_rr trace
-    double p_trace = 0; ///< -sigma_rr trace
-    double gap = 0;     ///< u_r - u_r* [m] (positive = penetration)
+    double p = 0;       ///< penalty traction kappa g_+ (unilateral) or the trace -n.s_h n
+    double p_trace = 0; ///< the trace -n.s_h n
+    double gap = 0;     ///< u.n - (g0 - delta) [m] (positive = penetration)
   };
 
   struct ContactResult
@@ -212,12 +199,12 @@ namespace fem
     double half_width_gap = 0; ///< c [m] from linear interpolation of the gap (unilateral)
     double force = 0, force_trace = 0, force_penalty = 0; ///< [N], full body
     double penalty = 0, penalty_factor = 0; ///< kappa [Pa/m] and its factor (unilateral)
-    double h_min = 0;         ///< smallest cell edge on r = R2 [m]
-    double max_penetration = 0; ///< max(u_r - u_r*)_+ [m]
+    double h_min = 0;         ///< smallest face on the die parts [m]
+    double max_penetration = 0; ///< max(gap)_+ [m]
     int active_set_iterations = 0; ///< of the last pass
     int edge_fitting_passes = 0;   ///< remeshes at the contact edge actually done
     std::vector<ActiveSetStep> iterations;
-    std::vector<PressurePoint> pressure; ///< at the face Gauss points of r = R2, sorted by z
+    std::vector<PressurePoint> pressure; ///< at the contact points of the part, sorted by s
   };
 
   /// The force a support part (symmetry or displacement) exerts on the body [N], full 360
@@ -244,11 +231,10 @@ namespace fem
     int degree = 0, refinements = 0;
     unsigned long n_dofs = 0, n_cells = 0;
     std::string mesh_generator;
-    bool outline = false;          ///< an outline problem (the section as given)
-    double base_mesh_size = 0;     ///< outline: h0 [m]
-    unsigned long n_base_cells = 0; ///< outline: cells of the gmsh base mesh
-    bool base_mesh_subdivided = false; ///< outline: gmsh's all-quad fallback was used
-    /// outline: base cells with two boundary faces meeting where the outline is smooth (a
+    double base_mesh_size = 0;     ///< h0 [m]
+    unsigned long n_base_cells = 0; ///< cells of the gmsh base mesh
+    bool base_mesh_subdivided = false; ///< gmsh's all-quad fallback was used
+    /// base cells with two boundary faces meeting where the outline is smooth (a
     /// 180 degree corner on the boundary, a singular Jacobian there) that remain after the
     /// generator's retries with more cells (fem_reference/README.md). 0 is the normal case.
     unsigned int base_mesh_flat_corners = 0;
@@ -256,7 +242,7 @@ namespace fem
     std::optional<ContactResult> contact; ///< the first die
     std::vector<ContactResult> other_dies; ///< the second and later dies (outline parts)
     std::vector<FieldSample> samples;
-    std::vector<PartReaction> reactions; ///< outline problems: every support part
+    std::vector<PartReaction> reactions; ///< every support part (none for a mirrored body)
     /// r-weighted L2 norms over the full body (per radian), when an exact stress is given:
     /// ||s_h - s|| and ||s|| with the Frobenius norm of the stress tensor (sigma_rz counts
     /// twice, as in verification/lame_errors.h).

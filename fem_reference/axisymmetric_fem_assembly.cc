@@ -16,7 +16,7 @@ namespace fem::internal
         if (!cell->face(f)->at_boundary())
           continue;
         const axisym::PartCondition &c =
-          problem_.body->condition_of_edge(edge_of(cell->face(f)));
+          body_.condition_of_edge(edge_of(cell->face(f)));
         if (c.kind != Kind::pressure && c.kind != Kind::traction)
           continue;
         fv.reinit(cell, f);
@@ -43,9 +43,6 @@ namespace fem::internal
     FEValues<2> fe_values(mapping(), fe_, cell_quadrature_,
                           update_values | update_gradients | update_quadrature_points |
                             update_JxW_values);
-    FEFaceValues<2> fe_face_values(mapping(), fe_, QGauss<1>(options_.degree + 1),
-                                   update_values | update_quadrature_points |
-                                     update_JxW_values);
     FEFaceValues<2> outline_face_values(mapping(), fe_, QGauss<1>(options_.degree + 1),
                                         update_values | update_quadrature_points |
                                           update_normal_vectors | update_JxW_values);
@@ -54,8 +51,6 @@ namespace fem::internal
     Vector<double> cell_rhs(n);
     std::vector<types::global_dof_index> dofs(n);
     std::vector<Stress> b(n), db(n);
-    const double p_in = problem_.loading ? problem_.loading->inner_pressure : 0.0;
-    const double p_out = problem_.loading ? problem_.loading->outer_pressure : 0.0;
 
     base_matrix_ = 0;
     base_rhs_ = 0;
@@ -98,31 +93,7 @@ namespace fem::internal
           for (unsigned int j = i + 1; j < n; ++j)
             cell_matrix(i, j) = cell_matrix(j, i);
 
-        if (outline_)
-          add_outline_tractions(cell, outline_face_values, cell_rhs);
-        // Legacy: pressure p on a face with outward normal n: t = -p n, t.v = -p n_r v_r.
-        for (const unsigned int f : cell->face_indices())
-          {
-            if (outline_ || !cell->face(f)->at_boundary())
-              continue;
-            const unsigned int id = cell->face(f)->boundary_id();
-            double pressure = 0, normal_r = 0;
-            if (id == inner_boundary)
-              pressure = p_in, normal_r = -1;
-            else if (is_outer(id))
-              pressure = p_out, normal_r = 1;
-            if (pressure == 0)
-              continue;
-            fe_face_values.reinit(cell, f);
-            for (const unsigned int q : fe_face_values.quadrature_point_indices())
-              {
-                const double r = fe_face_values.quadrature_point(q)[0];
-                for (unsigned int i = 0; i < n; ++i)
-                  if (fe_.system_to_component_index(i).first == 0)
-                    cell_rhs(i) += -pressure * normal_r * fe_face_values.shape_value(i, q) * r *
-                                   fe_face_values.JxW(q);
-              }
-          }
+        add_outline_tractions(cell, outline_face_values, cell_rhs);
         cell->get_dof_indices(dofs);
         constraints_.distribute_local_to_global(cell_matrix, cell_rhs, dofs, base_matrix_,
                                                 base_rhs_);
@@ -131,7 +102,7 @@ namespace fem::internal
   }
 
   // 5a. Penalty kappa int_A (u.n - t) v.n r ds added to a copy of the base system, t the
-  // target outward displacement (legacy: n = e_r, t = u_r*). Force-controlled dies enter with
+  // target outward displacement. Force-controlled dies enter with
   // delta = 0, and unit_rhs_[k] receives the right-hand side of a unit indentation of the
   // k-th of them (t = g0 - delta: -kappa int_A v.n r ds per unit delta).
   void AxisymmetricSolver::add_penalty(const std::vector<char> &active)
@@ -192,7 +163,7 @@ namespace fem::internal
           }
         face.cell->get_dof_indices(dofs);
         constraints_.distribute_local_to_global(m, rhs, dofs, system_matrix_, system_rhs_);
-        if (outline_ && force_index[face.die] >= 0)
+        if (force_index[face.die] >= 0)
           constraints_.distribute_local_to_global(unit, dofs, unit_rhs_[force_index[face.die]]);
       }
     assembly_s_ += seconds_since(t0);
@@ -294,7 +265,8 @@ namespace fem::internal
     for (std::size_t i = 0; i < m; ++i)
       {
         const unsigned int di = force_dies[i];
-        b(i) = *dies_[di].condition.force / (2 * pi) - (base[di][0] - base[di][1]);
+        // The asked force is the whole body's: a mirrored section carries 1 / mirror_ of it.
+        b(i) = *dies_[di].condition.force / (2 * pi * mirror_) - (base[di][0] - base[di][1]);
       }
     for (std::size_t k = 0; k < m; ++k)
       {

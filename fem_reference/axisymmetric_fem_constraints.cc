@@ -9,20 +9,10 @@ namespace fem::internal
     dof_handler_.distribute_dofs(fe_);
     constraints_.clear();
     DoFTools::make_hanging_node_constraints(dof_handler_, constraints_);
-    const FEValuesExtractors::Scalar u_r(0), u_z(1);
-    if (outline_)
-      add_outline_constraints();
-    else
-      {
-        VectorTools::interpolate_boundary_values(mapping(), dof_handler_, symmetry_boundary,
-                                                 Functions::ZeroFunction<2>(2), constraints_,
-                                                 fe_.component_mask(u_z));
-        if (mode_ == Mode::bilateral)
-          VectorTools::interpolate_boundary_values(
-            mapping(), dof_handler_, outer_contact_boundary,
-            DieDisplacement(*problem_.die, problem_.geometry), constraints_,
-            fe_.component_mask(u_r));
-      }
+    hanging_node_constraints_.clear();
+    DoFTools::make_hanging_node_constraints(dof_handler_, hanging_node_constraints_);
+    hanging_node_constraints_.close();
+    add_outline_constraints();
     constraints_.close();
 
     base_matrix_.clear(); // they refer to the sparsity pattern rebuilt below
@@ -46,14 +36,9 @@ namespace fem::internal
             continue;
           const types::boundary_id id = cell->face(f)->boundary_id();
           unsigned int die = 0;
-          if (outline_)
-            {
-              while (die < dies_.size() && dies_[die].boundary_id != id)
-                ++die;
-              if (die == dies_.size())
-                continue;
-            }
-          else if (!problem_.die || !is_outer(id))
+          while (die < dies_.size() && dies_[die].boundary_id != id)
+            ++die;
+          if (die == dies_.size())
             continue;
           contact_faces_.push_back({cell, f, die});
           h_min_ = std::min(h_min_, cell->face(f)->measure());
@@ -65,13 +50,14 @@ namespace fem::internal
   // 2o. Outline constraints. Each boundary node (the pair of u_r and u_z dofs at one support
   // point) collects a_r u_r + a_z u_z = g from every constrained face through it:
   // displacement (1, 0) = u_r*, (0, 1) = u_z*; axis (1, 0) = 0; symmetry n = 0 with the
-  // straight edge's normal. The first (in that order of priority) is kept, with the one
+  // straight edge's normal; a prescribed die zone (bilateral, on the faces inside the zone)
+  // n = g0(s) - delta at the node, with the part's normal (as symmetry, whose priority it has). The first (in that order of priority) is kept, with the one
   // most independent of it if their normals are not parallel (then both components are
   // fixed); a single condition constrains its larger component.
   void AxisymmetricSolver::add_outline_constraints()
   {
     using Kind = axisym::PartCondition::Kind;
-    const axisym::Body &body = *problem_.body;
+    const axisym::Body &body = body_;
     struct Condition
     {
       double a_r, a_z, g;
@@ -86,6 +72,10 @@ namespace fem::internal
     reaction_dofs_.clear();
     const unsigned int n_face_dofs = fe_.n_dofs_per_face();
     std::vector<types::global_dof_index> face_dofs(n_face_dofs);
+    // The support points of a face, in the order of the base element's face dofs.
+    FEFaceValues<2> support(mapping(), fe_,
+                            Quadrature<1>(fe_.base_element(0).get_unit_face_support_points()),
+                            update_quadrature_points);
     for (const auto &cell : dof_handler_.active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
         {
@@ -110,6 +100,23 @@ namespace fem::internal
               const double n_z = std::abs(n.z) < 1e-12 ? 0.0 : n.z;
               add[n_add++] = {n_r, n_z, 0, 2, edge};
             }
+          else if (c.kind == Kind::die && mode_ == Mode::bilateral)
+            {
+              unsigned int die = 0;
+              while (dies_[die].part != body.outline.edges()[edge].part)
+                ++die;
+              const OutlineDie &d = dies_[die];
+              const auto face = cell->face(f);
+              const Point<2> a = face->vertex(0), b = face->vertex(1);
+              if (!in_zone(d, d.frame.coordinate({a[0], a[1]})) ||
+                  !in_zone(d, d.frame.coordinate({b[0], b[1]})))
+                continue;
+              const double n_r = std::abs(d.frame.normal.r) < 1e-12 ? 0.0 : d.frame.normal.r;
+              const double n_z = std::abs(d.frame.normal.z) < 1e-12 ? 0.0 : d.frame.normal.z;
+              // g: die_target at each node, set below (kind die: the marker g = NaN).
+              add[n_add++] = {n_r, n_z, std::numeric_limits<double>::quiet_NaN(), 2, edge};
+              support.reinit(cell, f);
+            }
           else
             continue;
           cell->face(f)->get_dof_indices(face_dofs);
@@ -126,7 +133,14 @@ namespace fem::internal
               node.dof_z = dofs[1];
               for (unsigned int k = 0; k < n_add; ++k)
                 {
-                  const Condition &cond = add[k];
+                  Condition cond = add[k];
+                  if (std::isnan(cond.g)) // a die zone: the target at this node
+                    {
+                      unsigned int die = 0;
+                      while (dies_[die].part != body.outline.edges()[edge].part)
+                        ++die;
+                      cond.g = die_target(die, support.quadrature_point(index));
+                    }
                   const bool seen =
                     std::any_of(node.conditions.begin(), node.conditions.end(),
                                 [&](const Condition &o) {

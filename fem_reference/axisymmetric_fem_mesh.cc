@@ -1,86 +1,16 @@
-// 1. Meshes of the FEM reference (axisymmetric_solver.h): the legacy half section, the outline
-// section, and the refinement toward dies.
+// 1. The mesh of the FEM reference (axisymmetric_solver.h): the outline section (the
+// hollow-cylinder form's half section is one), and the refinement toward dies.
 #include "fem_reference/axisymmetric_solver.h"
 
 namespace fem::internal
 {
-  // 1. Mesh.
+  // 1. Mesh: the gmsh base mesh of the outline, the manifold of its edge on every boundary
+  // face (PolarManifold about the arc's center, flat for a line), transfinite interpolation on
+  // the cells, L global refinements, the refinement toward the dies (and a prescribed zone's
+  // ends on vertices), then MappingQ(p) cached once for the refined mesh.
   void AxisymmetricSolver::make_mesh()
   {
-    if (outline_)
-      {
-        make_outline_mesh();
-        return;
-      }
-    const axisym::Geometry &g = problem_.geometry;
-    HalfSectionMeshSpec spec;
-    spec.inner_radius = g.inner_radius;
-    spec.outer_radius = g.outer_radius;
-    spec.half_length = g.half_length();
-    spec.level = level_;
-    spec.base_cells_r = options_.base_cells_r;
-    spec.base_cells_z = options_.base_cells_z;
-    spec.radial_ratio = options_.radial_grading;
-    spec.axial_ratio = options_.axial_grading;
-    if (split_)
-      {
-        // Grade toward the contact edge z = c (a corner when c = a).
-        spec.split = split_;
-        spec.grade_toward_end = !spec.is_split();
-      }
-
-    if (options_.mesh == FemOptions::MeshGenerator::gmsh)
-      {
-        read_through_msh_file(triangulation_, "rfm_fem_", [&](const std::string &path) {
-          write_gmsh_mesh(spec, path);
-        });
-      }
-    else
-      {
-        std::vector<std::vector<double>> steps(2);
-        steps[0] = spec.radial_segment().steps();
-        for (const GradedSegment &s : spec.axial_segments())
-          for (const double h : s.steps())
-            steps[1].push_back(h);
-        GridGenerator::subdivided_hyper_rectangle(triangulation_, steps,
-                                                  Point<2>(g.inner_radius, 0.0),
-                                                  Point<2>(g.outer_radius, g.half_length()));
-        const double tol = 1e-9 * g.outer_radius;
-        const double split = spec.is_split() ? *spec.split : g.half_length();
-        for (const auto &cell : triangulation_.active_cell_iterators())
-          for (const auto &face : cell->face_iterators())
-            if (face->at_boundary())
-              {
-                const Point<2> x = face->center();
-                if (std::abs(x[0] - g.inner_radius) < tol)
-                  face->set_boundary_id(inner_boundary);
-                else if (std::abs(x[0] - g.outer_radius) < tol)
-                  face->set_boundary_id(x[1] < split ? outer_contact_boundary
-                                                     : outer_free_boundary);
-                else if (std::abs(x[1]) < tol)
-                  face->set_boundary_id(symmetry_boundary);
-                else
-                  face->set_boundary_id(end_boundary);
-              }
-      }
-
-    // Every boundary face must carry one of our ids (a gmsh group lost would be silent).
-    for (const auto &cell : triangulation_.active_cell_iterators())
-      for (const auto &face : cell->face_iterators())
-        if (face->at_boundary() &&
-            (face->boundary_id() < inner_boundary || face->boundary_id() > symmetry_boundary))
-          throw std::runtime_error("mesh: boundary face at (" + std::to_string(face->center()[0]) +
-                                   ", " + std::to_string(face->center()[1]) +
-                                   ") has no physical group (id " +
-                                   std::to_string(face->boundary_id()) + ")");
-  }
-
-  // 1o. Outline mesh: the gmsh base mesh, the manifold of its edge on every boundary face
-  // (PolarManifold about the arc's center, flat for a line), transfinite interpolation on
-  // the cells, L global refinements, then MappingQ(p) cached once for the refined mesh.
-  void AxisymmetricSolver::make_outline_mesh()
-  {
-    const axisym::Outline &outline = problem_.body->outline;
+    const axisym::Outline &outline = body_.outline;
     const std::vector<axisym::OutlineEdge> &edges = outline.edges();
     const std::vector<std::string> parts = outline.parts();
     const types::manifold_id cell_manifold = static_cast<types::manifold_id>(edges.size() + 1);
@@ -186,8 +116,17 @@ namespace fem::internal
       triangulation_.set_manifold(cell_manifold, FlatManifold<2>());
     triangulation_.refine_global(level_);
     refine_toward_dies();
+    snap_zone_ends();
 
-    if (options_.outline_geometry == Geometry::curved)
+    // MappingQ(p) represents the arcs; on a polygon (the hollow cylinder's rectangle, most
+    // die problems) every cell is the bilinear image of its vertices (transfinite
+    // interpolation of straight edges keeps them straight), which MappingQ1 is, at less
+    // cost.
+    const bool has_arcs =
+      std::any_of(edges.begin(), edges.end(), [](const axisym::OutlineEdge &e) {
+        return e.kind == axisym::OutlineEdge::Kind::arc;
+      });
+    if (options_.outline_geometry == Geometry::curved && has_arcs)
       {
         auto cache = std::make_unique<MappingQCache<2>>(options_.degree);
         cache->initialize(MappingQ<2>(options_.degree), triangulation_);
@@ -222,6 +161,18 @@ namespace fem::internal
       }
   }
 
+  // contact.method = "fixed": the prescribed zone of each die, c = contact.half_width from
+  // the centre each way along the part, clipped to it (the whole part without c).
+  void AxisymmetricSolver::fix_die_zones()
+  {
+    for (OutlineDie &d : dies_)
+      {
+        const std::optional<double> c = problem_.contact.half_width;
+        d.zone_lo = c ? std::max(d.frame.s_min, -*c) : d.frame.s_min;
+        d.zone_hi = c ? std::min(d.frame.s_max, *c) : d.frame.s_max;
+      }
+  }
+
   // Refinement toward the dies' zones (axisymmetric_fem.h, "Dies"): the cells near the zone
   // to die_zone_cells * 2^L across it, then each free end die_edge_refinements times more.
   void AxisymmetricSolver::refine_toward_dies()
@@ -245,7 +196,7 @@ namespace fem::internal
           triangulation_.execute_coarsening_and_refinement();
         }
     };
-    const double tol = 1e-9 * problem_.body->outline.size();
+    const double tol = 1e-9 * body_.outline.size();
     for (const OutlineDie &d : dies_)
       {
         const double w = d.zone_hi - d.zone_lo;
@@ -254,12 +205,19 @@ namespace fem::internal
         const double h = w / (options_.die_zone_cells * std::pow(2.0, level_));
         const axisym::Point pa = d.frame.point_at(d.zone_lo), pb = d.frame.point_at(d.zone_hi);
         const Point<2> a(pa.r, pa.z), b(pb.r, pb.z);
-        // A cell's size: its diameter / sqrt 2 (a square's side).
-        refine_while([&](const auto &cell) {
-          const double size = cell->diameter() / std::sqrt(2.0);
-          return size > 1.01 * h &&
-                 distance_to_segment(cell->center(), a, b) < 0.5 * w + cell->diameter();
-        });
+        // A cell's size: its diameter / sqrt 2 (a square's side). A zone that the global
+        // refinement already resolves to within a factor 2 of the asked density (h at least
+        // half the level's nominal size h0 / 2^L: at least die_zone_cells / 2 * 2^L cells
+        // across it; e.g. the hollow cylinder's die, c ~ a / 2, h0 = a / 8) is left as it is:
+        // one more halving of a large region would double the cost for little (the base
+        // cells' diameters scatter about h0, so `size > 1.01 h` would take most of them).
+        // Its free ends are refined below all the same.
+        if (h < 0.5 * base_mesh_size_ / std::pow(2.0, level_))
+          refine_while([&](const auto &cell) {
+            const double size = cell->diameter() / std::sqrt(2.0);
+            return size > 1.01 * h &&
+                   distance_to_segment(cell->center(), a, b) < 0.5 * w + cell->diameter();
+          });
         for (const auto &[s_end, free] :
              {std::pair{d.zone_lo, d.zone_lo > d.frame.s_min + tol},
               std::pair{d.zone_hi, d.zone_hi < d.frame.s_max - tol}})
@@ -278,5 +236,38 @@ namespace fem::internal
               }
           }
       }
+  }
+
+  // A prescribed zone (bilateral) switches from u.n = t to traction free at its free ends:
+  // each end must be a mesh vertex, so that the condition and the element traces switch
+  // there (DESIGN.md 4.3: the field is singular at the end). The boundary vertex of the die's
+  // part nearest to the end is moved onto it, along the straight part. After
+  // refine_toward_dies the cells there are die_edge_refinements times finer than across the
+  // zone, and the move is at most half a face: a mild distortion of a few small cells.
+  void AxisymmetricSolver::snap_zone_ends()
+  {
+    if (mode_ != Mode::bilateral)
+      return;
+    const double tol = 1e-9 * body_.outline.size();
+    for (const OutlineDie &d : dies_)
+      for (const auto &[s_end, free] :
+           {std::pair{d.zone_lo, d.zone_lo > d.frame.s_min + tol},
+            std::pair{d.zone_hi, d.zone_hi < d.frame.s_max - tol}})
+        {
+          if (!free)
+            continue;
+          const axisym::Point pe = d.frame.point_at(s_end);
+          const Point<2> e(pe.r, pe.z);
+          Point<2> *nearest = nullptr;
+          double best = std::numeric_limits<double>::infinity();
+          for (const auto &cell : triangulation_.active_cell_iterators())
+            for (const auto &face : cell->face_iterators())
+              if (face->at_boundary() && face->boundary_id() == d.boundary_id)
+                for (unsigned int v = 0; v < 2; ++v)
+                  if (face->vertex(v).distance(e) < best)
+                    best = face->vertex(v).distance(e), nearest = &face->vertex(v);
+          if (nearest)
+            *nearest = e;
+        }
   }
 } // namespace fem::internal

@@ -2,23 +2,23 @@
 // dies' zones, samples, support reactions and VTU.
 #include "fem_reference/axisymmetric_solver.h"
 
+#include <deal.II/grid/grid_tools_cache.h>
+
 namespace fem::internal
 {
   // 6. Post-processing of the current solution. `active`: the penalty set used in the solve.
   Evaluation AxisymmetricSolver::evaluate(const std::vector<char> *active) const
   {
     Evaluation ev;
-    const axisym::Geometry &g = problem_.geometry;
-    const double r1 = g.inner_radius, r2 = g.outer_radius;
 
-    // Volume: U_h, the consistent reaction int s.e(v) r with v = (psi, 0), the stress error.
+    // Volume: U_h, the work of the body force and the thermal strain, the errors.
     FEValues<2> fe_values(mapping(), fe_, cell_quadrature_,
                           update_values | update_gradients | update_quadrature_points |
                             update_JxW_values);
     const unsigned int n_q = cell_quadrature_.size();
     std::vector<Vector<double>> u(n_q, Vector<double>(2));
     std::vector<std::vector<Tensor<1, 2>>> grad(n_q, std::vector<Tensor<1, 2>>(2));
-    double energy = 0, reaction = 0, error_sq = 0, norm_sq = 0, u_error_sq = 0, u_norm_sq = 0;
+    double energy = 0, error_sq = 0, norm_sq = 0, u_error_sq = 0, u_norm_sq = 0;
     double body_force_work = 0, thermal_strain_work = 0; // int f.u_h r, int s_h.e_th r
     for (const auto &cell : dof_handler_.active_cell_iterators())
       {
@@ -42,11 +42,6 @@ namespace fem::internal
             if (loads_.has_thermal_strain())
               thermal_strain_work +=
                 loads_.thermal_strain(x[0], x[1]) * (s[0] + s[1] + s[2]) * w;
-            if (!outline_)
-              {
-                const double psi = (x[0] - r1) / (r2 - r1);
-                reaction += (s[0] / (r2 - r1) + s[2] * psi / x[0]) * w;
-              }
             if (exact_u_)
               {
                 const std::array<double, 2> ue = exact_u_(x[0], x[1]);
@@ -70,8 +65,8 @@ namespace fem::internal
               }
           }
       }
-    // The legacy half section stands for the whole body (twice); an outline for itself.
-    const double mirror = outline_ ? 1.0 : 2.0;
+    // A mirrored section stands for the whole body (twice); an outline for itself.
+    const double mirror = mirror_;
     if (exact_u_)
       ev.u_error_sq = mirror * u_error_sq, ev.u_norm_sq = mirror * u_norm_sq;
     if (exact_)
@@ -108,111 +103,23 @@ namespace fem::internal
         ev.error_max = error_max, ev.norm_max = norm_max;
       }
 
-    if (outline_)
-      {
-        double work = 0, b_c = 0, b_r = 0, penalty_energy = 0;
-        outline_boundary_terms(work, b_c, b_r);
-        if (!dies_.empty())
-          evaluate_dies(active, ev, b_c, b_r, penalty_energy);
-        ev.functionals.penalty_energy = penalty_energy;
-        // DESIGN.md 3 with the thermal strain as an initial strain (axisymmetric_fem.h):
-        // W = int f.u_h r + int_St t.u_h r ds; the Castigliano functional carries
-        // -int s_h.e_th r; in Reissner's s.e(u) - 1/2 s.C s - s.e_th = U density for s = s_h.
-        Functionals &phi = ev.functionals;
-        phi.strain_energy = energy;
-        phi.body_force_work = body_force_work;
-        phi.thermal_strain_work = thermal_strain_work;
-        phi.external_work = work + body_force_work;
-        phi.lagrange = phi.strain_energy - phi.external_work;
-        phi.castigliano = -phi.strain_energy - thermal_strain_work + b_c;
-        phi.reissner = phi.strain_energy - phi.external_work - b_r;
-        return ev;
-      }
-
-    // Boundary: work of the pressures; on r = R2 the traces, gap and contact terms.
-    const double p_in = problem_.loading ? problem_.loading->inner_pressure : 0.0;
-    const double p_out = problem_.loading ? problem_.loading->outer_pressure : 0.0;
-    FEFaceValues<2> fv(mapping(), fe_, face_quadrature_,
-                       update_values | update_gradients | update_quadrature_points |
-                         update_JxW_values);
-    const unsigned int n_fq = face_quadrature_.size();
-    std::vector<Vector<double>> uf(n_fq, Vector<double>(2));
-    std::vector<std::vector<Tensor<1, 2>>> gradf(n_fq, std::vector<Tensor<1, 2>>(2));
-    double work = 0, trace = 0, penalty_force = 0, penalty_energy = 0, b_c = 0, b_r = 0;
-    std::vector<std::pair<double, double>> gap_samples; // (z, g)
-    for (const auto &cell : dof_handler_.active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        {
-          if (!cell->face(f)->at_boundary())
-            continue;
-          const unsigned int id = cell->face(f)->boundary_id();
-          if (id != inner_boundary && !is_outer(id))
-            continue;
-          fv.reinit(cell, f);
-          fv.get_function_values(solution_, uf);
-          for (unsigned int q = 0; q < n_fq; ++q)
-            {
-              const double r = fv.quadrature_point(q)[0];
-              work += (id == inner_boundary ? p_in : -p_out) * uf[q][0] * r * fv.JxW(q);
-            }
-        }
-    if (problem_.die)
-      {
-        for (std::size_t k = 0; k < contact_faces_.size(); ++k)
-          {
-            const auto &[cell, f, die] = contact_faces_[k];
-            fv.reinit(cell, f);
-            fv.get_function_values(solution_, uf);
-            fv.get_function_gradients(solution_, gradf);
-            const bool prescribed_face = mode_ == Mode::bilateral &&
-                                         cell->face(f)->boundary_id() == outer_contact_boundary;
-            for (unsigned int q = 0; q < n_fq; ++q)
-              {
-                const Point<2> x = fv.quadrature_point(q);
-                const double w = x[0] * fv.JxW(q); // r ds with r = R2
-                const double target = axisym::die_u_r(*problem_.die, g, x[1]);
-                const double gap = uf[q][0] - target;
-                const Stress s =
-                  stress_at(x, strain(x[0], uf[q][0], gradf[q][0], gradf[q][1]));
-                trace += s[0] * fv.JxW(q);
-                const bool in_zone =
-                  active ? static_cast<bool>((*active)[k * n_fq + q]) : prescribed_face;
-                double p = -s[0];
-                if (active)
-                  {
-                    p = in_zone ? kappa_ * gap : 0.0;
-                    penalty_force += p * fv.JxW(q);
-                    if (in_zone)
-                      penalty_energy += 0.5 * kappa_ * gap * gap * w;
-                  }
-                if (in_zone)
-                  b_c += s[0] * target * w, b_r += s[0] * gap * w;
-                ev.max_penetration = std::max(ev.max_penetration, gap);
-                ev.pressure.push_back({x[1], x[0], x[1], p, -s[0], gap});
-                gap_samples.emplace_back(x[1], gap);
-              }
-          }
-        std::stable_sort(ev.pressure.begin(), ev.pressure.end(),
-                         [](const PressurePoint &a, const PressurePoint &b) { return a.z < b.z; });
-        std::stable_sort(gap_samples.begin(), gap_samples.end());
-      }
-
-    // Full body: twice the half section; forces also times 2 pi.
+    double work = 0, b_c = 0, b_r = 0, penalty_energy = 0;
+    outline_boundary_terms(work, b_c, b_r);
+    if (!dies_.empty())
+      evaluate_dies(active, ev, b_c, b_r, penalty_energy);
+    // DESIGN.md 3 with the thermal strain as an initial strain (axisymmetric_fem.h):
+    // W = int f.u_h r + int_St t.u_h r ds; the Castigliano functional carries
+    // -int s_h.e_th r; in Reissner's s.e(u) - 1/2 s.C s - s.e_th = U density for s = s_h.
+    // Every term for the whole body: times mirror_.
     Functionals &phi = ev.functionals;
-    phi.strain_energy = 2 * energy;
-    phi.external_work = 2 * work;
-    phi.penalty_energy = 2 * penalty_energy;
+    phi.penalty_energy = mirror * penalty_energy;
+    phi.strain_energy = mirror * energy;
+    phi.body_force_work = mirror * body_force_work;
+    phi.thermal_strain_work = mirror * thermal_strain_work;
+    phi.external_work = mirror * work + phi.body_force_work;
     phi.lagrange = phi.strain_energy - phi.external_work;
-    phi.castigliano = -phi.strain_energy + 2 * b_c;
-    phi.reissner = phi.strain_energy - phi.external_work - 2 * b_r;
-    ev.force = -2 * pi * 2 * reaction;
-    ev.force_trace = -2 * pi * r2 * 2 * trace;
-    ev.force_penalty = 2 * pi * r2 * 2 * penalty_force;
-
-    // Half-width (unilateral): zone_end from z = 0; (b) is the reported half_width.
-    ev.half_width = ev.half_width_gap = half_width_;
-    if (mode_ == Mode::unilateral && !gap_samples.empty())
-      std::tie(ev.half_width, ev.half_width_gap) = zone_end(gap_samples, g.half_length());
+    phi.castigliano = -phi.strain_energy - phi.thermal_strain_work + mirror * b_c;
+    phi.reissner = phi.strain_energy - phi.external_work - mirror * b_r;
     return ev;
   }
 
@@ -220,10 +127,14 @@ namespace fem::internal
   // penalty pressure kappa g on the active set, the trace -n.s_h n, the forces, the zone ends
   // (zone_end on each side of the centre), and the contact terms of the functionals:
   // b_c += int_A (n.s_h n) t r ds, b_r += int_A (n.s_h n) g r ds (the zone is S_c with u.n = t).
+  // A prescribed zone (bilateral): S_c is the faces inside it, the pressure the trace -n.s_h n,
+  // the force the reaction of the zone's constrained dofs, the zone the prescribed one.
+  // Forces for the whole body (times mirror_).
   void AxisymmetricSolver::evaluate_dies(const std::vector<char> *active, Evaluation &ev,
                                          double &b_c, double &b_r, double &penalty_energy) const
   {
     ev.dies.assign(dies_.size(), DieEvaluation{});
+    const bool bilateral = mode_ == Mode::bilateral;
     FEFaceValues<2> fv(mapping(), fe_, face_quadrature_,
                        update_values | update_gradients | update_quadrature_points |
                          update_JxW_values);
@@ -240,6 +151,9 @@ namespace fem::internal
         fv.reinit(face.cell, face.face);
         fv.get_function_values(solution_, u);
         fv.get_function_gradients(solution_, grad);
+        const auto f = face.cell->face(face.face);
+        const bool prescribed = bilateral && in_zone(d, d.frame.coordinate({f->vertex(0)[0], f->vertex(0)[1]})) &&
+                                in_zone(d, d.frame.coordinate({f->vertex(1)[0], f->vertex(1)[1]}));
         for (unsigned int q = 0; q < n_q; ++q)
           {
             const Point<2> x = fv.quadrature_point(q);
@@ -250,13 +164,15 @@ namespace fem::internal
             const double gap = u[q][0] * n[0] + u[q][1] * n[1] - target;
             const Stress st = stress_at(x, strain(x[0], u[q][0], grad[q][0], grad[q][1]));
             const double snn = st[0] * n[0] * n[0] + 2 * st[3] * n[0] * n[1] + st[1] * n[1] * n[1];
-            const bool in_zone = active && (*active)[k * n_q + q];
-            const double p = in_zone ? kappa_ * gap : 0.0;
-            de.force += 2 * pi * p * w;
-            de.force_trace -= 2 * pi * snn * w;
-            if (in_zone)
+            const bool penalized = active && (*active)[k * n_q + q];
+            const double p = bilateral ? -snn : penalized ? kappa_ * gap : 0.0;
+            if (!bilateral)
+              de.force += 2 * pi * mirror_ * p * w;
+            de.force_trace -= 2 * pi * mirror_ * snn * w;
+            if (penalized)
+              penalty_energy += 0.5 * kappa_ * gap * gap * w;
+            if (penalized || prescribed)
               {
-                penalty_energy += 0.5 * kappa_ * gap * gap * w;
                 b_c += snn * target * w;
                 b_r += snn * gap * w;
               }
@@ -276,7 +192,7 @@ namespace fem::internal
                          [](const PressurePoint &a, const PressurePoint &b) { return a.s < b.s; });
         // Each side of the centre as a zone from s = 0 outward (the gap beyond a flat
         // punch is -infinity: an open point).
-        const double tol = 1e-9 * problem_.body->outline.size();
+        const double tol = 1e-9 * body_.outline.size();
         std::vector<std::pair<double, double>> up, down;
         // Points beyond a flat punch's edge (no die surface: infinite gap) are left out, and
         // a zone that reaches the edge ends there.
@@ -293,10 +209,12 @@ namespace fem::internal
         std::stable_sort(up.begin(), up.end());
         std::stable_sort(down.begin(), down.end());
         const bool has_up = d.frame.s_max > tol, has_down = d.frame.s_min < -tol;
-        const auto [hi, hi_gap] =
+        auto [hi, hi_gap] =
           has_up ? zone_end(up, std::min(d.frame.s_max, extent)) : std::pair{0.0, 0.0};
-        const auto [lo, lo_gap] =
+        auto [lo, lo_gap] =
           has_down ? zone_end(down, std::min(-d.frame.s_min, extent)) : std::pair{0.0, 0.0};
+        if (bilateral)
+          hi = hi_gap = has_up ? d.zone_hi : 0.0, lo = lo_gap = has_down ? -d.zone_lo : 0.0;
         de.zone_lo = -lo, de.zone_hi = hi;
         de.two_edges = has_up && has_down;
         if (de.two_edges)
@@ -304,10 +222,26 @@ namespace fem::internal
         else
           de.half_width = has_up ? hi : lo, de.half_width_gap = has_up ? hi_gap : lo_gap;
       }
+    if (bilateral)
+      {
+        // The reaction of the zone: P = -2 pi R.n summed over the dofs the die holds (the
+        // residual R of a held dof is the support's force on the body, per radian).
+        const Vector<double> residual = support_residual();
+        for (const auto &[dof, held] : reaction_dofs_)
+          {
+            const std::string &part = body_.outline.edges()[held.edge].part;
+            for (std::size_t i = 0; i < dies_.size(); ++i)
+              if (dies_[i].part == part)
+                ev.dies[i].force -= 2 * pi * mirror_ * residual(dof) *
+                                    (held.component == 0 ? dies_[i].frame.normal.r
+                                                         : dies_[i].frame.normal.z);
+          }
+      }
     if (!ev.dies.empty())
       {
         const DieEvaluation &first = ev.dies.front();
-        ev.force = ev.force_penalty = first.force;
+        ev.force = first.force;
+        ev.force_penalty = bilateral ? 0.0 : first.force;
         ev.force_trace = first.force_trace;
         ev.half_width = first.half_width, ev.half_width_gap = first.half_width_gap;
         ev.max_penetration = first.max_penetration;
@@ -333,7 +267,7 @@ namespace fem::internal
           if (!cell->face(f)->at_boundary())
             continue;
           const axisym::PartCondition &c =
-            problem_.body->condition_of_edge(edge_of(cell->face(f)));
+            body_.condition_of_edge(edge_of(cell->face(f)));
           if (c.kind != Kind::pressure && c.kind != Kind::traction &&
               c.kind != Kind::displacement)
             continue;
@@ -370,26 +304,11 @@ namespace fem::internal
   // part it is the force that part exerts on the body (per radian). Summed per part and
   // component and times 2 pi: N for the full body. Taking v = e_z everywhere (e(v) = 0)
   // gives the global balance: the z reactions sum to minus the applied z load.
-  std::vector<PartReaction> AxisymmetricSolver::reactions() const
+  Vector<double> AxisymmetricSolver::support_residual() const
   {
-    using Kind = axisym::PartCondition::Kind;
-    const axisym::Body &body = *problem_.body;
-    std::vector<PartReaction> out;
-    std::map<std::string, std::size_t> index;
-    for (const std::string &part : body.outline.parts())
-      {
-        const Kind kind = body.conditions.at(part).kind;
-        if (kind != Kind::symmetry && kind != Kind::displacement)
-          continue;
-        index[part] = out.size();
-        PartReaction reaction;
-        reaction.part = part;
-        reaction.condition = axisym::to_string(kind);
-        out.push_back(reaction);
-      }
+    Vector<double> residual(dof_handler_.n_dofs());
     if (reaction_dofs_.empty())
-      return out;
-
+      return residual;
     FEValues<2> fe_values(mapping(), fe_, cell_quadrature_,
                           update_values | update_gradients | update_quadrature_points |
                             update_JxW_values);
@@ -401,13 +320,22 @@ namespace fem::internal
     std::vector<Vector<double>> u(n_q, Vector<double>(2));
     std::vector<std::vector<Tensor<1, 2>>> grad(n_q, std::vector<Tensor<1, 2>>(2));
     std::vector<types::global_dof_index> dofs(n);
-    Vector<double> cell_residual(n), cell_load(n), residual(dof_handler_.n_dofs());
+    Vector<double> cell_residual(n), cell_load(n);
+    // A cell contributes to a held dof directly, or through a hanging node whose masters
+    // include it (a coarse face next to finer cells).
+    auto reaches = [&](types::global_dof_index i) {
+      if (reaction_dofs_.count(i) > 0)
+        return true;
+      if (const auto *masters = hanging_node_constraints_.get_constraint_entries(i))
+        for (const auto &[master, weight] : *masters)
+          if (reaction_dofs_.count(master) > 0)
+            return true;
+      return false;
+    };
     for (const auto &cell : dof_handler_.active_cell_iterators())
       {
         cell->get_dof_indices(dofs);
-        if (std::none_of(dofs.begin(), dofs.end(), [&](types::global_dof_index i) {
-              return reaction_dofs_.count(i) > 0;
-            }))
+        if (std::none_of(dofs.begin(), dofs.end(), reaches))
           continue;
         fe_values.reinit(cell);
         fe_values.get_function_values(solution_, u);
@@ -431,36 +359,68 @@ namespace fem::internal
         cell_load = 0;
         add_outline_tractions(cell, face_values, cell_load);
         cell_residual -= cell_load;
-        for (unsigned int i = 0; i < n; ++i)
-          residual(dofs[i]) += cell_residual(i);
+        hanging_node_constraints_.distribute_local_to_global(cell_residual, dofs, residual);
       }
+    return residual;
+  }
+
+  std::vector<PartReaction> AxisymmetricSolver::reactions() const
+  {
+    using Kind = axisym::PartCondition::Kind;
+    const axisym::Body &body = body_;
+    std::vector<PartReaction> out;
+    std::map<std::string, std::size_t> index;
+    for (const std::string &part : body.outline.parts())
+      {
+        const Kind kind = body.conditions.at(part).kind;
+        if (kind != Kind::symmetry && kind != Kind::displacement)
+          continue;
+        index[part] = out.size();
+        PartReaction reaction;
+        reaction.part = part;
+        reaction.condition = axisym::to_string(kind);
+        out.push_back(reaction);
+      }
+    const Vector<double> residual = support_residual();
     for (const auto &[dof, held] : reaction_dofs_)
       {
-        PartReaction &reaction =
-          out[index.at(body.outline.edges()[held.edge].part)];
+        const auto it = index.find(body.outline.edges()[held.edge].part);
+        if (it == index.end())
+          continue; // a prescribed die zone: its force is the die's (evaluate_dies)
+        PartReaction &reaction = out[it->second];
         (held.component == 0 ? reaction.force_r : reaction.force_z) += 2 * pi * residual(dof);
       }
     return out;
   }
 
-  // Fields at the sample points; legacy: z < 0 mirrored (u_z and sigma_rz are odd in z).
-  // Outline: as given. A sample on an arc may lie just outside the Q_p image of the arc
+  // Fields at the sample points; a mirrored body's z < 0 by mirroring (u_z and sigma_rz are
+  // odd in z). A sample on an arc may lie just outside the Q_p image of the arc
   // (deal.II 9.4 then returns an invalid cell rather than throwing), so a miss is retried
   // with looser tolerances (unit-cell coordinates) and projected onto the unit cell; with
   // straight-sided cells the nearest boundary cell is taken.
   std::vector<FieldSample> AxisymmetricSolver::samples() const
   {
     using Found = std::pair<DoFHandler<2>::active_cell_iterator, Point<2>>;
+    // The cache holds the vertices and their cells once (without it every search collects
+    // the used vertices anew, the whole cost of thousands of samples); the last cell found
+    // is the hint for the next point.
+    const GridTools::Cache<2> cache(triangulation_, mapping());
+    Triangulation<2>::active_cell_iterator hint;
     const auto locate = [&](const Point<2> &x) -> Found {
-      if (!outline_)
-        return GridTools::find_active_cell_around_point(mapping(), dof_handler_, x);
       for (const double tolerance : {1e-10, 1e-6, 1e-3})
         {
           Found found;
           try
             {
-              found = GridTools::find_active_cell_around_point(mapping(), dof_handler_, x,
-                                                               {}, tolerance);
+              const auto [cell, unit] =
+                GridTools::find_active_cell_around_point(cache, x, hint, {}, tolerance);
+              if (cell.state() == IteratorState::valid)
+                {
+                  hint = cell;
+                  found = {DoFHandler<2>::active_cell_iterator(&triangulation_, cell->level(),
+                                                               cell->index(), &dof_handler_),
+                           unit};
+                }
             }
           catch (const std::exception &)
             {
@@ -498,7 +458,8 @@ namespace fem::internal
     std::vector<FieldSample> out;
     for (const auto &[r, z] : problem_.samples)
       {
-        const Point<2> x(r, outline_ ? z : std::abs(z));
+        const bool mirrored = body_.mirrored && z < 0;
+        const Point<2> x(r, mirrored ? -z : z);
         const Found found = locate(x);
         const Quadrature<2> point(std::vector<Point<2>>{found.second});
         FEValues<2> fv(mapping(), fe_, point, update_values | update_gradients);
@@ -508,7 +469,7 @@ namespace fem::internal
         fv.get_function_values(solution_, u);
         fv.get_function_gradients(solution_, grad);
         const Stress s = stress_at(x, strain(r, u[0][0], grad[0][0], grad[0][1]));
-        const double sign = !outline_ && z < 0 ? -1.0 : 1.0;
+        const double sign = mirrored ? -1.0 : 1.0;
         out.push_back({r, z, u[0][0], sign * u[0][1], {{s[0], s[1], s[2], sign * s[3]}}});
       }
     return out;
@@ -520,10 +481,8 @@ namespace fem::internal
     DataOut<2> data_out;
     data_out.attach_dof_handler(dof_handler_);
     data_out.add_data_vector(solution_, post);
-    if (outline_) // cells next to an arc are curved inside too (transfinite interpolation)
-      data_out.build_patches(mapping(), options_.degree, DataOut<2>::curved_inner_cells);
-    else
-      data_out.build_patches(mapping(), options_.degree);
+    // Cells next to an arc are curved inside too (transfinite interpolation).
+    data_out.build_patches(mapping(), options_.degree, DataOut<2>::curved_inner_cells);
     std::filesystem::create_directories(options_.vtu_directory);
     const std::filesystem::path path =
       std::filesystem::path(options_.vtu_directory) / "fem_solution.vtu";

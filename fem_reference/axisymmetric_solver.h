@@ -5,7 +5,7 @@
 // the axisymmetric_fem*.cc units include this.
 //
 //   axisymmetric_fem.cc                 options, fem::solve, the passes and the active-set loop
-//   axisymmetric_fem_mesh.cc            1. meshes (legacy, outline) and the refinement toward dies
+//   axisymmetric_fem_mesh.cc            1. the outline mesh and the refinement toward dies
 //   axisymmetric_fem_constraints.cc     2. dofs and constraints
 //   axisymmetric_fem_assembly.cc        3.-5. assembly, linear solves, penalty, force control,
 //                                       the active set
@@ -15,7 +15,6 @@
 #include "fem_reference/axisymmetric_fem.h"
 
 #include "fem_reference/body_loads.h"
-#include "fem_reference/half_section_mesh.h"
 #include "fem_reference/outline_mesh.h"
 
 #include <deal.II/base/convergence_table.h>
@@ -159,23 +158,6 @@ namespace fem::internal
     return d * elastic_strain(loads, r, z, e);
   }
 
-  /// u_r* on the contact zone as a 2-component function (u_z unconstrained: masked out).
-  class DieDisplacement : public Function<2>
-  {
-  public:
-    DieDisplacement(const axisym::Die &die, const axisym::Geometry &g)
-      : Function<2>(2), die_(die), geometry_(g)
-    {}
-    double value(const Point<2> &p, unsigned int component) const override
-    {
-      return component == 0 ? axisym::die_u_r(die_, geometry_, p[1]) : 0.0;
-    }
-
-  private:
-    axisym::Die die_;
-    axisym::Geometry geometry_;
-  };
-
   /// u and the four stresses for DataOut (x = r is taken from the evaluation points).
   class StressPostprocessor : public DataPostprocessor<2>
   {
@@ -278,22 +260,25 @@ namespace fem::internal
     double force = 0, force_trace = 0, force_penalty = 0, half_width = 0, half_width_gap = 0;
     double max_penetration = 0;
     std::vector<PressurePoint> pressure;
-    std::vector<DieEvaluation> dies; ///< outline dies
+    std::vector<DieEvaluation> dies;
     std::optional<double> error_sq, norm_sq;
     std::optional<double> error_max, norm_max;
     std::optional<double> u_error_sq, u_norm_sq;
   };
 
+  /// The solver of every problem: the section's outline (the hollow-cylinder form is its half
+  /// section, Body::mirrored), its conditions per part and its dies.
   class AxisymmetricSolver
   {
   public:
     AxisymmetricSolver(const axisym::Problem &problem, const FemOptions &options,
                        const StressFunction &exact, const DisplacementFunction &exact_u)
       : problem_(problem)
+      , body_(*problem.body)
       , options_(options)
       , exact_(exact)
       , exact_u_(exact_u)
-      , outline_(!problem.legacy_cylinder)
+      , mirror_(problem.body->mirrored ? 2.0 : 1.0)
       , fe_(FE_Q<2>(options.degree), 2)
       , dof_handler_(triangulation_)
       , d_(problem.material)
@@ -302,30 +287,22 @@ namespace fem::internal
       , face_quadrature_(options.contact_points > 0 ? options.contact_points
                                                     : options.degree + 1)
     {
-      if (!outline_)
-        mapping_ = std::make_unique<MappingQ1<2>>();
-      const double a = problem.geometry.half_length();
-      if (outline_)
-        for (const std::string &part : problem.body->die_parts())
-          {
-            OutlineDie d;
-            d.part = part;
-            d.boundary_id = boundary_id_of_part(problem.body->outline, part);
-            d.frame = axisym::die_frame(*problem.body, part);
-            d.condition = problem.body->conditions.at(part).die;
-            d.delta = d.condition.indentation.value_or(0.0);
-            dies_.push_back(d);
-            mode_ = Mode::unilateral;
-          }
-      if (!dies_.empty())
-        estimate_die_zones();
-      if (problem.die)
+      const bool fixed = problem.contact.method == "fixed";
+      for (const std::string &part : body_.die_parts())
         {
-          mode_ = problem.contact.method == "fixed" ? Mode::bilateral : Mode::unilateral;
-          half_width_ = mode_ == Mode::bilateral ? problem.contact.half_width.value_or(a) : a;
-          if (mode_ == Mode::bilateral)
-            split_ = half_width_;
+          OutlineDie d;
+          d.part = part;
+          d.boundary_id = boundary_id_of_part(body_.outline, part);
+          d.frame = axisym::die_frame(body_, part);
+          d.condition = body_.conditions.at(part).die;
+          d.delta = d.condition.indentation.value_or(0.0);
+          dies_.push_back(d);
+          mode_ = fixed ? Mode::bilateral : Mode::unilateral;
         }
+      if (mode_ == Mode::bilateral)
+        fix_die_zones();
+      else if (!dies_.empty())
+        estimate_die_zones();
     }
 
     FemResult run();
@@ -339,35 +316,42 @@ namespace fem::internal
       axisym::DieFrame frame;
       axisym::DieCondition condition;
       double delta = 0;           ///< the indentation: given, or found for the force
-      double zone_lo = 0, zone_hi = 0; ///< the zone [m along the part] the mesh resolves
+      /// The zone [m along the part]: the one the mesh resolves (unilateral), or the
+      /// prescribed one (bilateral, contact.method = "fixed").
+      double zone_lo = 0, zone_hi = 0;
     };
-    /// One boundary face on a die's part (legacy: r = R2, die 0).
+    /// One boundary face on a die's part.
     struct ContactFace
     {
       DoFHandler<2>::active_cell_iterator cell;
       unsigned int face = 0, die = 0;
     };
-    /// The die's outward normal and the target outward displacement u.n at x (+infinity
-    /// where there is no die surface: beyond a flat punch's edge).
+    /// The die's outward normal (that of its straight part).
     Tensor<1, 2> die_normal(unsigned int die) const
     {
       Tensor<1, 2> n;
-      if (outline_)
-        n[0] = dies_[die].frame.normal.r, n[1] = dies_[die].frame.normal.z;
-      else
-        n[0] = 1.0;
+      n[0] = dies_[die].frame.normal.r, n[1] = dies_[die].frame.normal.z;
       return n;
     }
+    /// The target outward displacement u.n at x (+infinity where there is no die surface:
+    /// beyond a flat punch's edge).
     double die_target(unsigned int die, const Point<2> &x) const
     {
-      if (!outline_)
-        return axisym::die_u_r(*problem_.die, problem_.geometry, x[1]);
       const OutlineDie &d = dies_[die];
       const double s = d.frame.coordinate({x[0], x[1]});
       return d.condition.profile.gap(std::abs(s)) - d.delta;
     }
+    /// Whether the point at s [m along the part] is in die d's zone (a relative tolerance).
+    bool in_zone(const OutlineDie &d, double s) const
+    {
+      const double tol = 1e-9 * body_.outline.size();
+      return s >= d.zone_lo - tol && s <= d.zone_hi + tol;
+    }
     /// Pass 0's estimate of each die's zone (see axisymmetric_fem.h, "Dies").
     void estimate_die_zones();
+    /// contact.method = "fixed": each die's zone is [centre - c, centre + c] along its part
+    /// (clipped to the part; c = contact.half_width, the whole part without it).
+    void fix_die_zones();
     /// Refines toward the dies' zones after the global refinements.
     void refine_toward_dies();
     enum class Mode
@@ -378,13 +362,15 @@ namespace fem::internal
     };
 
     void make_mesh();
-    void make_outline_mesh();
+    /// Bilateral: moves the boundary vertex nearest to each free end of a prescribed zone onto
+    /// that end.
+    void snap_zone_ends();
     void setup_system();
     void add_outline_constraints();
     void add_outline_tractions(const DoFHandler<2>::active_cell_iterator &cell,
                                FEFaceValues<2> &fv, Vector<double> &cell_rhs) const;
     void outline_boundary_terms(double &work, double &b_c, double &b_r) const;
-    /// Outline edge of a boundary face (its manifold id - 1, set in make_outline_mesh).
+    /// Outline edge of a boundary face (its manifold id - 1, set in make_mesh).
     int edge_of(const TriaIterator<TriaAccessor<1, 2, 2>> &face) const
     {
       return static_cast<int>(face->manifold_id()) - 1;
@@ -413,6 +399,11 @@ namespace fem::internal
     std::vector<char> active_set() const;
     Evaluation evaluate(const std::vector<char> *active) const;
     std::vector<FieldSample> samples() const;
+    /// The residual of the discrete equilibrium, R_i = int s_h.e(phi_i) r - int f.phi_i r -
+    /// int_St t.phi_i r ds, per radian, for the conforming basis functions phi_i (the cell
+    /// terms of hanging nodes distributed to their masters); meaningful at the dofs of
+    /// reaction_dofs_ (0 at the free dofs to the solver's accuracy).
+    Vector<double> support_residual() const;
     std::vector<PartReaction> reactions() const;
     void write_vtu() const;
     /// Total stress D (e - e_th) at x for the strain e of the solution there.
@@ -425,47 +416,47 @@ namespace fem::internal
       if (options_.progress)
         std::cerr << "fem: " << line << '\n';
     }
-    bool is_outer(unsigned int id) const
-    {
-      return id == outer_contact_boundary || id == outer_free_boundary;
-    }
 
     const axisym::Problem &problem_;
+    const axisym::Body &body_;
     FemOptions options_;
     StressFunction exact_;
     DisplacementFunction exact_u_;
-    bool outline_ = false; ///< an outline problem (DESIGN.md 7.1): the section as given
+    /// 2 for a mirrored body (the hollow-cylinder form: the half section stands for the
+    /// body and its mirror image in z = 0), else 1: the factor of every integral reported.
+    double mirror_ = 1.0;
     Mode mode_ = Mode::none;
-    double half_width_ = 0;
-    std::optional<double> split_; ///< z where the outer line is split (contact edge)
-    int level_ = 0;               ///< mesh level of the current pass
+    int level_ = 0; ///< mesh level of the current pass
 
     Triangulation<2> triangulation_;
     FESystem<2> fe_;
     DoFHandler<2> dof_handler_;
-    // MappingQ1 for the legacy rectangle; for an outline MappingQ(p) cached after the
-    // refinement. Declared after the triangulation: the cache listens to its signals.
+    // MappingQ(p) cached after the refinement (MappingQ1 on a polygon and for the
+    // straight-cell studies).
+    // Declared after the triangulation: the cache listens to its signals.
     std::unique_ptr<Mapping<2>> mapping_;
     double base_mesh_size_ = 0;
     unsigned long n_base_cells_ = 0;
     bool base_mesh_subdivided_ = false;
     unsigned int base_mesh_flat_corners_ = 0;
     Stiffness d_;
-    BodyLoadField loads_; ///< f and e_th (outline problems; none for the legacy form)
+    BodyLoadField loads_; ///< f and e_th
     QGauss<2> cell_quadrature_;
-    QGaussLobatto<1> face_quadrature_; // on r = R2: penalty, active set, traces
+    QGaussLobatto<1> face_quadrature_; // on the die parts: penalty, active set, traces
     AffineConstraints<double> constraints_;
+    /// The hanging-node part of constraints_ alone: residuals in the conforming basis.
+    AffineConstraints<double> hanging_node_constraints_;
     SparsityPattern sparsity_;
     SparseMatrix<double> base_matrix_, system_matrix_;
     Vector<double> base_rhs_, system_rhs_, solution_;
-    // Faces on r = R2, in cell order; contact quadrature point k * n_q + q.
+    // Faces on the die parts, in cell order; contact quadrature point k * n_q + q.
     std::vector<ContactFace> contact_faces_;
-    std::vector<OutlineDie> dies_; ///< outline problems
+    std::vector<OutlineDie> dies_;
     /// Force control: per force-controlled die, the right-hand side of a unit indentation.
     std::vector<Vector<double>> unit_rhs_;
-    /// Outline: the dofs whose residual is a support reaction, with the outline edge whose
-    /// condition (symmetry or displacement) holds them and their component (set in
-    /// add_outline_constraints).
+    /// The dofs whose residual is a support reaction, with the outline edge whose condition
+    /// (symmetry, displacement, or a prescribed die zone) holds them and their component (set
+    /// in add_outline_constraints).
     struct ReactionDof
     {
       int edge = 0;

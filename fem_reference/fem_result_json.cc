@@ -28,35 +28,25 @@ namespace fem
     j["problem"] = problem.source;
     const char *linear_solver =
       options.linear_solver == FemOptions::LinearSolver::direct ? "umfpack" : "cg-ssor";
-    if (!r.outline)
-      j["discretization"] = {
-        {"degree", r.degree},
-        {"refinements", r.refinements},
-        {"dofs", r.n_dofs},
-        {"cells", r.n_cells},
-        {"mesh", r.mesh_generator},
-        {"refinement_rule", "cells per line x 2^L, geometric grading q^(1/2^L) (nested)"},
-        {"base_cells", {options.base_cells_r, options.base_cells_z}},
-        {"grading", {options.radial_grading, options.axial_grading}},
-        {"linear_solver", linear_solver},
-        {"section", "upper half z in [0, length/2], symmetry plane z = 0"}};
-    else
-      j["discretization"] = {
-        {"degree", r.degree},
-        {"refinements", r.refinements},
-        {"dofs", r.n_dofs},
-        {"cells", r.n_cells},
-        {"mesh", r.mesh_generator},
-        {"refinement_rule", "L global refinements of the gmsh base mesh, new vertices on the "
-                            "arcs (manifolds), MappingQ(degree)"},
-        {"base_cells", r.n_base_cells},
-        {"base_mesh_size", r.base_mesh_size},
-        {"base_cells_on_shortest_edge", options.outline_cells_on_shortest_edge},
-        {"base_mesh_subdivided", r.base_mesh_subdivided},
-        {"base_mesh_flat_corners", r.base_mesh_flat_corners},
-        {"grading", nullptr},
-        {"linear_solver", linear_solver},
-        {"section", "the outline as given (geometry.outline), no mirroring"}};
+    j["discretization"] = {
+      {"degree", r.degree},
+      {"refinements", r.refinements},
+      {"dofs", r.n_dofs},
+      {"cells", r.n_cells},
+      {"mesh", r.mesh_generator},
+      {"refinement_rule", "L global refinements of the gmsh base mesh, new vertices on the "
+                          "arcs (manifolds), MappingQ(degree); refined toward the dies' zones"},
+      {"base_cells", r.n_base_cells},
+      {"base_mesh_size", r.base_mesh_size},
+      {"base_cells_on_shortest_edge", options.outline_cells_on_shortest_edge},
+      {"base_mesh_subdivided", r.base_mesh_subdivided},
+      {"base_mesh_flat_corners", r.base_mesh_flat_corners},
+      {"grading", nullptr},
+      {"linear_solver", linear_solver},
+      {"section", problem.body && problem.body->mirrored
+                    ? "upper half z in [0, length/2] as an outline, mirrored in z = 0 (the "
+                      "functionals, forces and norms are the whole body's)"
+                    : "the outline as given (geometry.outline), no mirroring"}};
     j["diagnostics"] = {{"status", r.success ? "ok" : "failed"}, {"message", r.message}};
     if (r.stress_l2_error)
       {
@@ -149,7 +139,7 @@ namespace fem
                          {"sigma_tt", s.sigma[2]},
                          {"sigma_rz", s.sigma[3]}});
     j["samples"] = samples;
-    if (r.outline)
+    if (!problem.legacy_cylinder)
       {
         // Support reactions [N, full 360 degree body] (axisymmetric_fem.h, PartReaction).
         nlohmann::json reactions = nlohmann::json::array();

@@ -1,9 +1,10 @@
 // fem_solve: the deal.II finite-element reference on one problem file.
 //
 // Solves the axisymmetric elastic problem of PROBLEM.json with Q_p elements (p = fem.degree)
-// on the gmsh mesh of level L (fem.refinements or --refinements): the hollow cylinder of
-// DESIGN.md section 7 on its half section z in [0, a], or any section given by its outline
-// (DESIGN.md 7.1) as given, curved edges represented at the element degree, with its body
+// on the gmsh mesh of level L (fem.refinements or --refinements) of the section's outline:
+// the hollow cylinder of DESIGN.md section 7 as its half section z in [0, a] (mirrored), or
+// any section given by its outline (DESIGN.md 7.1) as given, curved edges represented at the
+// element degree, with its body
 // loads (rotation, gravity, temperature; stresses reported are total stresses) and the
 // reactions of its support parts. Writes the result
 // JSON with the same keys as rfm_solve: discretization, the Lagrange/Castigliano/Reissner
@@ -35,7 +36,7 @@ int main(int argc, char **argv)
     {
       // 1. Command line.
       CLI::App app{"deal.II FEM reference (axisymmetric elasticity, die contact)"};
-      std::string problem_path, output_path, vtu_directory, mesh = "gmsh", solver = "direct";
+      std::string problem_path, output_path, vtu_directory, solver = "direct";
       int refinements = -1, edge_fitting_passes = -1, max_iterations = -1;
       double penalty_factor = -1;
       app.add_option("problem", problem_path, "problem file (JSON, SI units)")->required();
@@ -45,7 +46,6 @@ int main(int argc, char **argv)
       app.add_option("--vtu", vtu_directory,
                      "write DIR/fem_solution.vtu (u_r, u_z, stresses, the vector displacement); "
                      "DIR is created when missing");
-      app.add_option("--mesh", mesh, "mesh generator")->check(CLI::IsMember({"gmsh", "structured"}));
       app.add_option("--linear-solver", solver, "direct (UMFPACK) or cg (CG + SSOR)")
         ->check(CLI::IsMember({"direct", "cg"}));
       app.add_option("--penalty-factor", penalty_factor,
@@ -80,8 +80,6 @@ int main(int argc, char **argv)
         options.max_active_set_iterations = max_iterations;
       if (penalty_factor != -1)
         options.penalty_factor = penalty_factor;
-      options.mesh = mesh == "gmsh" ? fem::FemOptions::MeshGenerator::gmsh
-                                    : fem::FemOptions::MeshGenerator::structured;
       options.linear_solver = solver == "direct" ? fem::FemOptions::LinearSolver::direct
                                                  : fem::FemOptions::LinearSolver::cg;
       options.vtu_directory = vtu_directory;
@@ -98,10 +96,13 @@ int main(int argc, char **argv)
                                      ": must be a directory or creatable as one" +
                                      (ec ? " (" + ec.message() + ")" : std::string()));
         }
-      fmt::print(stderr, "fem_solve: Q{} elements, level L = {}, {} mesh, {} solver{}{}\n",
-                 options.degree, options.refinements, mesh, solver,
-                 problem.die ? ", contact.method = " + problem.contact.method : "",
-                 problem.legacy_cylinder ? "" : ", outline section");
+      fmt::print(stderr, "fem_solve: Q{} elements, level L = {}, gmsh mesh, {} solver{}{}\n",
+                 options.degree, options.refinements, solver,
+                 problem.body->die_parts().empty()
+                   ? ""
+                   : ", contact.method = " + problem.contact.method,
+                 problem.legacy_cylinder ? ", hollow cylinder (half section, mirrored)"
+                                         : ", outline section");
       if (problem.body_loads.any())
         {
           const axisym::BodyLoads &l = problem.body_loads;

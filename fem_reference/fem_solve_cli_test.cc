@@ -229,14 +229,19 @@ namespace
     fs::remove_all(dir);
   }
 
-  TEST(FemSolveCli, StructuredMeshOnAnOutlineExitsWith2)
+  // The hollow-cylinder form's die with an outer pressure: the outer side is the die's part.
+  TEST(FemSolveCli, HollowCylinderDieWithAnOuterPressureExitsWith2)
   {
-    const fs::path dir = scratch("structured");
-    const fs::path in = dir / "sphere.json";
-    std::ofstream(in) << sphere().dump();
-    const Outcome o = run(in.string() + " --mesh structured");
+    const fs::path dir = scratch("outer_pressure");
+    const fs::path in = dir / "die.json";
+    std::ofstream(in) << R"({
+      "geometry": {"inner_radius": 0.1, "outer_radius": 0.2, "length": 0.4},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3},
+      "loading": {"inner_pressure": 0.0, "outer_pressure": 1.0e6},
+      "die": {"indentation": 1.0e-6}})";
+    const Outcome o = run(in.string() + " --refinements 0");
     EXPECT_EQ(o.status, 2) << o.err;
-    EXPECT_NE(o.err.find("--mesh"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("loading.outer_pressure"), std::string::npos) << o.err;
     fs::remove_all(dir);
   }
 } // namespace

@@ -403,7 +403,8 @@ def comparison_section(cmp, die, paper_tables, out_dir):
     penalty = cmp.get("configuration", {}).get("fem", {}).get("penalty_factor")
     kappa = f" (kappa = {compact(penalty)} E/h)" if penalty is not None else ""
     md.append("Both methods read the same problem files. FEM: axisymmetric Q1/Q2 on gmsh quadrilateral meshes "
-              "of the same half section (graded toward r = R2 and the contact edge), UMFPACK, penalty "
+              "of the same half section as an outline (mirrored; refined toward the die's zone and its "
+              "edge), UMFPACK, penalty "
               f"active-set contact{kappa}; `--refinements L` halves the gmsh mesh size L times "
               f"(fem_reference/README.md). Times are wall-clock seconds on this machine, {threads_text(cmp['threads'])}, "
               "and include meshing, assembly and solve (RFM: assembly and solve; no eigenvalue diagnostics).")
@@ -1153,7 +1154,7 @@ def dies_section(dies, out_dir):
         md.append("The half section z >= 0 as an outline (not mirrored: the forces are the half body's), "
                   "the die on part `outer` centred on the mid-plane. The RFM's zone search on the outline "
                   "path against the rectangle model's on the hollow-cylinder form (its P halved), and the "
-                  "FEM on both geometry paths:")
+                  "FEM on both file forms (one geometry path: the hollow-cylinder form is this half section, mirrored):")
         md.append("")
         md.append("| p | c outline [m] | P outline [N] | solves | time [s] | c rectangle [m] | P rectangle / 2 [N] | time [s] |")
         md.append("|---|---|---|---|---|---|---|---|")
@@ -1164,8 +1165,8 @@ def dies_section(dies, out_dir):
                       f"{r['rectangle_force_half']:.2f} | {r['rectangle_seconds']:.2f} |")
         fe = o["fem"]
         md.append("")
-        md.append(f"FEM Q2: outline path (L = {fe['level_outline']}) c = {fe['outline_half_width']:.7f} m, "
-                  f"P = {fe['outline_force']:.2f} N; rectangle path (L = {fe['level_rectangle']}) "
+        md.append(f"FEM Q2 (one geometry path): outline file (L = {fe['level_outline']}) c = {fe['outline_half_width']:.7f} m, "
+                  f"P = {fe['outline_force']:.2f} N; hollow-cylinder file, mirrored (L = {fe['level_rectangle']}) "
                   f"c = {fe['rectangle_half_width']:.7f} m, P / 2 = {fe['rectangle_force_half']:.2f} N. "
                   f"The outline RFM against the outline FEM: c {o['outline_rfm_vs_fem_half_width']:.1e}, "
                   f"P {o['outline_rfm_vs_fem_force']:.1e}; against the rectangle RFM: P "

@@ -18,7 +18,8 @@
 //      The RFM (outline path, the punch's face as the zone) beside the FEM: P and K against p.
 //   5. The paper's die written as an outline (the half section, not mirrored): the RFM's
 //      zone search on the outline path, the rectangle model's search on the hollow-cylinder
-//      form (its P halved), and the FEM on both geometry paths.
+//      form (its P halved), and the FEM on the outline file and on the hollow-cylinder form
+//      (one geometry path: the same mesh, the same c, twice the force).
 //   6. The tolerance gate (verification/tolerances.json, entry "dies_on_parts").
 //
 // Sample run:
@@ -285,7 +286,7 @@ nlohmann::json run(const verification::DriverContext &context)
     results["ring"] = c;
   }
 
-  // 5. The paper's die as an outline: both RFM paths and both FEM paths.
+  // 5. The paper's die as an outline: both RFM paths; the FEM on both file forms.
   {
     const std::string file = "die_paper_outline.json";
     const axisym::Problem outline = axisym::read_problem_file(context.problem_path(file));
@@ -330,16 +331,18 @@ nlohmann::json run(const verification::DriverContext &context)
       }
     const int level = levels.back();
     const fem::FemResult fo = solve_fem(outline, level, "paper's die as an outline (FEM)");
-    const fem::FemResult fl = solve_fem(legacy, level + 1, "paper's die (FEM, rectangle)");
+    // The hollow-cylinder form is the same half section mirrored (one geometry path): at the
+    // same level, the same mesh, c and twice the force.
+    const fem::FemResult fl = solve_fem(legacy, level, "paper's die (FEM, hollow-cylinder form)");
     c["fem"] = {{"level_outline", level},
                 {"outline_half_width", fo.contact->half_width},
                 {"outline_force", fo.contact->force},
-                {"level_rectangle", level + 1},
+                {"level_rectangle", level},
                 {"rectangle_half_width", fl.contact->half_width},
                 {"rectangle_force_half", 0.5 * fl.contact->force}};
-    fmt::print("FEM: outline path L = {}: c = {:.7e} m, P = {:.7e} N; rectangle path L = {}: c = "
-               "{:.7e} m, P / 2 = {:.7e} N\n",
-               level, fo.contact->half_width, fo.contact->force, level + 1, fl.contact->half_width,
+    fmt::print("FEM: outline file L = {}: c = {:.7e} m, P = {:.7e} N; hollow-cylinder form L = {}: "
+               "c = {:.7e} m, P / 2 = {:.7e} N\n",
+               level, fo.contact->half_width, fo.contact->force, level, fl.contact->half_width,
                0.5 * fl.contact->force);
     const nlohmann::json &last = c["rfm"]["last"];
     c["outline_rfm_vs_fem_half_width"] =
