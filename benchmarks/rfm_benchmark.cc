@@ -1,5 +1,6 @@
 // Google Benchmark: RFM assembly and solve against the basis size N = (p+1)^2, for the
-// Lame cylinder and the die problem at a fixed contact zone, beside a dense reference
+// Lame cylinder and the die problem at a fixed contact zone, both on the outline model (the
+// only RFM model; the rectangle's tensor rule and Legendre basis), beside a dense reference
 // (Eigen GEMM and Cholesky) measured in the same run at the matching size, so that
 // assembly and solve are reported as fractions of this machine's dense speed.
 //
@@ -21,15 +22,16 @@
 #include "benchmarks/benchmark_problems.h"
 #include "benchmarks/dense_reference.h"
 #include "rfm/allocator.h"
-#include "rfm/assembly.h"
-#include "rfm/model.h"
+#include "rfm/contact.h"
 #include "rfm/hardware.h"
-#include "rfm/saddle_point_solver.h"
+#include "rfm/outline_model.h"
+#include "rfm/section_quadrature.h"
 
 #include <benchmark/benchmark.h>
 
 #include <cstring>
 #include <map>
+#include <memory>
 #include <string>
 #include <utility>
 
@@ -37,9 +39,27 @@ namespace
 {
   using benchmarks::make_problem;
 
-  std::optional<double> zone(const axisym::Problem &p)
+  // The model a user's solve builds: the outline model of the problem's body, with the die's
+  // zone [0, c] on `outer` (contact.h) for the die problem.
+  std::unique_ptr<rfm::OutlineModel> solved_model(const axisym::Problem &p, const int degree)
   {
-    return p.die ? p.contact.half_width : std::nullopt;
+    rfm::DiscretizationOptions o = p.rfm;
+    o.degree = degree;
+    rfm::SolverOptions so;
+    so.compute_diagnostics = false; // as a user's solve would not need them timed
+    if (p.die)
+      return rfm::solve_cylinder_zone(p, o, *p.contact.half_width, so);
+    return std::make_unique<rfm::OutlineModel>(p, o, so);
+  }
+
+  // The interior rule's size without a solve: the tensor rule of the split rectangle.
+  Eigen::Index quadrature_points(const axisym::Problem &p, const int degree)
+  {
+    std::vector<rfm::DieZone> zones;
+    if (p.die)
+      zones.push_back({"outer", 0.0, *p.contact.half_width, p.die->indentation});
+    const rfm::OutlineStructures s(*p.body, degree, zones);
+    return rfm::rectangle_gauss(s.body().outline, degree + p.rfm.extra_gauss_points).n_points();
   }
 
   // Reference rates, measured once per size in this process and shared by every point
@@ -61,25 +81,27 @@ namespace
     return it->second;
   }
 
+  // Assembly (OutlineModel::assembly_seconds: the rules, the basis and structure values,
+  // the system) and solve (solve_seconds) of the same model, timed by the model itself
+  // (manual time): each iteration builds and solves one model.
   void assembly(benchmark::State &state, bool die)
   {
     const axisym::Problem problem = make_problem(die);
-    rfm::DiscretizationOptions o;
-    o.degree = static_cast<int>(state.range(0));
-    const rfm::DiscreteSpace space(rfm::Structures(rfm::build_section(problem, zone(problem))), o, problem.material);
-    const Eigen::Index n = space.n_basis_functions(), n_q = space.quadrature().n_points();
-    const double flops = 24.0 * n * n * n_q;
-    // One untimed call: the heap then holds the system's memory, as in a driver's second
+    const int p = static_cast<int>(state.range(0));
+    // One untimed solve: the heap then holds the system's memory, as in a driver's second
     // solve (a single timed iteration of a large p would otherwise time the page faults).
-    rfm::AssemblyOptions ao;
-    ao.full_r11 = false; // as RfmModel assembles for the solver (the lower triangle of R11)
-    benchmark::DoNotOptimize(rfm::assemble_reissner_system(space, problem.material, ao));
+    std::unique_ptr<rfm::OutlineModel> m = solved_model(problem, p);
     for (auto _ : state)
-      benchmark::DoNotOptimize(rfm::assemble_reissner_system(space, problem.material, ao));
-    const double n_s = static_cast<double>(space.n_stress_unknowns());
-    const double n_u = static_cast<double>(space.n_displacement_unknowns());
+      {
+        m = solved_model(problem, p);
+        state.SetIterationTime(m->assembly_seconds());
+      }
+    const Eigen::Index n = m->n_basis_functions(), n_q = m->n_quadrature_points();
+    const double flops = 24.0 * n * n * n_q;
+    const double n_s = static_cast<double>(m->n_kept_unknowns()[0]);
+    const double n_u = static_cast<double>(m->n_kept_unknowns()[1]);
     state.counters["N"] = static_cast<double>(n);
-    state.counters["n_unknowns"] = 6.0 * n;
+    state.counters["n_unknowns"] = n_s + n_u;
     state.counters["n_quadrature_points"] = static_cast<double>(n_q);
     state.counters["flops"] = benchmark::Counter(flops, benchmark::Counter::kIsIterationInvariantRate);
     // basis values and derivatives at the points (3 n_q N) and the system written.
@@ -95,23 +117,19 @@ namespace
   void solve(benchmark::State &state, bool die)
   {
     const axisym::Problem problem = make_problem(die);
-    rfm::DiscretizationOptions o;
-    o.degree = static_cast<int>(state.range(0));
-    const rfm::DiscreteSpace space(rfm::Structures(rfm::build_section(problem, zone(problem))), o, problem.material);
-    rfm::AssemblyOptions ao;
-    ao.full_r11 = false;
-    const rfm::ReissnerSystem system = rfm::assemble_reissner_system(space, problem.material, ao);
-    rfm::SolverOptions so;
-    so.compute_diagnostics = false;
-    const Eigen::Index n = space.n_basis_functions();
-    const double flops = 72.0 * n * n * n;
-    benchmark::DoNotOptimize(rfm::solve_saddle_point(system, so)); // untimed, as above
+    const int p = static_cast<int>(state.range(0));
+    std::unique_ptr<rfm::OutlineModel> m = solved_model(problem, p); // untimed, as above
     for (auto _ : state)
-      benchmark::DoNotOptimize(rfm::solve_saddle_point(system, so));
-    const double n_s = static_cast<double>(space.n_stress_unknowns());
-    const double n_u = static_cast<double>(space.n_displacement_unknowns());
+      {
+        m = solved_model(problem, p);
+        state.SetIterationTime(m->solve_seconds());
+      }
+    const Eigen::Index n = m->n_basis_functions();
+    const double flops = 72.0 * n * n * n;
+    const double n_s = static_cast<double>(m->n_kept_unknowns()[0]);
+    const double n_u = static_cast<double>(m->n_kept_unknowns()[1]);
     state.counters["N"] = static_cast<double>(n);
-    state.counters["n_unknowns"] = 6.0 * n;
+    state.counters["n_unknowns"] = n_s + n_u;
     state.counters["flops"] = benchmark::Counter(flops, benchmark::Counter::kIsIterationInvariantRate);
     // the system read (R11, R12), and the factors of M and K.
     state.counters["working_set_bytes"] = 8.0 * (2.0 * n_s * n_s + n_s * n_u + n_u * n_u);
@@ -167,7 +185,7 @@ namespace
     b->ArgNames({"p"});
     for (int p = 0; p <= 20; p += (p < 4 ? 1 : 2))
       b->Arg(p);
-    b->Unit(benchmark::kMillisecond)->Complexity();
+    b->Unit(benchmark::kMillisecond)->UseManualTime()->Complexity();
   }
   // The references at the sizes of the sweep: GEMM on the quadratures of both problems,
   // Cholesky of n = 4N.
@@ -178,10 +196,7 @@ namespace
       for (bool die : {false, true})
         {
           const axisym::Problem problem = make_problem(die);
-          rfm::DiscretizationOptions o;
-          o.degree = p;
-          const rfm::DiscreteSpace space(rfm::Structures(rfm::build_section(problem, zone(problem))), o, problem.material);
-          b->Args({space.n_basis_functions(), space.quadrature().n_points()});
+          b->Args({static_cast<long>((p + 1) * (p + 1)), quadrature_points(problem, p)});
         }
     b->Unit(benchmark::kMillisecond);
   }

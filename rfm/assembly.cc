@@ -140,41 +140,6 @@ namespace rfm
 
   namespace
   {
-    // weight * t_m at the boundary points of the traction parts (t = sigma_nn n: the shear
-    // traction is zero there), 0 elsewhere: W_t(Phi) = sum_m (weighted t_m) . Phi_m.
-    std::array<Eigen::VectorXd, 2> weighted_tractions(const DiscreteSpace &space)
-    {
-      const BoundaryQuadrature &bq = space.boundary_quadrature();
-      const auto &parts = space.structures().section().parts();
-      std::array<Eigen::VectorXd, 2> w{Eigen::VectorXd::Zero(bq.weights.size()),
-                                       Eigen::VectorXd::Zero(bq.weights.size())};
-      for (Eigen::Index k = 0; k < bq.weights.size(); ++k)
-        {
-          const BoundaryPart &part = parts[bq.part[k]];
-          if (part.condition != Condition::traction)
-            continue;
-          w[0][k] = bq.weights[k] * part.normal_stress * bq.n_r[k];
-          w[1][k] = bq.weights[k] * part.normal_stress * bq.n_z[k];
-        }
-      return w;
-    }
-
-    // The legacy space's enrichment borders: the values at its near-edge rule, and the
-    // traction term of p_u on its boundary rule.
-    void add_edge_terms(const DiscreteSpace &space, const Material &material, ReissnerSystem &sys)
-    {
-      const Eigen::Index n_e = space.n_edge_columns();
-      add_enrichment_blocks(space.edge_measure(), space.edge_quadrature().r,
-                            space.edge_basis_values(), space.edge_stress_structure(),
-                            space.edge_displacement_structure(), space.edge_columns(), nullptr,
-                            nullptr, nullptr, material.compliance(), sys);
-      // p_u rows: - int_{S_t} t . Phi_e.
-      const BoundaryQuadrature &bq = space.boundary_quadrature();
-      const EdgeColumns be = space.enrichment()->evaluate(bq.r, bq.z);
-      const std::array<Eigen::VectorXd, 2> wt = weighted_tractions(space);
-      sys.p_u.tail(n_e) -= be.u[0].transpose() * wt[0] + be.u[1].transpose() * wt[1];
-    }
-
     // Columns [j0, j1) of the symmetric matrix whose lower triangle is `lower`, written
     // into dst. dst may be `lower` itself (then only its strict upper triangle changes,
     // and it reads nothing it writes), else it is written in full. The transposed reads
@@ -464,36 +429,5 @@ namespace rfm
       sys.p_s.segment(k * n, n) = bv.col(k);
     sys.p_u.segment(0, n) = bv.col(4) + bv_r.col(0) + bv_z.col(0);
     sys.p_u.segment(n, n) = bv.col(5) + bv_r.col(1) + bv_z.col(1);
-  }
-
-  ReissnerSystem assemble_reissner_system(const DiscreteSpace &space, const Material &material,
-                                          const AssemblyOptions &options)
-  {
-    const Eigen::Index n = space.n_basis_functions();
-    const Eigen::Index n_s = space.n_stress_unknowns(), n_u = space.n_displacement_unknowns();
-    // Every entry is written below: the polynomial blocks by add_polynomial_blocks, the
-    // borders by add_edge_terms; no zero fill of the large matrices.
-    // OpenBLAS on one thread for the whole assembly: the remaining products are small
-    // (boundary, enrichment borders), and an OpenBLAS call on two threads leaves its
-    // worker spinning for about 0.1 s, taking a core from the next assembly's threads.
-    const BlasThreadsOff one_blas_thread;
-    ReissnerSystem sys;
-    sys.r11.resize(n_s, n_s);
-    sys.r12.resize(n_s, n_u);
-    sys.p_s.setZero(n_s);
-    sys.p_u.setZero(n_u);
-    add_polynomial_blocks(space.measure(), space.quadrature().r, space.basis_values(),
-                          space.stress_structure(), space.displacement_structure(),
-                          material.compliance(), sys, options.chunk_points, options.full_r11);
-
-    const BoundaryQuadrature &bq = space.boundary_quadrature();
-    const BasisValues bb = space.basis().evaluate(bq.r, bq.z);
-    const DisplacementStructureValues bd = space.structures().displacement(bq.r, bq.z);
-    const std::array<Eigen::VectorXd, 2> wt = weighted_tractions(space);
-    for (int m = 0; m < 2; ++m)
-      sys.p_u.segment(m * n, n).noalias() -= bb.value.transpose() * bd.omega.col(m).cwiseProduct(wt[m]);
-    if (space.n_edge_columns() > 0)
-      add_edge_terms(space, material, sys);
-    return sys;
   }
 } // namespace rfm

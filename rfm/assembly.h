@@ -10,8 +10,7 @@
 //
 // with f the body force and e_th the thermal strain (DESIGN.md 7.1). This file assembles
 // the parts without them; the outline model (outline_model.h) subtracts the f and e_th
-// terms after add_polynomial_blocks. assemble_reissner_system (the legacy rectangle) has no
-// body loads, so there f = 0 and e_th = 0.
+// terms after add_polynomial_blocks, and adds the boundary and enrichment columns.
 //
 // with the stress basis X_{c,j} = omega_c phi_j e_c (c = rr, zz, tt, rz) and the
 // displacement basis Phi_{m,j} = omega_m phi_j e_m (m = r, z). Strain of a displacement
@@ -21,13 +20,15 @@
 // Every polynomial block is a dense product B^T G over the quadrature points, with B the
 // basis values and G = diag(w) B + diag(w_r) B_r + diag(w_z) B_z formed pointwise (w:
 // mu * omega_c * C_cl for R11, mu * omega_c times the strain's omega factors for R12).
-// The points are taken in chunks (AssemblyOptions::chunk_points) so that the chunk's B,
+// The points are taken in chunks (chunk_points of add_polynomial_blocks) so that the chunk's B,
 // B_r, B_z and G stay in L2 while the block GEMMs of the chunk run: assembly then runs
 // at GEMM speed instead of streaming n_q x N temporaries through memory. Each R11 block
 // B^T diag(w) B is symmetric: only its lower triangle is computed, then mirrored.
 #pragma once
 
-#include "rfm/discrete_space.h"
+#include "problem/settings.h"
+#include "rfm/basis.h"
+#include "rfm/edge_modes.h"
 #include "rfm/material.h"
 
 #include <Eigen/Core>
@@ -36,30 +37,33 @@
 
 namespace rfm
 {
-  /// Sizes: n_s = 4N + n_e stress and n_u = 2N + n_e displacement unknowns
-  /// (DiscreteSpace: the enrichment columns last).
+  /// The "rfm" settings of a problem file (problem/settings.h, with their ranges).
+  using DiscretizationOptions = axisym::RfmSettings;
+
+  /// Stress structure at points: columns in StressComponent order (n_points x 4).
+  struct StressStructureValues
+  {
+    Eigen::MatrixXd omega, s0;
+  };
+
+  /// Displacement structure at points: columns (u_r, u_z) (n_points x 2), with the
+  /// r and z derivatives of omega and u0.
+  struct DisplacementStructureValues
+  {
+    Eigen::MatrixXd omega, omega_r, omega_z, u0, u0_r, u0_z;
+  };
+
+  /// Sizes: n_s = 4N + n_b + n_e stress and n_u = 2N + n_e displacement unknowns (the
+  /// polynomial columns first, then the boundary columns, the enrichment columns last).
   struct ReissnerSystem
   {
     /// n_s x n_s, symmetric; only its lower triangle is written when the assembly was asked
-    /// for that alone (AssemblyOptions::full_r11 = false), the strict upper then unset.
+    /// for that alone (full_r11 = false below), the strict upper then unset.
     Eigen::MatrixXd r11;
     Eigen::MatrixXd r12; ///< n_s x n_u
     Eigen::VectorXd p_s; ///< n_s
     Eigen::VectorXd p_u; ///< n_u
   };
-
-  struct AssemblyOptions
-  {
-    /// Quadrature points per chunk; 0: assembly_chunk_points(N, l2_cache_bytes()).
-    Eigen::Index chunk_points = 0;
-    /// Also write R11's strict upper triangle (a transposing copy of the lower one). The
-    /// solver reads the lower triangle only, and RfmModel skips the copy: it took 0.39 ms
-    /// of a 7.4 ms one-thread assembly at Lame p = 14, and as long on two threads.
-    bool full_r11 = true;
-  };
-
-  ReissnerSystem assemble_reissner_system(const DiscreteSpace &space, const Material &material,
-                                          const AssemblyOptions &options = {});
 
   /// Points per chunk for N basis functions and an L2 cache of l2_bytes: the chunk's
   /// B, B_r, B_z and one weighted product (4 N doubles per point) fill half of L2 (the
@@ -80,7 +84,10 @@ namespace rfm
   /// The blocks of the polynomial columns (N per component, first in q_s and q_u) at
   /// quadrature points with per-radian measure mu: R11 and R12 blocks, p_s and the s0 part
   /// of p_u, written into the leading rows and columns of `sys` (sized by the caller;
-  /// nothing else is touched). chunk_points and full_r11 as in AssemblyOptions.
+  /// nothing else is touched). chunk_points: quadrature points per chunk (0:
+  /// assembly_chunk_points(N, l2_cache_bytes())). full_r11: also write R11's strict upper
+  /// triangle (a transposing copy of the lower one; the solver reads the lower one only: the
+  /// copy took 0.39 ms of a 7.4 ms one-thread assembly at Lame p = 14).
   void add_polynomial_blocks(const Eigen::Ref<const Eigen::VectorXd> &mu,
                              const Eigen::Ref<const Eigen::VectorXd> &r, const BasisValues &b,
                              const StressStructureValues &s, const DisplacementStructureValues &d,

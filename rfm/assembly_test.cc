@@ -1,34 +1,63 @@
 #include "rfm/assembly.h"
 
 #include "rfm/hardware.h"
-
-#include "rfm/test_sections.h"
+#include "rfm/outline_structures.h"
+#include "rfm/section_quadrature.h"
 
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
 namespace rfm
 {
-  using namespace rfm::testing;
-
   namespace
   {
-    DiscreteSpace make_space(int degree)
+    // The inputs of add_polynomial_blocks for the paper's die at c = 0.12 m (the hollow
+    // cylinder's half section with its zone): the tensor Legendre basis and the outline
+    // structures at the tensor rule graded toward the zone's end.
+    struct Inputs
     {
-      DiscretizationOptions o;
-      o.degree = degree;
-      return DiscreteSpace(Structures(die_section()), o, Material{});
+      Quadrature2D q;
+      Eigen::VectorXd mu;
+      BasisValues b;
+      StressStructureValues s;
+      DisplacementStructureValues d;
+      Eigen::Index n = 0;
+    };
+    Inputs make_inputs(const int degree)
+    {
+      const axisym::Problem p = axisym::parse_problem(nlohmann::json::parse(R"({
+        "geometry": {"inner_radius": 0.1, "outer_radius": 0.2, "length": 0.4},
+        "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3},
+        "die": {"indentation": 1.0e-6}})"));
+      const OutlineStructures structures(*p.body, degree, {DieZone{"outer", 0.0, 0.12, 1e-6}});
+      Inputs in;
+      in.q = rectangle_gauss(structures.body().outline, degree + 4);
+      in.mu = 2.0 * in.q.weights.cwiseProduct(in.q.r); // mirrored: both halves
+      const TensorLegendreBasis basis(degree, 0.1, 0.2, 0.0, 0.2);
+      in.b = basis.evaluate(in.q.r, in.q.z);
+      const OutlineStressValues s = structures.stress(in.q.r, in.q.z);
+      in.s = {s.omega, s.s0};
+      const OutlineDisplacementValues d = structures.displacement(in.q.r, in.q.z);
+      in.d = {d.omega, d.omega_r, d.omega_z, d.u0, d.u0_r, d.u0_z};
+      in.n = basis.n_basis_functions();
+      return in;
+    }
+    ReissnerSystem assemble(const Inputs &in, const Eigen::Index chunk = 0, const bool full = true)
+    {
+      ReissnerSystem sys;
+      sys.r11.setZero(4 * in.n, 4 * in.n);
+      sys.r12.setZero(4 * in.n, 2 * in.n);
+      sys.p_s.setZero(4 * in.n);
+      sys.p_u.setZero(2 * in.n);
+      add_polynomial_blocks(in.mu, in.q.r, in.b, in.s, in.d, Material{}.compliance(), sys, chunk,
+                            full);
+      return sys;
     }
   } // namespace
 
   TEST(Assembly, R11IsSymmetricNegativeDefinite)
   {
-    const DiscreteSpace space = make_space(3);
-    const ReissnerSystem sys = assemble_reissner_system(space, Material{});
-    const Eigen::Index n = space.n_basis_functions();
-    ASSERT_EQ(sys.r11.rows(), 4 * n + space.n_edge_columns());
-    ASSERT_EQ(space.n_edge_columns(), 2 * 6); // modes 1, 3 times the monomials of degree <= 2
-    ASSERT_EQ(sys.r12.cols(), 2 * n + space.n_edge_columns());
+    const ReissnerSystem sys = assemble(make_inputs(3));
     EXPECT_LT((sys.r11 - sys.r11.transpose()).cwiseAbs().maxCoeff(),
               1e-14 * sys.r11.cwiseAbs().maxCoeff());
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(sys.r11);
@@ -39,12 +68,11 @@ namespace rfm
   // blocks, so the thread count changes nothing, bit for bit.
   TEST(Assembly, ChunksAndThreadCountsChangeRoundingOnly)
   {
-    const DiscreteSpace space = make_space(4);
-    const Eigen::Index n_q = space.quadrature().n_points();
+    const Inputs in = make_inputs(4);
+    const Eigen::Index n_q = in.q.n_points();
     ASSERT_GT(n_q, 2 * min_chunk_points);
-    const ReissnerSystem one = assemble_reissner_system(space, Material{}, AssemblyOptions{n_q});
-    const ReissnerSystem many =
-      assemble_reissner_system(space, Material{}, AssemblyOptions{min_chunk_points});
+    const ReissnerSystem one = assemble(in, n_q);
+    const ReissnerSystem many = assemble(in, min_chunk_points);
     EXPECT_LT((one.r11 - many.r11).cwiseAbs().maxCoeff(), 1e-14 * one.r11.cwiseAbs().maxCoeff());
     EXPECT_LT((one.r12 - many.r12).cwiseAbs().maxCoeff(), 1e-14 * one.r12.cwiseAbs().maxCoeff());
     EXPECT_LT((one.p_s - many.p_s).cwiseAbs().maxCoeff(), 1e-14 * one.p_s.cwiseAbs().maxCoeff());
@@ -54,13 +82,10 @@ namespace rfm
     // count gives the same bits.
     const int threads = n_threads();
     set_n_threads(1);
-    const ReissnerSystem serial =
-      assemble_reissner_system(space, Material{}, AssemblyOptions{min_chunk_points});
+    const ReissnerSystem serial = assemble(in, min_chunk_points);
     set_n_threads(3);
-    const ReissnerSystem parallel =
-      assemble_reissner_system(space, Material{}, AssemblyOptions{min_chunk_points});
-    const ReissnerSystem again =
-      assemble_reissner_system(space, Material{}, AssemblyOptions{min_chunk_points});
+    const ReissnerSystem parallel = assemble(in, min_chunk_points);
+    const ReissnerSystem again = assemble(in, min_chunk_points);
     set_n_threads(threads);
     EXPECT_LT((serial.r11 - parallel.r11).cwiseAbs().maxCoeff(), 1e-14 * serial.r11.cwiseAbs().maxCoeff());
     EXPECT_LT((serial.r12 - parallel.r12).cwiseAbs().maxCoeff(), 1e-14 * serial.r12.cwiseAbs().maxCoeff());
@@ -68,7 +93,7 @@ namespace rfm
     EXPECT_TRUE(serial.p_u == parallel.p_u);
     EXPECT_TRUE(parallel.r11 == again.r11);
     EXPECT_TRUE(parallel.r12 == again.r12);
-    const Eigen::Index n_poly = 4 * space.n_basis_functions(); // polynomial blocks: mirrored
+    const Eigen::Index n_poly = 4 * in.n; // polynomial blocks: mirrored
     const Eigen::MatrixXd poly = parallel.r11.topLeftCorner(n_poly, n_poly);
     EXPECT_TRUE(poly == poly.transpose());
   }
@@ -85,19 +110,19 @@ namespace rfm
   // the strain formulas written out: an independent check of the GEMM formulation.
   TEST(Assembly, BlocksMatchScalarLoop)
   {
-    const DiscreteSpace space = make_space(2);
-    const ReissnerSystem sys = assemble_reissner_system(space, Material{});
-    const Eigen::Index n = space.n_basis_functions();
-    const auto &q = space.quadrature();
-    const auto &b = space.basis_values();
-    const auto &s = space.stress_structure();
-    const auto &d = space.displacement_structure();
+    const Inputs in = make_inputs(2);
+    const ReissnerSystem sys = assemble(in);
+    const Eigen::Index n = in.n;
+    const auto &q = in.q;
+    const auto &b = in.b;
+    const auto &s = in.s;
+    const auto &d = in.d;
     const Eigen::Matrix4d cm = Material{}.compliance();
     const int j = 4, l = 7; // a stress and a displacement coordinate function
     double rr_ur = 0, tt_ur = 0, rz_ur = 0, zz_uz = 0, rz_uz = 0, m_rr_tt = 0, m_rz_rz = 0;
     for (Eigen::Index k = 0; k < q.n_points(); ++k)
       {
-        const double mu = space.measure()[k], r = q.r[k];
+        const double mu = in.mu[k], r = q.r[k];
         const double phi = b.value(k, l);
         const double ur = d.omega(k, 0) * phi;
         const double ur_r = d.omega_r(k, 0) * phi + d.omega(k, 0) * b.d_r(k, l);
@@ -134,11 +159,9 @@ namespace rfm
   // alone; R12 and the loads are the same.
   TEST(Assembly, LowerTriangleOnlyMatchesTheFullAssembly)
   {
-    const DiscreteSpace space = make_space(6);
-    AssemblyOptions lower_only;
-    lower_only.full_r11 = false;
-    const ReissnerSystem full = assemble_reissner_system(space, Material{});
-    const ReissnerSystem lower = assemble_reissner_system(space, Material{}, lower_only);
+    const Inputs in = make_inputs(6);
+    const ReissnerSystem full = assemble(in);
+    const ReissnerSystem lower = assemble(in, 0, false);
     const Eigen::MatrixXd a = full.r11.triangularView<Eigen::Lower>();
     const Eigen::MatrixXd b = lower.r11.triangularView<Eigen::Lower>();
     EXPECT_TRUE(a == b);

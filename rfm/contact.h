@@ -1,7 +1,7 @@
 // Frictionless contact of the outer side r = R2 with a smooth rigid die (paper sections
 // 1, 2 and 4; DESIGN.md section 4.2): the contact half-width c is unknown.
 //
-// For a fixed c the bilateral problem is linear (model.h: u_r = u_r* on |z| <= c, free
+// For a fixed c the bilateral problem is linear (u_r = u_r* on |z| <= c, free
 // beyond). Its contact pressure is p(z) = -sigma_rr(R2, z); the structure forces p(c) = 0
 // at the zone edge, so a wrong c shows up as
 //   * condition 1.2 violated: tensile pressure p < 0 inside the zone (c too long), or
@@ -50,7 +50,6 @@
 // legacy_body: the half section, mirrored) with the zone [0, c] on the part `outer`.
 #pragma once
 
-#include "rfm/model.h"
 #include "rfm/outline_model.h"
 
 #include <functional>

@@ -1,9 +1,9 @@
 // rfm.tolerance (DESIGN.md / issue "accuracy, not degree"): solve at p = 2, 4, 6, ... until
-// the a-posteriori indicator |Phi_L - Phi_C| / |Phi_R| falls below a tolerance. Shared by
-// the hollow-cylinder model (model.h) and the outline model (outline_model.h).
+// the a-posteriori indicator |Phi_L - Phi_C| / |Phi_R| falls below a tolerance (the outline
+// model, outline_model.h: solve_outline_to_tolerance).
 #pragma once
 
-#include "rfm/discrete_space.h"
+#include "rfm/assembly.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,6 +1,7 @@
 #include "rfm/outline_model.h"
 
 #include "rfm/contact.h"
+#include "rfm/hardware.h"
 #include "rfm/section_quadrature.h"
 
 #include <Eigen/Eigenvalues>
@@ -303,6 +304,10 @@ namespace rfm
 
   ReissnerSystem OutlineModel::assemble()
   {
+    // OpenBLAS on one thread for the whole assembly: add_polynomial_blocks runs its own
+    // threads, the remaining products are small, and an OpenBLAS call on two threads leaves
+    // its worker spinning for about 0.1 s, taking a core from the next assembly's threads.
+    const BlasThreadsOff one_blas_thread;
     const Eigen::Index n = n_basis_functions(), n_b = structures_.n_boundary_columns();
     const Eigen::Index n_e = n_edge_columns();
     const Eigen::Index n_s = 4 * n + n_b + n_e, n_u = 2 * n + n_e;
@@ -792,6 +797,56 @@ namespace rfm
                                     fb.sigma(k, zz) * n.z * n.z - (t[0] * n.r + t[1] * n.z));
       }
     return {-2.0 * M_PI * (volume - traction_work), -2.0 * M_PI * trace};
+  }
+
+  double estimate_memory_bytes(const axisym::Problem &problem, const DiscretizationOptions &options)
+  {
+    const axisym::Body &body = *problem.body;
+    const double p = options.degree, n = (p + 1) * (p + 1);
+    const double n_dies = static_cast<double>(body.die_parts().size());
+    double n_q = 0;
+    if (is_axis_aligned_rectangle(body.outline))
+      {
+        // The tensor rule's cells: one more break (a zone's end) on each die part's side.
+        const axisym::BoundingBox b = body.outline.bounding_box();
+        const double tol = 1e-12 * body.outline.size();
+        std::vector<double> r_breaks, z_breaks;
+        for (const axisym::OutlineEdge &e : body.outline.edges())
+          {
+            std::vector<axisym::Point> points{e.start, e.end};
+            if (body.conditions.at(e.part).kind == axisym::PartCondition::Kind::die)
+              points.push_back(e.point_at(0.5));
+            for (const axisym::Point &v : points)
+              {
+                if (v.r > b.r_min + tol && v.r < b.r_max - tol)
+                  r_breaks.push_back(v.r);
+                if (v.z > b.z_min + tol && v.z < b.z_max - tol)
+                  z_breaks.push_back(v.z);
+              }
+          }
+        const double n_r = section_cells(b.r_min, b.r_max, options.n_cells_r, r_breaks,
+                                         options.n_graded_layers, options.grading_ratio).size() - 1.0;
+        const double n_z = section_cells(b.z_min, b.z_max, options.n_cells_z, z_breaks,
+                                         options.n_graded_layers, options.grading_ratio).size() - 1.0;
+        const double n_gauss = p + options.extra_gauss_points;
+        n_q = n_r * n_z * n_gauss * n_gauss;
+      }
+    else
+      {
+        // The section's rule has n^2 points per triangle; a zone's end adds two triangles.
+        SectionQuadratureOptions qo;
+        qo.n_points = 2 * options.degree + options.extra_gauss_points;
+        const double per_triangle = static_cast<double>(qo.n_points) * qo.n_points;
+        n_q = static_cast<double>(section_gauss(body.outline, qo).n_points()) + 2.0 * n_dies * per_triangle;
+      }
+    const double n_near = p + options.extra_gauss_points + options.edge_extra_points;
+    const double n_ends = options.edge_modes > 0 ? 2.0 * n_dies : 0.0;
+    const double n_eq = n_ends * 2.0 * n_near * n_near;
+    const double n_e = n_ends * options.edge_modes * (options.edge_mode_degree + 1.0) *
+                       (options.edge_mode_degree + 2.0) / 2.0;
+    const double n_s = 4 * n + n_e, n_u = 2 * n + n_e;
+    return 8.0 * (14.0 * n_q * n + 20.0 * n_eq * n_s + 4.0 * n_s * n_s + 3.0 * n_s * n_u +
+                  4.0 * n_u * n_u);
   }
 
   DegreeSequence<OutlineModel> solve_outline_to_tolerance(const axisym::Problem &problem,

@@ -198,6 +198,14 @@ namespace rfm
     Eigen::MatrixXd gram_e_; ///< Gram matrix of the enrichment's displacement columns
   };
 
+  /// Peak memory of one OutlineModel solve at options.degree [bytes], estimated before any
+  /// allocation: the quadrature points (the body's rule, with the cells or triangles one zone's
+  /// end adds per die part) times the basis size for the ~14 dense point-by-function matrices
+  /// of assembly, the near-edge rules' ~20 matrices of all stress columns (two free ends per
+  /// die part at most), and the saddle-point matrices with the transform's eigenvectors (R11,
+  /// R12, their factors, the Schur complement). Boundary columns are left out (a few per edge).
+  double estimate_memory_bytes(const axisym::Problem &problem, const DiscretizationOptions &options);
+
   /// rfm.tolerance for an outline problem (degree_sequence.h).
   DegreeSequence<OutlineModel> solve_outline_to_tolerance(const axisym::Problem &problem,
                                                           const DiscretizationOptions &options,

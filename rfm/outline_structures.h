@@ -18,8 +18,8 @@
 //
 // 3. Structures. The S edges are of two kinds. A lone straight edge along z (normal +-e_r; a
 //    chain of one) prescribes sigma_rr and sigma_rz only, one along r (normal +-e_z) sigma_zz
-//    and sigma_rz: the other normal stress is free there, as in the rectangle's structures
-//    (structures.h). Every other S edge (arcs, inclined lines, the edges of a smooth chain of
+//    and sigma_rz: the other normal stress is free there, as in the structures of the paper's
+//    rectangle. Every other S edge (arcs, inclined lines, the edges of a smooth chain of
 //    several) prescribes the whole traction, and its tangential normal stress is left free by
 //    boundary columns B_e (the set G). With omega_T = prod over the smooth chains C of S edges
 //    of omega_C, omega_rr (omega_zz) the same product without the lone edges along r (along

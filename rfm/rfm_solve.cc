@@ -13,7 +13,6 @@
 // Exit status: 0 success, 2 bad input (nothing written), 3 numerical failure.
 #include "rfm/allocator.h"
 #include "rfm/contact.h"
-#include "rfm/model.h"
 #include "rfm/outline_contact.h"
 #include "rfm/outline_model.h"
 #include "rfm/vtu_output.h"
@@ -428,15 +427,9 @@ int main(int argc, char **argv)
         axisym::check_output_path("--output", output_path);
       if (!vtu_directory.empty())
         axisym::ensure_output_directory("--vtu", vtu_directory);
-      if (!problem.legacy_cylinder)
-        return solve_outline(problem, target_indicator, output_path, vtu_directory);
       {
         // Memory: estimated before any allocation, against the machine's physical memory.
-        const double bytes = rfm::estimate_memory_bytes(
-          problem, problem.rfm,
-          problem.die ? std::optional<double>(problem.contact.half_width.value_or(
-                          problem.geometry.half_length()))
-                      : std::nullopt);
+        const double bytes = rfm::estimate_memory_bytes(problem, problem.rfm);
         const double available = static_cast<double>(sysconf(_SC_PHYS_PAGES)) *
                                  static_cast<double>(sysconf(_SC_PAGE_SIZE));
         if (bytes > 0.75 * available)
@@ -447,6 +440,8 @@ int main(int argc, char **argv)
             problem.rfm.degree, problem.rfm.extra_gauss_points, problem.rfm.n_graded_layers,
             problem.rfm.n_cells_r, problem.rfm.n_cells_z, bytes / (1 << 30), available / (1 << 30)));
       }
+      if (!problem.legacy_cylinder)
+        return solve_outline(problem, target_indicator, output_path, vtu_directory);
 
       // 3. Solve: one linear solve, a degree sequence to a tolerance, or the contact search
       //    for a die problem.

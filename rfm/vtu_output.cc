@@ -7,15 +7,6 @@
 
 namespace rfm
 {
-  std::string fields_vtu(const RfmModel &model, const VtuGrid &grid)
-  {
-    return fields_vtu(
-      [&](const Eigen::Ref<const Eigen::VectorXd> &r, const Eigen::Ref<const Eigen::VectorXd> &z) {
-        return model.evaluate(r, z);
-      },
-      grid);
-  }
-
   std::string fields_vtu(const FieldEvaluator &evaluate, const VtuGrid &grid,
                          const std::function<bool(double, double)> &inside)
   {

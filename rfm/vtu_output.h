@@ -7,7 +7,7 @@
 // sigma_tt, sigma_rz [Pa]; displacement = (u_r, u_z, 0) [m] as one vector (Warp By Vector).
 #pragma once
 
-#include "rfm/model.h"
+#include "rfm/solution.h"
 
 #include <functional>
 #include <string>
@@ -26,6 +26,4 @@ namespace rfm
   /// (the others are written as 0 and belong to no cell).
   std::string fields_vtu(const FieldEvaluator &evaluate, const VtuGrid &grid,
                          const std::function<bool(double, double)> &inside = {});
-  /// The same for a solved hollow-cylinder model. Precondition: model.ok().
-  std::string fields_vtu(const RfmModel &model, const VtuGrid &grid);
 } // namespace rfm
