@@ -637,7 +637,8 @@ namespace axisym
                              {"degree", "tolerance", "max_degree", "extra_gauss_points",
                               "n_cells_r", "n_cells_z",
                               "n_graded_layers", "grading_ratio", "edge_modes", "edge_cutoff",
-                              "edge_extra_points", "edge_mode_degree"});
+                              "edge_extra_points", "edge_mode_degree", "local_levels",
+                              "local_degree", "local_first_box", "local_max_box"});
         if (r.has("degree") && r.has("tolerance"))
           fail("rfm", top.at("rfm"), "give rfm.degree (fixed p) or rfm.tolerance (p rises "
                                      "until the indicator is below it), not both");
@@ -679,6 +680,16 @@ namespace axisym
           p.rfm.edge_extra_points = r.integer("edge_extra_points", ranges::rfm_edge_extra_points);
         if (r.has("edge_mode_degree"))
           p.rfm.edge_mode_degree = r.integer("edge_mode_degree", ranges::rfm_edge_mode_degree);
+        if (r.has("local_levels"))
+          p.rfm.local_levels = r.integer("local_levels", ranges::rfm_local_levels);
+        if (r.has("local_degree"))
+          p.rfm.local_degree = r.integer("local_degree", ranges::rfm_local_degree);
+        if (r.has("local_first_box"))
+          p.rfm.local_first_box =
+            r.number("local_first_box", "must be in (1, 10]", [](double x) { return x > 1 && x <= 10; });
+        if (r.has("local_max_box"))
+          p.rfm.local_max_box =
+            r.number("local_max_box", "must be in (0, 1]", [](double x) { return x > 0 && x <= 1; });
       }
     if (top.has("fem"))
       {

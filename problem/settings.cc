@@ -29,6 +29,14 @@ namespace axisym
     ranges::rfm_edge_extra_points.check(edge_extra_points);
     ranges::rfm_edge_mode_degree.check(edge_mode_degree);
     ranges::rfm_max_degree.check(max_degree);
+    ranges::rfm_local_levels.check(local_levels);
+    ranges::rfm_local_degree.check(local_degree);
+    if (!(local_first_box > 1.0 && local_first_box <= 10.0))
+      throw InputError("rfm.local_first_box = " + std::to_string(local_first_box) +
+                       ": must be in (1, 10] (the smallest box must hold the zone)");
+    if (!(local_max_box > 0.0 && local_max_box <= 1.0))
+      throw InputError("rfm.local_max_box = " + std::to_string(local_max_box) +
+                       ": must be in (0, 1] (a fraction of the section's smaller side)");
     if (tolerance && !(*tolerance >= min_tolerance && *tolerance <= 0.1))
       throw InputError("rfm.tolerance = " + std::to_string(*tolerance) +
                        ": must be in [1e-14, 0.1] (the indicator |Phi_L - Phi_C| / |Phi_R| "

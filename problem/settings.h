@@ -36,6 +36,10 @@ namespace axisym
     inline constexpr IntRange rfm_edge_extra_points{"rfm.edge_extra_points", 0, 40};
     inline constexpr IntRange rfm_edge_mode_degree{
       "rfm.edge_mode_degree", 0, 6, "each edge mode times the monomials of this total degree"};
+    inline constexpr IntRange rfm_local_levels{
+      "rfm.local_levels", -1, 8, "-1: as many as the zone's size asks for; 0: none"};
+    inline constexpr IntRange rfm_local_degree{"rfm.local_degree", 0, 12,
+                                               "per direction, in each local box"};
     inline constexpr IntRange fem_degree{"fem.degree", 1, 4, "FE_Q(p)"};
     inline constexpr IntRange fem_refinements{"fem.refinements", 0, 6,
                                               "level 6 already has 131072 cells"};
@@ -75,6 +79,15 @@ namespace axisym
     /// Each edge mode is multiplied by the monomials of the scaled offsets from the edge up
     /// to this total degree ((d + 1)(d + 2)/2 columns per mode; 0: the modes alone).
     int edge_mode_degree = 2;
+    /// Local resolution near a die's zone (rfm/local_basis.h): nested boxes of half sizes
+    /// local_first_box c, twice that, ... up to local_max_box times the section's smaller
+    /// side (c the zone's extent from its centre), each with the tensor Legendre polynomials of
+    /// degree local_degree times a cutoff. -1: as many boxes as fit (none when the zone is
+    /// comparable to the section, as the paper's die); 0: none; k > 0: at most k.
+    int local_levels = -1;
+    int local_degree = 5;
+    double local_first_box = 2.0;
+    double local_max_box = 0.6;
 
     /// Throws InputError naming the field, the value and the rule.
     void validate() const;

@@ -1,10 +1,130 @@
 #include "rfm/outline_contact.h"
 
+#include <Eigen/Dense>
+
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace rfm
 {
+  namespace
+  {
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+    /// The bilateral solves of one problem's die: a zone [s_lo, s_hi] in, P, K at the free
+    /// ends and delta out, by indentation or by force (the header's linearity).
+    class ZoneSolver
+    {
+    public:
+      ZoneSolver(const axisym::Problem &problem, const DiscretizationOptions &discretization,
+                 const std::string &part, OutlineContactResult &result)
+        : problem_(problem)
+        , options_(discretization)
+        , part_(part)
+        , die_(problem.body->conditions.at(part).die)
+        , result_(result)
+      {}
+
+      /// The local boxes every later solve uses (those of `estimate`).
+      void fix_local_basis(const DieZone &estimate)
+      {
+        local_ = die_local_basis(problem_, {estimate}, options_);
+      }
+
+      OutlineContactStep solve(const double s_lo, const double s_hi, const std::string &phase)
+      {
+        OutlineContactStep step;
+        step.zone = {s_lo, s_hi};
+        step.half_width = std::max(std::abs(s_lo), std::abs(s_hi));
+        step.phase = phase;
+        if (die_.indentation)
+          {
+            auto model = make_model(s_lo, s_hi, *die_.indentation);
+            record(*model, step, *die_.indentation);
+            const Functionals phi = model->functionals();
+            step.lagrange = phi.lagrange, step.castigliano = phi.castigliano,
+            step.reissner = phi.reissner;
+            result_.model = std::move(model);
+          }
+        else
+          {
+            // Affine in delta: two solves, then the delta that carries the force.
+            const double delta_a = 0.0,
+                         delta_b = std::max(die_.profile.gap(step.half_width),
+                                            1e-6 * problem_.body->outline.size());
+            OutlineContactStep a, b;
+            record(*make_model(s_lo, s_hi, delta_a), a, delta_a);
+            record(*make_model(s_lo, s_hi, delta_b), b, delta_b);
+            if (!(std::abs(b.force - a.force) > 0.0))
+              throw std::runtime_error("the force does not change with the indentation at the zone [" +
+                                       std::to_string(s_lo) + ", " + std::to_string(s_hi) + "] m");
+            const double t = (*die_.force - a.force) / (b.force - a.force);
+            step.indentation = delta_a + t * (delta_b - delta_a);
+            step.force = a.force + t * (b.force - a.force);
+            step.force_trace = a.force_trace + t * (b.force_trace - a.force_trace);
+            for (std::size_t i = 0; i < a.edge_intensities.size(); ++i)
+              step.edge_intensities.push_back(a.edge_intensities[i] +
+                                              t * (b.edge_intensities[i] - a.edge_intensities[i]));
+            step.edge_intensity = step.edge_intensities.empty() ? nan : step.edge_intensities[0];
+            step.lagrange = step.castigliano = step.reissner = nan;
+            result_.model.reset();
+          }
+        result_.zone = DieZone{part_, s_lo, s_hi, step.indentation};
+        result_.history.push_back(step);
+        return step;
+      }
+
+      /// The model at the zone found, at its delta (force control: one more solve).
+      void finish()
+      {
+        if (!result_.model)
+          result_.model = make_model(result_.zone.s_lo, result_.zone.s_hi, result_.zone.indentation);
+      }
+
+    private:
+      std::unique_ptr<OutlineModel> make_model(const double s_lo, const double s_hi,
+                                               const double delta) const
+      {
+        const DieZone zone{part_, s_lo, s_hi, delta};
+        auto model = std::make_unique<OutlineModel>(problem_, options_, SolverOptions{},
+                                                    std::vector<DieZone>{zone}, local_);
+        if (!model->ok())
+          throw std::runtime_error("the solve at the zone [" + std::to_string(s_lo) + ", " +
+                                   std::to_string(s_hi) + "] m failed: " + model->summary().message);
+        return model;
+      }
+      static void record(const OutlineModel &model, OutlineContactStep &step, const double delta)
+      {
+        const OutlineModel::DieForce force = model.die_force(model.zones().at(0).part);
+        step.force = force.domain, step.force_trace = force.trace;
+        step.indentation = delta;
+        step.edge_intensities.clear();
+        for (std::size_t i = 0; i < model.n_zone_edges(); ++i)
+          step.edge_intensities.push_back(model.edge_intensity(i));
+        step.edge_intensity = step.edge_intensities.empty() ? nan : step.edge_intensities[0];
+      }
+
+      const axisym::Problem &problem_;
+      DiscretizationOptions options_;
+      std::string part_;
+      const axisym::DieCondition &die_;
+      OutlineContactResult &result_;
+      std::optional<LocalBasis> local_;
+    };
+
+    /// The distance from the centre where the die's surface reaches the undeformed part
+    /// (g0(s) = delta), at least 2 % of the extent; half the extent if it does not.
+    double overlap_end(const axisym::DieProfile &profile, const double delta, const double extent)
+    {
+      for (double s = 0.0; s < extent; s += 1e-3 * extent)
+        if (profile.gap(s) >= delta)
+          return std::max(s, 0.02 * extent);
+      return 0.5 * extent;
+    }
+  } // namespace
+
   OutlineContactResult solve_outline_contact(const axisym::Problem &problem,
                                              const DiscretizationOptions &discretization,
                                              const OutlineContactOptions &options)
@@ -13,44 +133,19 @@ namespace rfm
     const std::string &part = parts.at(0);
     const axisym::DieFrame f = axisym::die_frame(*problem.body, part);
     const axisym::DieCondition &die = problem.body->conditions.at(part).die;
-    if (!die.indentation)
-      throw axisym::InputError("boundary." + part + ".die.force: the RFM takes an indentation on "
-                               "an outline part so far (fem_solve takes a force)");
     const double tol = 1e-9 * problem.body->outline.size();
-    const bool up = f.s_max > tol, down = f.s_min < -tol;
+    const bool up = f.s_max > tol, down = f.s_min < -tol, two_ends = up && down;
     const axisym::DieProfile &profile = die.profile;
     const bool flat = profile.shape == axisym::DieProfile::Shape::flat;
-    if (up && down && !flat)
-      throw axisym::InputError("boundary." + part + ".die.center: the RFM's search takes a zone "
-                               "with one free end (the centre at the part's end on a symmetry "
-                               "edge or the axis) so far; give contact.method \"fixed\" with "
-                               "half_width, or use fem_solve");
-    const double extent = up ? f.s_max : -f.s_min;
-    const double delta = *die.indentation;
-
-    OutlineContactResult result;
-    auto solve = [&](double c, const std::string &phase) -> double {
-      const DieZone zone{part, up ? 0.0 : -c, up ? c : 0.0, delta};
-      auto model = std::make_unique<OutlineModel>(problem, discretization, SolverOptions{},
-                                                  std::vector<DieZone>{zone});
-      if (!model->ok())
-        throw std::runtime_error("the solve at c = " + std::to_string(c) +
-                                 " m failed: " + model->summary().message);
-      OutlineContactStep step;
-      step.half_width = c;
-      step.phase = phase;
-      const OutlineModel::DieForce force = model->die_force(part);
-      step.force = force.domain, step.force_trace = force.trace;
-      step.edge_intensity = model->n_zone_edges() > 0 ? model->edge_intensity(0)
-                                                             : std::numeric_limits<double>::quiet_NaN();
-      const Functionals phi = model->functionals();
-      step.lagrange = phi.lagrange, step.castigliano = phi.castigliano, step.reissner = phi.reissner;
-      result.history.push_back(step);
-      result.zone = zone;
-      result.model = std::move(model);
-      return step.edge_intensity;
+    // The extent: the part's length from the centre on the free side(s).
+    const double extent = two_ends ? std::min(f.s_max, -f.s_min) : (up ? f.s_max : -f.s_min);
+    auto zone_of = [&](const double c) {
+      return two_ends ? std::array<double, 2>{-c, c}
+                      : (up ? std::array<double, 2>{0.0, c} : std::array<double, 2>{-c, 0.0});
     };
 
+    OutlineContactResult result;
+    ZoneSolver solver(problem, discretization, part, result);
     try
       {
         if (discretization.edge_modes == 0)
@@ -60,35 +155,86 @@ namespace rfm
         // singular there; K is its intensity).
         if (flat)
           {
-            const double b = profile.radius;
-            if (up && down)
-              {
-                const DieZone zone{part, -b, b, delta};
-                result.model = std::make_unique<OutlineModel>(problem, discretization,
-                                                              SolverOptions{},
-                                                              std::vector<DieZone>{zone});
-                if (!result.model->ok())
-                  throw std::runtime_error("the solve on the punch's face failed: " +
-                                           result.model->summary().message);
-                result.zone = zone;
-              }
-            else
-              solve(b, "flat face");
+            const auto z = zone_of(profile.radius);
+            solver.fix_local_basis({part, z[0], z[1], 0.0});
+            solver.solve(z[0], z[1], "flat face");
+            solver.finish();
             result.success = true;
             result.message = "a flat punch with a sharp edge: the zone is its face";
             return result;
           }
-        // 1. Bracket: from where the die's surface reaches the undeformed part (g0 = delta,
-        //    an upper bound of Hertz's zone) steps by a factor toward the root until K changes
-        //    sign.
-        double c_a = 0.5 * extent;
-        for (double s = 0.0; s < extent; s += 1e-3 * extent)
-          if (profile.gap(s) >= delta)
-            {
-              c_a = std::max(s, 0.02 * extent);
-              break;
-            }
-        double k_a = solve(c_a, "bracket");
+        // 0. The first estimate: g0 = delta (under force control, delta from a zone of a tenth
+        //    of the extent first).
+        double delta = die.indentation ? *die.indentation : 0.0;
+        if (!die.indentation)
+          {
+            const auto z = zone_of(0.1 * extent);
+            solver.fix_local_basis({part, z[0], z[1], 0.0});
+            delta = solver.solve(z[0], z[1], "estimate").indentation;
+            if (!(delta > 0.0))
+              throw std::runtime_error("the force gives no indentation (delta = " +
+                                       std::to_string(delta) + " m) at a zone of a tenth of the part");
+          }
+        double c_a = std::min(overlap_end(profile, delta, extent), 0.9 * extent);
+        {
+          const auto z = zone_of(c_a);
+          solver.fix_local_basis({part, z[0], z[1], 0.0});
+        }
+        if (two_ends)
+          {
+            // Broyden on (s_lo, s_hi) -> (K_lo, K_hi).
+            Eigen::Vector2d x(-c_a, c_a);
+            auto k_of = [&](const Eigen::Vector2d &s, const std::string &phase) {
+              const OutlineContactStep st = solver.solve(s[0], s[1], phase);
+              if (st.edge_intensities.size() != 2)
+                throw std::runtime_error("a zone with two free ends gave " +
+                                         std::to_string(st.edge_intensities.size()) + " intensities");
+              return Eigen::Vector2d(st.edge_intensities[0], st.edge_intensities[1]);
+            };
+            Eigen::Vector2d k = k_of(x, "bracket");
+            Eigen::Matrix2d jac;
+            const double h = 0.05 * (x[1] - x[0]);
+            for (int i = 0; i < 2; ++i)
+              {
+                Eigen::Vector2d xi = x;
+                xi[i] += i == 0 ? -h : h;
+                jac.col(i) = (k_of(xi, "jacobian") - k) / (xi[i] - x[i]);
+              }
+            while (true)
+              {
+                if (static_cast<int>(result.history.size()) >= options.max_solves)
+                  throw std::runtime_error("the zone's ends did not converge in " +
+                                           std::to_string(options.max_solves) + " solves");
+                Eigen::Vector2d dx = jac.fullPivLu().solve(-k);
+                const double width = x[1] - x[0], limit = 0.25 * width;
+                const double scale = std::max({1.0, std::abs(dx[0]) / limit, std::abs(dx[1]) / limit});
+                dx /= scale;
+                const Eigen::Vector2d x_new(std::max(x[0] + dx[0], f.s_min * (1 - 1e-3)),
+                                            std::min(x[1] + dx[1], f.s_max * (1 - 1e-3)));
+                dx = x_new - x;
+                if (!(x_new[1] - x_new[0] > 1e-3 * extent))
+                  throw std::runtime_error("the zone's ends crossed (s = " + std::to_string(x_new[0]) +
+                                           ", " + std::to_string(x_new[1]) + " m)");
+                const Eigen::Vector2d k_new = k_of(x_new, "broyden");
+                if (dx.norm() > 0.0)
+                  jac += ((k_new - k) - jac * dx) * dx.transpose() / dx.squaredNorm();
+                x = x_new, k = k_new;
+                if (dx.cwiseAbs().maxCoeff() < options.root_tolerance * extent)
+                  break;
+              }
+            solver.finish();
+            result.success = true;
+            result.message = "both ends are roots of their K to " +
+                             std::to_string(options.root_tolerance) + " of the extent (" +
+                             std::to_string(result.history.size()) + " solves, Broyden)";
+            return result;
+          }
+        // 1. Bracket: from c_a steps by a factor toward the root until K changes sign.
+        auto k_of = [&](const double c, const std::string &phase) {
+          const auto z = zone_of(c);
+          return solver.solve(z[0], z[1], phase).edge_intensity;
+        };
+        double k_a = k_of(c_a, "bracket");
         const double factor = 1.0 + 2.0 * options.first_step;
         double c_b = c_a, k_b = k_a;
         while (std::signbit(k_b) == std::signbit(k_a))
@@ -100,7 +246,7 @@ namespace rfm
               throw std::runtime_error("the root of K is not bracketed inside the part (K = " +
                                        std::to_string(k_a) + " Pa m^1/2 at c = " +
                                        std::to_string(c_a) + " m)");
-            k_b = solve(c_b, "bracket");
+            k_b = k_of(c_b, "bracket");
           }
         // 2. Illinois on [c_a, c_b].
         int side = 0;
@@ -110,7 +256,7 @@ namespace rfm
               throw std::runtime_error("the root of K did not converge in " +
                                        std::to_string(options.max_solves) + " solves");
             const double c = (c_a * k_b - c_b * k_a) / (k_b - k_a);
-            const double k = solve(c, "illinois");
+            const double k = k_of(c, "illinois");
             if (std::signbit(k) == std::signbit(k_b))
               {
                 c_b = c, k_b = k;
@@ -128,10 +274,34 @@ namespace rfm
             if (k == 0.0)
               break;
           }
+        solver.finish();
         result.success = true;
         result.message = "c is the root of K to " + std::to_string(options.root_tolerance) +
                          " of the part's extent (" + std::to_string(result.history.size()) +
                          " solves)";
+      }
+    catch (const std::runtime_error &e)
+      {
+        result.success = false;
+        result.message = e.what();
+      }
+    return result;
+  }
+
+  OutlineContactResult solve_outline_zone(const axisym::Problem &problem,
+                                          const DiscretizationOptions &discretization,
+                                          const double s_lo, const double s_hi)
+  {
+    const std::string part = problem.body->die_parts().at(0);
+    OutlineContactResult result;
+    ZoneSolver solver(problem, discretization, part, result);
+    try
+      {
+        solver.fix_local_basis({part, s_lo, s_hi, 0.0});
+        solver.solve(s_lo, s_hi, "fixed");
+        solver.finish();
+        result.success = true;
+        result.message = "the zone as given";
       }
     catch (const std::runtime_error &e)
       {

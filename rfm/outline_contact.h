@@ -9,15 +9,29 @@
 // reaches the undeformed part (g0(c) = delta: the zone of the overlapping shapes, above the
 // true one), steps by a factor 1 + 2 first_step in the direction K asks for until K changes
 // sign (a bracket), then the Illinois method to root_tolerance times the part's extent. A root
-// not bracketed inside the part is a numerical failure. One free end (the centre on a
-// symmetry edge or the axis) so far. A flat punch with a sharp edge keeps its face as the zone
-// (one or two edges; K is the intensity of its singular edge pressure). The hollow-cylinder
-// form's search (contact.h) also takes the stationary point of P(c) next to the root; on the
-// outline path c is the root itself.
+// not bracketed inside the part is a numerical failure. A zone with two free ends (the centre
+// inside the part: a ring die on a shaft) has two unknowns and two intensities (K_lo, K_hi):
+// Broyden's method from a finite-difference Jacobian (two extra solves), each step limited to a
+// quarter of the zone's width, until both ends move less than root_tolerance times the extent.
+// A flat punch with a sharp edge keeps its face as the zone (one or two edges; K is the
+// intensity of its singular edge pressure). The hollow-cylinder form's search (contact.h) also
+// takes the stationary point of P(c) next to the root; on the outline path c is the root itself.
+//
+// Force control (boundary.PART.die.force P*): for a fixed zone the bilateral problem is linear
+// in delta, so the force, the intensities and the fields are affine in delta. Two solves at
+// delta_a = 0 and delta_b (the gap at the zone's end) give delta = delta_a + (P* - P_a) (delta_b
+// - delta_a) / (P_b - P_a) and the intensities there: no outer iteration. The search starts
+// from a zone of a tenth of the part, takes delta there, and then the zone of g0 = delta; the
+// zone found is solved once more at its delta for the fields and functionals (the history's
+// functionals of force-controlled steps are null: they are quadratic in delta).
+//
+// Local boxes (local_basis.h): every trial zone is solved with the boxes of the first estimate,
+// so that the space does not change with the zone (K(c) stays smooth).
 #pragma once
 
 #include "rfm/outline_model.h"
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -34,26 +48,35 @@ namespace rfm
   /// One solve at a trial zone.
   struct OutlineContactStep
   {
-    double half_width = 0.0;      ///< c [m], the centre to the free end
+    double half_width = 0.0;      ///< c [m], the centre to the farther free end
+    std::array<double, 2> zone{{0.0, 0.0}}; ///< [s_lo, s_hi] [m] along the part
+    double indentation = 0.0;     ///< delta [m] (found from the force under force control)
     double force = 0.0, force_trace = 0.0; ///< P [N]
-    double edge_intensity = 0.0;  ///< K [Pa m^1/2]
+    double edge_intensity = 0.0;  ///< K [Pa m^1/2] at the first free end
+    std::vector<double> edge_intensities; ///< K at every free end, low end first
     double lagrange = 0.0, castigliano = 0.0, reissner = 0.0; ///< J per radian
-    std::string phase;            ///< "bracket" or "illinois"
+    std::string phase;            ///< "bracket", "illinois", "jacobian", "broyden", "estimate"
   };
 
   struct OutlineContactResult
   {
     bool success = false;
     std::string message;
-    DieZone zone;                        ///< the zone found
+    DieZone zone;                        ///< the zone found (indentation: delta there)
     std::vector<OutlineContactStep> history;
     std::unique_ptr<OutlineModel> model; ///< the solve at the zone found
   };
 
-  /// The zone of the problem's die (one die part, indentation given; precondition: the
-  /// parser's checks). Throws InputError for what it does not handle (a zone with two free
-  /// ends, a force).
+  /// The zone of the problem's die (one die part, indentation or force; precondition: the
+  /// parser's checks).
   OutlineContactResult solve_outline_contact(const axisym::Problem &problem,
                                              const DiscretizationOptions &discretization,
                                              const OutlineContactOptions &options = {});
+
+  /// The bilateral solve of the problem's die on the zone [s_lo, s_hi] along its part, by
+  /// indentation or by force (the linearity above); the local boxes of that zone. The result
+  /// holds one step and the model at the zone's delta.
+  OutlineContactResult solve_outline_zone(const axisym::Problem &problem,
+                                          const DiscretizationOptions &discretization,
+                                          double s_lo, double s_hi);
 } // namespace rfm

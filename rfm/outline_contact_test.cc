@@ -27,9 +27,8 @@ namespace rfm
     EXPECT_TRUE(r.model->ok());
   }
 
-  // Without the edge modes there is no K to search with; a zone with two free ends and a
-  // force are refused (the search takes one end and an indentation so far).
-  TEST(OutlineContact, RefusesWhatItCannotSearch)
+  // Without the edge modes there is no K to search with.
+  TEST(OutlineContact, RefusesWithoutEdgeModes)
   {
     auto j = paper_die_outline();
     j["rfm"]["edge_modes"] = 0;
@@ -37,16 +36,45 @@ namespace rfm
     const OutlineContactResult r = solve_outline_contact(no_modes, no_modes.rfm);
     EXPECT_FALSE(r.success);
     EXPECT_NE(r.message.find("edge modes"), std::string::npos) << r.message;
+  }
 
-    j = paper_die_outline();
-    j["boundary"]["outer"]["die"]["center"] = {0.2, 0.1};
-    const axisym::Problem two_ends = axisym::parse_problem(j);
-    EXPECT_THROW(solve_outline_contact(two_ends, two_ends.rfm), axisym::InputError);
-
-    j = paper_die_outline();
+  // Force control by linearity: the force that the indentation search found gives back its
+  // zone and its indentation (the two searches share nothing but the model).
+  TEST(OutlineContact, ForceControlGivesBackTheIndentationsZone)
+  {
+    const axisym::Problem by_delta = axisym::parse_problem(paper_die_outline());
+    const OutlineContactResult a = solve_outline_contact(by_delta, by_delta.rfm);
+    ASSERT_TRUE(a.success) << a.message;
+    const double force = a.model->die_force("outer").domain;
+    auto j = paper_die_outline();
     j["boundary"]["outer"]["die"].erase("indentation");
-    j["boundary"]["outer"]["die"]["force"] = 1e5;
-    const axisym::Problem force = axisym::parse_problem(j);
-    EXPECT_THROW(solve_outline_contact(force, force.rfm), axisym::InputError);
+    j["boundary"]["outer"]["die"]["force"] = force;
+    const axisym::Problem by_force = axisym::parse_problem(j);
+    const OutlineContactResult b = solve_outline_contact(by_force, by_force.rfm);
+    ASSERT_TRUE(b.success) << b.message;
+    EXPECT_NEAR(b.zone.s_hi, a.zone.s_hi, 2e-4 * 0.2);
+    EXPECT_NEAR(b.zone.indentation, 1e-6, 1e-3 * 1e-6);
+    ASSERT_TRUE(b.model);
+    EXPECT_NEAR(b.model->die_force("outer").domain, force, 1e-3 * force);
+  }
+
+  // Two free ends (the die's centre inside the part): Broyden's steps bring |K| at both ends
+  // far below the first estimate's, with the zone around the centre.
+  TEST(OutlineContact, TwoFreeEndsAreBothRootsOfTheirIntensity)
+  {
+    auto j = paper_die_outline();
+    j["boundary"]["outer"]["die"]["center"] = {0.2, 0.1};
+    j["boundary"]["outer"]["die"]["profile"]["radius"] = 400.0;
+    j["rfm"]["local_levels"] = 0; // a zone of a quarter of the section needs no boxes (and time)
+    const axisym::Problem p = axisym::parse_problem(j);
+    const OutlineContactResult r = solve_outline_contact(p, p.rfm);
+    ASSERT_TRUE(r.success) << r.message;
+    const OutlineContactStep &first = r.history.front(), &last = r.history.back();
+    ASSERT_EQ(last.edge_intensities.size(), 2u);
+    const double k0 = std::max(std::abs(first.edge_intensities[0]), std::abs(first.edge_intensities[1]));
+    EXPECT_LT(std::abs(last.edge_intensities[0]), 2e-2 * k0);
+    EXPECT_LT(std::abs(last.edge_intensities[1]), 2e-2 * k0);
+    EXPECT_LT(r.zone.s_lo, 0.0);
+    EXPECT_GT(r.zone.s_hi, 0.0);
   }
 } // namespace rfm

@@ -12,6 +12,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 namespace rfm
 {
@@ -104,7 +105,8 @@ namespace rfm
 
   OutlineModel::OutlineModel(const axisym::Problem &problem, const DiscretizationOptions &options,
                              const SolverOptions &solver_options,
-                             const std::vector<DieZone> &zones)
+                             const std::vector<DieZone> &zones,
+                             const std::optional<LocalBasis> &local)
     : zones_(zones)
     , material_(problem.material)
     , loads_(problem.body_loads)
@@ -124,6 +126,9 @@ namespace rfm
     }())
   {
     const auto t0 = std::chrono::steady_clock::now();
+    const axisym::Outline &split = structures_.body().outline;
+    if (is_axis_aligned_rectangle(split))
+      local_ = local ? *local : die_local_basis(problem, zones, options);
     // Products of two coordinate functions reach total degree 4p in (r, z), times the
     // structures: the collapsed Gauss rule is exact for total degree 2n - 2 on straight
     // triangles.
@@ -132,11 +137,15 @@ namespace rfm
     // On the split body: a zone's ends are vertices of the triangulation and of the edges. A
     // rectangle with sides along r and z takes the tensor rule with p + extra_gauss_points
     // points per direction, graded toward the zone's ends (section_quadrature.h).
-    const axisym::Outline &split = structures_.body().outline;
+    // The local boxes' sides are cell ends, and their polynomials of degree local_degree + 2
+    // (with the cutoff) need as many points as the global ones of degree p.
     if (is_axis_aligned_rectangle(split))
-      quadrature_ = rectangle_gauss(split, options.degree + options.extra_gauss_points,
-                                    {options.n_cells_r, options.n_cells_z,
-                                     options.n_graded_layers, options.grading_ratio});
+      quadrature_ = rectangle_gauss(
+        split,
+        (local_.empty() ? options.degree : std::max(options.degree, local_.degree() + 2)) +
+          options.extra_gauss_points,
+        {options.n_cells_r, options.n_cells_z, options.n_graded_layers, options.grading_ratio},
+        local_.breaks());
     else
       quadrature_ = section_gauss(split, qo);
     const std::vector<int> graded = make_enrichments(problem, zones, options);
@@ -252,8 +261,12 @@ namespace rfm
           }
         const int p_r = std::max(0, p - k[0]), p_z = std::max(0, p - k[1]);
         const SectionPolynomialBasis reduced = basis_of(problem.body->outline, p_r, p_z);
-        const Eigen::MatrixXd inclusion =
+        // The local columns are kept as they are (the omega of u_m multiplies them too).
+        const Eigen::Index n_g = weighted.cols(), n_l = n - n_g, n_r = reduced.n_basis_functions();
+        Eigen::MatrixXd inclusion = Eigen::MatrixXd::Zero(n, n_r + n_l);
+        inclusion.topLeftCorner(n_g, n_r) =
           weighted.transpose() * reduced.evaluate(samples.r, samples.z, false).value;
+        inclusion.bottomRightCorner(n_l, n_l).setIdentity();
         tu[m] = inclusion * orthonormal(inclusion.transpose() * gram_u[m] * inclusion);
       }
     // The enrichment's displacement columns (vector fields): their own Gram matrix of values
@@ -326,7 +339,10 @@ namespace rfm
     const StressStructureValues sp = polynomial_part(s);
     // R11's lower triangle (what the solver reads; the transform fills the rest).
     add_polynomial_blocks(mu, q.r, b, sp, d, c, sys, 0, false);
-    const DisplacementBasisValues v = displacement_basis(b, d);
+    // The displacement columns' values (6 n_q x N matrices: a tenth of the assembly's time at
+    // p = 20 on the die's rule) only where they are used: the body force, the boundary columns.
+    const DisplacementBasisValues v =
+      loads_.body_force() || n_b > 0 ? displacement_basis(b, d) : DisplacementBasisValues{};
 
     // Body loads: - int X . e_th in p_s (normal components), - int f . Phi in p_u.
     Eigen::VectorXd e_th = Eigen::VectorXd::Zero(q.n_points());
@@ -517,13 +533,65 @@ namespace rfm
 
   Eigen::Index OutlineModel::n_basis_functions() const
   {
-    return std::visit([](const auto &b) { return b.n_basis_functions(); }, basis_);
+    return std::visit([](const auto &b) { return b.n_basis_functions(); }, basis_) +
+           local_.n_basis_functions();
   }
 
   BasisValues OutlineModel::basis_values(const Eigen::Ref<const Eigen::VectorXd> &r,
                                          const Eigen::Ref<const Eigen::VectorXd> &z) const
   {
-    return std::visit([&](const auto &b) { return b.evaluate(r, z); }, basis_);
+    BasisValues b = std::visit([&](const auto &basis) { return basis.evaluate(r, z); }, basis_);
+    if (local_.empty())
+      return b;
+    const BasisValues l = local_.evaluate(r, z);
+    const Eigen::Index n_g = b.value.cols(), n_l = l.value.cols();
+    BasisValues all;
+    for (auto [out, g, loc] : {std::tuple{&all.value, &b.value, &l.value},
+                               std::tuple{&all.d_r, &b.d_r, &l.d_r},
+                               std::tuple{&all.d_z, &b.d_z, &l.d_z}})
+      {
+        out->resize(r.size(), n_g + n_l);
+        out->leftCols(n_g) = *g;
+        out->rightCols(n_l) = *loc;
+      }
+    return all;
+  }
+
+  LocalBasis die_local_basis(const axisym::Problem &problem, const std::vector<DieZone> &zones,
+                             const DiscretizationOptions &options)
+  {
+    const axisym::Body &body = *problem.body;
+    if (options.local_levels == 0 || zones.empty() || !is_axis_aligned_rectangle(body.outline))
+      return {};
+    const axisym::BoundingBox box = body.outline.bounding_box();
+    const double side = std::min(box.r_max - box.r_min, box.z_max - box.z_min);
+    const double tol = 1e-9 * body.outline.size();
+    std::vector<LocalPatch> patches;
+    for (const DieZone &zone : zones)
+      {
+        const axisym::DieFrame f = axisym::die_frame(body, zone.part);
+        const double c = std::max(std::abs(zone.s_lo), std::abs(zone.s_hi));
+        if (!(c > 0.0))
+          continue;
+        // One-sided where the centre is at an end of the part (the section ends there).
+        const bool at_start = f.s_min > -tol, at_end = f.s_max < tol;
+        const double sign = at_end && !at_start ? -1.0 : 1.0;
+        LocalPatch patch;
+        patch.r = f.center.r, patch.z = f.center.z;
+        patch.t = {{sign * f.tangent.r, sign * f.tangent.z}};
+        patch.n = {{-f.normal.r, -f.normal.z}};
+        patch.one_sided = at_start || at_end;
+        int levels = 0;
+        for (double h = options.local_first_box * c;
+             h <= options.local_max_box * side * (1 + 1e-12) &&
+             (options.local_levels < 0 || levels < options.local_levels);
+             h *= 2.0, ++levels)
+          {
+            patch.half_size = h;
+            patches.push_back(patch);
+          }
+      }
+    return LocalBasis(std::move(patches), options.local_degree);
   }
 
   Eigen::Index OutlineModel::n_edge_columns() const
@@ -802,8 +870,19 @@ namespace rfm
   double estimate_memory_bytes(const axisym::Problem &problem, const DiscretizationOptions &options)
   {
     const axisym::Body &body = *problem.body;
-    const double p = options.degree, n = (p + 1) * (p + 1);
     const double n_dies = static_cast<double>(body.die_parts().size());
+    // The local boxes (die_local_basis): their number depends on the zone; the bound is the
+    // number of doublings from a zone of 1 % of the section to local_max_box of it.
+    const double n_boxes =
+      n_dies > 0 && options.local_levels != 0 && is_axis_aligned_rectangle(body.outline)
+        ? (options.local_levels > 0
+             ? options.local_levels
+             : std::max(0.0, std::floor(std::log2(options.local_max_box /
+                                                  (0.01 * options.local_first_box))) + 1.0))
+        : 0.0;
+    const double p = options.degree,
+                 n = (p + 1) * (p + 1) + n_dies * n_boxes * (options.local_degree + 1.0) *
+                                           (options.local_degree + 1.0);
     double n_q = 0;
     if (is_axis_aligned_rectangle(body.outline))
       {

@@ -47,6 +47,7 @@
 #include "rfm/section_basis.h"
 #include "rfm/degree_sequence.h"
 #include "rfm/edge_modes.h"
+#include "rfm/local_basis.h"
 #include "rfm/outline_structures.h"
 #include "rfm/quadrature.h"
 #include "rfm/saddle_point_solver.h"
@@ -55,6 +56,7 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <variant>
 
 namespace rfm
@@ -74,16 +76,24 @@ namespace rfm
   {
   public:
     /// Builds, assembles and solves at options.degree. `zones`: one per die part, the contact
-    /// zone of a bilateral solve (OutlineStructures). Throws InputError for sections the
-    /// structures do not support. Numerical failure: ok() false, summary().message.
+    /// zone of a bilateral solve (OutlineStructures). `local`: the local boxes' columns
+    /// (local_basis.h; default: die_local_basis of the zones; a search passes the boxes of its
+    /// first estimate to every trial zone, so that the space does not jump with the zone).
+    /// Local columns need the tensor rule of a rectangle with sides along r and z; on other
+    /// sections they are left out. Throws InputError for sections the structures do not
+    /// support. Numerical failure: ok() false, summary().message.
     OutlineModel(const axisym::Problem &problem, const DiscretizationOptions &options,
-                 const SolverOptions &solver_options = {}, const std::vector<DieZone> &zones = {});
+                 const SolverOptions &solver_options = {}, const std::vector<DieZone> &zones = {},
+                 const std::optional<LocalBasis> &local = std::nullopt);
 
     bool ok() const { return summary_.success; }
     const SolveSummary &summary() const { return summary_; }
     double assembly_seconds() const { return assembly_s_; }
     double solve_seconds() const { return solve_s_; }
+    /// Coordinate functions per component: the global polynomials, then the local ones.
     Eigen::Index n_basis_functions() const;
+    Eigen::Index n_local_functions() const { return local_.n_basis_functions(); }
+    const LocalBasis &local_basis() const { return local_; }
     Eigen::Index n_boundary_columns() const { return structures_.n_boundary_columns(); }
     Eigen::Index n_quadrature_points() const { return quadrature_.n_points(); }
     /// Unknowns after the orthonormalization (stress, displacement).
@@ -177,6 +187,8 @@ namespace rfm
     /// no displacement component is reduced in degree, else the polynomials orthonormal on the
     /// section.
     std::variant<TensorLegendreBasis, SectionPolynomialBasis> basis_;
+    LocalBasis local_; ///< the local boxes' columns after the global ones
+    /// The global and the local coordinate functions side by side.
     BasisValues basis_values(const Eigen::Ref<const Eigen::VectorXd> &r,
                              const Eigen::Ref<const Eigen::VectorXd> &z) const;
     Quadrature2D quadrature_;
@@ -205,6 +217,15 @@ namespace rfm
   /// die part at most), and the saddle-point matrices with the transform's eigenvectors (R11,
   /// R12, their factors, the Schur complement). Boundary columns are left out (a few per edge).
   double estimate_memory_bytes(const axisym::Problem &problem, const DiscretizationOptions &options);
+
+  /// The local boxes of the zones (local_basis.h): per zone, with c its extent from the die's
+  /// centre (the farther end), boxes of half size h_l = local_first_box c 2^l about the centre,
+  /// t along the part (away from the section when the centre is at the part's end: one-sided
+  /// boxes), n into the body, as long as h_l <= local_max_box times the smaller side of the
+  /// section's box, at most local_levels of them (-1: no limit), with local_degree. Empty for
+  /// sections that are not rectangles with sides along r and z.
+  LocalBasis die_local_basis(const axisym::Problem &problem, const std::vector<DieZone> &zones,
+                             const DiscretizationOptions &options);
 
   /// rfm.tolerance for an outline problem (degree_sequence.h).
   DegreeSequence<OutlineModel> solve_outline_to_tolerance(const axisym::Problem &problem,

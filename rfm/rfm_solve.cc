@@ -21,6 +21,7 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include <iostream>
 #include <unistd.h>
@@ -115,12 +116,10 @@ namespace
         "are on the hollow-cylinder form)");
     const axisym::DieFrame f = axisym::die_frame(*problem.body, parts[0]);
     const axisym::DieCondition &die = problem.body->conditions.at(parts[0]).die;
-    if (!die.indentation)
-      throw axisym::InputError("boundary." + parts[0] +
-                               ".die.force: the RFM takes an indentation on an outline part so "
-                               "far (fem_solve takes a force)");
     const double c = problem.contact.half_width.value_or(std::max(-f.s_min, f.s_max));
-    return {rfm::DieZone{parts[0], std::max(f.s_min, -c), std::min(f.s_max, c), *die.indentation}};
+    // Under force control the zone's delta is found by the solve (outline_contact.h).
+    return {rfm::DieZone{parts[0], std::max(f.s_min, -c), std::min(f.s_max, c),
+                         die.indentation.value_or(0.0)}};
   }
 
   bool zone_has_free_end(const axisym::Problem &problem, const rfm::DieZone &zone)
@@ -205,8 +204,12 @@ namespace
                    problem.rfm.degree, zones[0].part);
         search = rfm::solve_outline_contact(problem, problem.rfm);
         for (const rfm::OutlineContactStep &step : search->history)
-          fmt::print(stderr, "rfm_solve:   c = {:.6g} m: K = {:.5g} Pa m^1/2, P = {:.6g} N ({})\n",
-                     step.half_width, step.edge_intensity, step.force, step.phase);
+          fmt::print(stderr,
+                     "rfm_solve:   zone [{:.6g}, {:.6g}] m: K = {:.5g} Pa m^1/2, P = {:.6g} N, "
+                     "delta = {:.6g} m ({})\n",
+                     step.zone[0], step.zone[1],
+                     fmt::join(step.edge_intensities, ", "), step.force, step.indentation,
+                     step.phase);
         if (!search->success || !search->model)
           {
             nlohmann::json failed = {{"solver", "rfm"}, {"problem", problem.source},
@@ -229,8 +232,14 @@ namespace
         fmt::print(stderr, "rfm_solve: outline section, degree p = {}, die on {}: bilateral "
                            "zone [{:.6g}, {:.6g}] m along the part\n",
                    problem.rfm.degree, zones[0].part, zones[0].s_lo, zones[0].s_hi);
-        model = std::make_unique<rfm::OutlineModel>(problem, problem.rfm, rfm::SolverOptions{},
-                                                    zones);
+        search = rfm::solve_outline_zone(problem, problem.rfm, zones[0].s_lo, zones[0].s_hi);
+        if (!search->success || !search->model)
+          {
+            fmt::print(stderr, "rfm_solve: numerical failure: {}\n", search->message);
+            return 3;
+          }
+        zones = {search->zone};
+        model = std::move(search->model);
       }
     else if (target_indicator)
       {
@@ -248,16 +257,21 @@ namespace
         model = std::make_unique<rfm::OutlineModel>(problem, problem.rfm);
       }
     const int p = problem.rfm.degree;
-    const long n_basis = static_cast<long>((p + 1) * (p + 1));
+    // N per component: the global polynomials' (p + 1)^2 and the local boxes' functions.
+    const long n_basis = static_cast<long>(model->n_basis_functions());
+    const long n_edge = static_cast<long>(model->n_edge_columns());
     nlohmann::json result;
     result["solver"] = "rfm";
     result["problem"] = problem.source;
     result["discretization"] = {
       {"degree", p},
       {"N", n_basis},
-      {"unknowns", 6 * n_basis + model->n_boundary_columns()},
-      {"stress_unknowns", 4 * n_basis + model->n_boundary_columns()},
-      {"displacement_unknowns", 2 * n_basis},
+      {"local_functions", model->n_local_functions()},
+      {"local_boxes", model->local_basis().patches().size()},
+      {"edge_columns", n_edge},
+      {"unknowns", 6 * n_basis + model->n_boundary_columns() + 2 * n_edge},
+      {"stress_unknowns", 4 * n_basis + model->n_boundary_columns() + n_edge},
+      {"displacement_unknowns", 2 * n_basis + n_edge},
       {"boundary_columns", model->n_boundary_columns()},
       {"unknowns_after_orthonormalization",
        {model->n_kept_unknowns()[0], model->n_kept_unknowns()[1]}},
@@ -293,12 +307,15 @@ namespace
     if (!zones.empty())
       {
         result["contact"] = outline_die_to_json(problem, *model, zones[0], phi);
-        if (search)
+        if (search && problem.contact.method == "edge-intensity")
           {
             result["contact"]["method"] = "edge-intensity";
             nlohmann::json history = nlohmann::json::array();
             for (const rfm::OutlineContactStep &step : search->history)
               history.push_back({{"half_width", step.half_width},
+                                 {"zone", step.zone},
+                                 {"indentation", step.indentation},
+                                 {"edge_intensities", step.edge_intensities},
                                  {"force", step.force},
                                  {"force_trace", step.force_trace},
                                  {"edge_intensity", step.edge_intensity},

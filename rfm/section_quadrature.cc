@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <sstream>
@@ -365,7 +366,8 @@ namespace rfm
   }
 
   Quadrature2D rectangle_gauss(const axisym::Outline &outline, const int n_points,
-                               const RectangleCells &cells)
+                               const RectangleCells &cells,
+                               const std::array<std::vector<double>, 2> &extra_ends)
   {
     if (!is_axis_aligned_rectangle(outline) || n_points < 1)
       throw std::invalid_argument("rectangle_gauss: not an axis-aligned rectangle, or n_points < 1");
@@ -382,10 +384,23 @@ namespace rfm
           if (v.z > b.z_min + tol && v.z < b.z_max - tol)
             z_breaks.push_back(v.z);
         }
-    return tensor_gauss(section_cells(b.r_min, b.r_max, cells.n_uniform_r, r_breaks,
-                                      cells.n_graded_layers, cells.grading_ratio),
-                        section_cells(b.z_min, b.z_max, cells.n_uniform_z, z_breaks,
-                                      cells.n_graded_layers, cells.grading_ratio),
+    auto with_ends = [&](std::vector<double> ends, const std::vector<double> &extra, double lo,
+                         double hi) {
+      for (const double x : extra)
+        if (x > lo + tol && x < hi - tol)
+          ends.push_back(x);
+      std::sort(ends.begin(), ends.end());
+      ends.erase(std::unique(ends.begin(), ends.end(),
+                             [&](double x, double y) { return std::abs(x - y) < tol; }),
+                 ends.end());
+      return ends;
+    };
+    return tensor_gauss(with_ends(section_cells(b.r_min, b.r_max, cells.n_uniform_r, r_breaks,
+                                                cells.n_graded_layers, cells.grading_ratio),
+                                  extra_ends[0], b.r_min, b.r_max),
+                        with_ends(section_cells(b.z_min, b.z_max, cells.n_uniform_z, z_breaks,
+                                                cells.n_graded_layers, cells.grading_ratio),
+                                  extra_ends[1], b.z_min, b.z_max),
                         n_points);
   }
 } // namespace rfm

@@ -48,6 +48,9 @@
 #include "problem/outline.h"
 #include "rfm/quadrature.h"
 
+#include <array>
+#include <vector>
+
 namespace rfm
 {
   struct SectionQuadratureOptions
@@ -99,8 +102,10 @@ namespace rfm
   /// inside a side, where a boundary condition changes (a contact zone's end). For polynomials
   /// of degree <= p in each variable (the coordinate functions), n_points = p + 4 integrates
   /// their products times r and the structures' low-degree factors exactly on every cell with
-  /// (p + 4)^2 points instead of the triangles' 2 (2 p + 4)^2. Precondition:
-  /// is_axis_aligned_rectangle(outline), n_points >= 1.
+  /// (p + 4)^2 points instead of the triangles' 2 (2 p + 4)^2. `extra_ends`: more cell ends
+  /// in r and in z, not graded (the sides of local boxes, local_basis.h; those outside the
+  /// section are ignored). Precondition: is_axis_aligned_rectangle(outline), n_points >= 1.
   Quadrature2D rectangle_gauss(const axisym::Outline &outline, int n_points,
-                               const RectangleCells &cells = {});
+                               const RectangleCells &cells = {},
+                               const std::array<std::vector<double>, 2> &extra_ends = {});
 } // namespace rfm
