@@ -43,6 +43,9 @@ namespace rfm
     double root_tolerance = 1e-4; ///< on c / extent: the Illinois method stops below it
     double first_step = 0.1;      ///< bracketing steps, times the extent
     int max_solves = 40;
+    /// Search passes with the local boxes rebuilt about the zone found, until it is within
+    /// 10 % of the zone the boxes were built from (at most 3; 1: the first estimate's boxes).
+    int local_passes = 3;
   };
 
   /// One solve at a trial zone.

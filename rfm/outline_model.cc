@@ -101,6 +101,30 @@ namespace rfm
     {
       return {d.omega, d.omega_r, d.omega_z, d.u0, d.u0_r, d.u0_z};
     }
+    /// The zones with the continuation of their prescribed value faded between the sides of
+    /// the smallest and the largest of their local boxes that contain the zone
+    /// (DieZone::fade_start); a zone with fewer than two such boxes keeps the unfaded
+    /// continuation. (Fading between the two smallest instead took the Hertz case's force at
+    /// the FEM's zone from -0.4 % to -0.05 % at local degree 7, but it swung with the degree;
+    /// between the two smallest and the largest it reached -3e-5.)
+    std::vector<DieZone> faded_zones(const axisym::Body &body, std::vector<DieZone> zones,
+                                     const LocalBasis &local)
+    {
+      for (DieZone &zone : zones)
+        {
+          const axisym::DieFrame f = axisym::die_frame(body, zone.part);
+          const double c = std::max(std::abs(zone.s_lo), std::abs(zone.s_hi));
+          const double tol = 1e-9 * body.outline.size();
+          std::vector<double> sides;
+          for (const LocalPatch &b : local.patches())
+            if (std::hypot(b.r - f.center.r, b.z - f.center.z) < tol && b.half_size >= c)
+              sides.push_back(b.half_size);
+          std::sort(sides.begin(), sides.end());
+          if (sides.size() >= 2)
+            zone.fade_start = sides.front(), zone.fade_end = sides.back();
+        }
+      return zones;
+    }
   } // namespace
 
   OutlineModel::OutlineModel(const axisym::Problem &problem, const DiscretizationOptions &options,
@@ -108,10 +132,13 @@ namespace rfm
                              const std::vector<DieZone> &zones,
                              const std::optional<LocalBasis> &local)
     : zones_(zones)
+    , local_((options.validate(), is_axis_aligned_rectangle(problem.body->outline))
+               ? (local ? *local : die_local_basis(problem, zones, options))
+               : LocalBasis())
     , material_(problem.material)
     , loads_(problem.body_loads)
     , mirrored_(problem.body->mirrored)
-    , structures_(*problem.body, (options.validate(), options.degree), zones)
+    , structures_(*problem.body, options.degree, faded_zones(*problem.body, zones, local_))
     , basis_([&]() -> std::variant<TensorLegendreBasis, SectionPolynomialBasis> {
       const axisym::Outline &o = problem.body->outline;
       bool reduced = false;
@@ -127,8 +154,6 @@ namespace rfm
   {
     const auto t0 = std::chrono::steady_clock::now();
     const axisym::Outline &split = structures_.body().outline;
-    if (is_axis_aligned_rectangle(split))
-      local_ = local ? *local : die_local_basis(problem, zones, options);
     // Products of two coordinate functions reach total degree 4p in (r, z), times the
     // structures: the collapsed Gauss rule is exact for total degree 2n - 2 on straight
     // triangles.

@@ -178,6 +178,7 @@ namespace rfm
                                       const DiscretizationOptions &options);
 
     std::vector<DieZone> zones_;
+    LocalBasis local_; ///< the local boxes' columns after the global ones
     Material material_;
     axisym::BodyLoads loads_; ///< body force in p_u and W, thermal strain in p_s and the functionals
     bool mirrored_ = false;   ///< integrals twice (the section and its image in z = 0)
@@ -187,7 +188,6 @@ namespace rfm
     /// no displacement component is reduced in degree, else the polynomials orthonormal on the
     /// section.
     std::variant<TensorLegendreBasis, SectionPolynomialBasis> basis_;
-    LocalBasis local_; ///< the local boxes' columns after the global ones
     /// The global and the local coordinate functions side by side.
     BasisValues basis_values(const Eigen::Ref<const Eigen::VectorXd> &r,
                              const Eigen::Ref<const Eigen::VectorXd> &z) const;

@@ -121,6 +121,7 @@ namespace rfm
         // beyond the other (smooth there, as the rectangle's parts that reach a corner).
         if (one_sided && trimmed_ && !(before && after))
           trim_side_ = after ? 1 : -1;
+        conjunction_ends_ = one_sided && before && after;
       }
     else
       {
@@ -171,6 +172,8 @@ namespace rfm
           t = {0.5 * length - s, -tr, -tz};
         else if (trim_side_ < 0) // at the start only: t = s + L/2
           t = {s + 0.5 * length, tr, tz};
+        else if (conjunction_ends_) // (L/2 - s) AND (L/2 + s)
+          t = r_conjunction({0.5 * length - s, -tr, -tz}, {0.5 * length + s, tr, tz});
         else
           t = {(0.25 * length * length - s * s) / length, -2.0 * s * tr / length,
                -2.0 * s * tz / length};
@@ -297,6 +300,14 @@ namespace rfm
         zone.frame = axisym::die_frame(body, z.part);
         zone.profile = body.conditions.at(z.part).die.profile;
         zone.indentation = z.indentation;
+        if (z.fade_start != 0.0 || z.fade_end != 0.0)
+          {
+            const double extent = std::max(std::abs(z.s_lo), std::abs(z.s_hi));
+            if (!(z.fade_start >= extent * (1 - 1e-12) && z.fade_end > z.fade_start))
+              throw std::invalid_argument("OutlineStructures: a zone's fade must start beyond "
+                                          "the zone and end beyond its start");
+            zone.fade_start = z.fade_start, zone.fade_end = z.fade_end;
+          }
         const bool normal_r = std::abs(std::abs(zone.frame.normal.r) - 1.0) < 1e-12;
         const bool normal_z = std::abs(std::abs(zone.frame.normal.z) - 1.0) < 1e-12;
         if (!normal_r && !normal_z)
@@ -382,6 +393,24 @@ namespace rfm
           if (std::hypot(n_e.r - n_f.r, n_e.z - n_f.z) < 1e-9)
             parent[root(chain_of_edge[e])] = root(chain_of_edge[f]);
         }
+      // The free sub-edges either side of a zone inside its part are one chain: the
+      // conjunction of their omegas is ~ the distance to the nearer end of the zone on the zone,
+      // where their product is ~ (s - s_lo)(s_hi - s) (1e-4 of its far values for a zone 1/100
+      // of its part, which the coordinate functions would have to undo to carry the pressure).
+      const auto is_free_sub_edge = [&](const int e) {
+        const std::string &part = edges[e].part;
+        return part.size() > 5 && part.compare(part.size() - 5, 5, "#free") == 0;
+      };
+      std::vector<int> same_part_free;
+      for (int e = 0; e < n_edges; ++e)
+        if (chain_of_edge[e] >= 0 && is_free_sub_edge(e))
+          for (int f = e + 1; f < n_edges; ++f)
+            if (chain_of_edge[f] >= 0 && edges[f].part == edges[e].part)
+              {
+                parent[root(chain_of_edge[e])] = root(chain_of_edge[f]);
+                same_part_free.push_back(chain_of_edge[e]);
+                same_part_free.push_back(chain_of_edge[f]);
+              }
       std::vector<int> label(stress_edges_.size(), -1);
       stress_chain_.assign(stress_edges_.size(), -1);
       n_stress_chains_ = 0;
@@ -404,7 +433,11 @@ namespace rfm
         {
           const OutlineEdge &edge = edges[stress_edges_[i]];
           const axisym::Point n = edge.outward_normal_at(0.5);
-          if (edge.kind == OutlineEdge::Kind::line && chain_size[stress_chain_[i]] == 1)
+          // A lone line, or the free sub-edges of a die part (on one line).
+          const bool lone = chain_size[stress_chain_[i]] == 1 ||
+                            std::find(same_part_free.begin(), same_part_free.end(),
+                                      static_cast<int>(i)) != same_part_free.end();
+          if (edge.kind == OutlineEdge::Kind::line && lone)
             {
               if (std::abs(std::abs(n.r) - 1.0) < 1e-12)
                 stress_kind_[i] = StressEdge::normal_r;
@@ -516,7 +549,29 @@ namespace rfm
     const auto g = [&](double x) { return zone.profile.gap(std::min(std::abs(x), zone.profile.extent())); };
     const double value = zone.sign * (g(s) - zone.indentation);
     const double slope = zone.sign * (g(s + h) - g(s - h)) / (2 * h);
-    return {value, slope * zone.frame.tangent.r, slope * zone.frame.tangent.z};
+    if (zone.fade_end == 0.0)
+      return {value, slope * zone.frame.tangent.r, slope * zone.frame.tangent.z};
+    // Faded: value psi(|s|) psi(n), n into the body (-normal).
+    const double n = -((r - zone.frame.center.r) * zone.frame.normal.r +
+                       (z - zone.frame.center.z) * zone.frame.normal.z);
+    const auto psi = [&](const double x) -> std::array<double, 2> {
+      const double w = zone.fade_end - zone.fade_start;
+      const double t = (x - zone.fade_start) / w;
+      if (t <= 0.0)
+        return {1.0, 0.0};
+      if (t >= 1.0)
+        return {0.0, 0.0};
+      // 1 - (10 t^3 - 15 t^4 + 6 t^5): C2 at both ends.
+      return {1.0 - t * t * t * (10.0 - 15.0 * t + 6.0 * t * t),
+              -30.0 * t * t * (1.0 - t) * (1.0 - t) / w};
+    };
+    const auto ps = psi(std::abs(s));
+    const auto pn = psi(std::max(n, 0.0));
+    const double d_s = slope * ps[0] * pn[0] + value * (s < 0 ? -ps[1] : ps[1]) * pn[0];
+    const double d_n = n > 0.0 ? value * ps[0] * pn[1] : 0.0;
+    return {value * ps[0] * pn[0],
+            d_s * zone.frame.tangent.r - d_n * zone.frame.normal.r,
+            d_s * zone.frame.tangent.z - d_n * zone.frame.normal.z};
   }
 
   RValue OutlineStructures::blend(const std::vector<int> &edges,

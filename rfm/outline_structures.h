@@ -113,6 +113,12 @@ namespace rfm
     axisym::OutlineEdge edge_;
     bool trimmed_ = false;
     int trim_side_ = 0; ///< one_sided lines: +1 trimmed at the end only, -1 at the start only
+    /// A die part's sub-edge trimmed at both ends (a zone inside its part): t is the R0
+    /// conjunction of the distances to the two ends (linear growth away from the segment)
+    /// instead of (L^2 / 4 - s^2) / L (quadratic growth, ~s^2 / L: for a zone 1/40 of its part
+    /// omega reaches 40 section sizes at the part's end and the coordinate functions carry a
+    /// 1 / s^2 factor).
+    bool conjunction_ends_ = false;
     double sign_ = 1.0; ///< arcs: +1 when the body is inside the circle
     double s_min_ = 0.0, s_max_ = 1.0; ///< the box's extent along the chord from the start
     bool angular_ = false;
@@ -141,6 +147,17 @@ namespace rfm
     std::string part;
     double s_lo = 0, s_hi = 0;
     double indentation = 0;
+    /// Where the prescribed value's continuation off the zone fades [m] (0 < fade_start <
+    /// fade_end; both 0: no fading). The structures need u.n = g0(|s|) - delta on the zone
+    /// only; continued unchanged it is g0(|s|) - delta along the whole part and across the
+    /// body, which for a die much smaller than the section is many times the field itself (a
+    /// paraboloid's g0 at a part's end 40 zone widths away is ~10^3 delta), and the coordinate
+    /// functions must cancel it to that many more digits. With fading the continuation is
+    /// (g0(|s|) - delta) psi(|s|) psi(n), n the distance into the body from the part and psi
+    /// the C2 quintic step from 1 at fade_start to 0 at fade_end: zero outside a box about the
+    /// die's centre. OutlineModel sets them to the sides of two of its local boxes
+    /// (local_basis.h), which are cell ends of its rule and where the local columns may kink.
+    double fade_start = 0, fade_end = 0;
   };
 
   class OutlineStructures
@@ -242,6 +259,7 @@ namespace rfm
       axisym::DieFrame frame;
       axisym::DieProfile profile;
       double indentation = 0;
+      double fade_start = 0, fade_end = 0;
       int component = 0;
       double sign = 1;
     };

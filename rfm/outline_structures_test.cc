@@ -320,6 +320,76 @@ namespace rfm
                  std::invalid_argument);
   }
 
+  // A zone inside its part (two free ends): its omega grows like the distance to the
+  // segment along the part's line, not like s^2 / L (the trimming of an ordinary segment, 2.4
+  // times the distance at the shaft's end here: for a ring die 1/100 of its part it reached
+  // 40 section sizes and the force came out negative).
+  TEST(OutlineStructures, AZoneInsideItsPartHasAnOmegaLikeTheDistance)
+  {
+    const auto cases = die_cases();
+    const OutlineStructures two(*cases[1].first.body, 4, cases[1].second);
+    const auto &edges = two.body().outline.edges();
+    int zone = -1;
+    for (int e = 0; e < static_cast<int>(edges.size()); ++e)
+      if (edges[e].part == "side")
+        zone = e;
+    ASSERT_GE(zone, 0);
+    const EdgeOmega omega(two.body().outline, zone, true);
+    // The zone is z in [0.007, 0.012] on r = 0.02.
+    const auto distance = [](const double r, const double z) {
+      const double dz = z < 0.007 ? 0.007 - z : (z > 0.012 ? z - 0.012 : 0.0);
+      return std::hypot(0.02 - r, dz);
+    };
+    for (const auto &[r, z] : std::vector<std::pair<double, double>>{
+           {0.02, 0.0}, {0.02, 0.02}, {0.0, 0.0}, {0.01, 0.02}, {0.015, 0.0095}})
+      {
+        const double w = omega(r, z).value, d = distance(r, z);
+        EXPECT_GT(w, 0.5 * d) << "at (" << r << ", " << z << ")";
+        EXPECT_LT(w, 1.5 * d) << "at (" << r << ", " << z << ")";
+      }
+    // Zero on the zone, positive on the free rest of the part.
+    EXPECT_NEAR(omega(0.02, 0.0095).value, 0.0, 1e-15);
+    EXPECT_GT(omega(0.02, 0.005).value, 1e-3);
+  }
+
+  // A faded zone: u . n = g0(|s|) - delta on the zone, the continuation zero outside the box
+  // of half size fade_end, and its gradient that of its values (central differences).
+  TEST(OutlineStructures, AFadedZoneValueVanishesOutsideItsBox)
+  {
+    auto cases = die_cases();
+    DieZone z{"side", -0.001, 0.001, 3e-6};
+    z.fade_start = 0.002, z.fade_end = 0.004;
+    const OutlineStructures faded(*cases[1].first.body, 4, {z});
+    const OutlineStructures plain(*cases[1].first.body, 4, {DieZone{"side", -0.001, 0.001, 3e-6}});
+    const auto u_r = [](const OutlineStructures &s, const double r, const double zz) {
+      const OutlineDisplacementValues v =
+        s.displacement(Eigen::VectorXd::Constant(1, r), Eigen::VectorXd::Constant(1, zz));
+      return std::array<double, 3>{v.u0(0, 0), v.u0_r(0, 0), v.u0_z(0, 0)};
+    };
+    // The centre (0.02, 0.01) and a point of the zone: the outward normal is +e_r.
+    const double g_half = 0.0005 * 0.0005 / (2 * 0.05);
+    EXPECT_NEAR(u_r(faded, 0.02, 0.01)[0], -3e-6, 1e-18);
+    EXPECT_NEAR(u_r(faded, 0.02, 0.0105)[0], g_half - 3e-6, 1e-18);
+    // Beyond the box, along the part and into the body: zero (unfaded: g0 - delta there).
+    EXPECT_EQ(u_r(faded, 0.02, 0.0145)[0], 0.0);
+    EXPECT_EQ(u_r(faded, 0.0155, 0.01)[0], 0.0);
+    EXPECT_GT(std::abs(u_r(plain, 0.02, 0.0145)[0]), 1e-4);
+    // Inside the fading band.
+    for (const auto &[r, zz] : std::vector<std::pair<double, double>>{
+           {0.0185, 0.0128}, {0.0195, 0.0072}, {0.0172, 0.0101}})
+      {
+        const double h = 1e-7;
+        const auto v = u_r(faded, r, zz);
+        const double d_r = (u_r(faded, r + h, zz)[0] - u_r(faded, r - h, zz)[0]) / (2 * h);
+        const double d_z = (u_r(faded, r, zz + h)[0] - u_r(faded, r, zz - h)[0]) / (2 * h);
+        EXPECT_NEAR(v[1], d_r, 1e-6 * (std::abs(d_r) + 1e-3)) << "at (" << r << ", " << zz << ")";
+        EXPECT_NEAR(v[2], d_z, 1e-6 * (std::abs(d_z) + 1e-3)) << "at (" << r << ", " << zz << ")";
+      }
+    // A fade that starts inside the zone is refused.
+    z.fade_start = 0.0005;
+    EXPECT_THROW(OutlineStructures(*cases[1].first.body, 4, {z}), std::invalid_argument);
+  }
+
   TEST(OutlineStructures, RejectsAnInclinedSymmetryLine)
   {
     nlohmann::json j = nlohmann::json::parse(R"({
