@@ -104,9 +104,9 @@ namespace rfm
     /// The zones with the continuation of their prescribed value faded between the sides of
     /// the smallest and the largest of their local boxes that contain the zone
     /// (DieZone::fade_start); a zone with fewer than two such boxes keeps the unfaded
-    /// continuation. (Fading between the two smallest instead took the Hertz case's force at
-    /// the FEM's zone from -0.4 % to -0.05 % at local degree 7, but it swung with the degree;
-    /// between the two smallest and the largest it reached -3e-5.)
+    /// continuation. (At the FEM's Hertz zone, local degree 5, 6, 7: the force -0.6, -0.5,
+    /// -0.4 % off unfaded, -0.06, -0.15, -0.05 % faded between the two smallest boxes, -0.3,
+    /// +0.03, -0.003 % between the smallest and the largest.)
     std::vector<DieZone> faded_zones(const axisym::Body &body, std::vector<DieZone> zones,
                                      const LocalBasis &local)
     {
