@@ -638,7 +638,8 @@ namespace axisym
                               "n_cells_r", "n_cells_z",
                               "n_graded_layers", "grading_ratio", "edge_modes", "edge_cutoff",
                               "edge_extra_points", "edge_mode_degree", "local_levels",
-                              "local_degree", "local_first_box", "local_max_box"});
+                              "local_degree", "local_stress_degree", "local_first_box",
+                              "local_max_box"});
         if (r.has("degree") && r.has("tolerance"))
           fail("rfm", top.at("rfm"), "give rfm.degree (fixed p) or rfm.tolerance (p rises "
                                      "until the indicator is below it), not both");
@@ -684,6 +685,8 @@ namespace axisym
           p.rfm.local_levels = r.integer("local_levels", ranges::rfm_local_levels);
         if (r.has("local_degree"))
           p.rfm.local_degree = r.integer("local_degree", ranges::rfm_local_degree);
+        if (r.has("local_stress_degree"))
+          p.rfm.local_stress_degree = r.integer("local_stress_degree", ranges::rfm_local_stress_degree);
         if (r.has("local_first_box"))
           p.rfm.local_first_box =
             r.number("local_first_box", "must be in (1, 10]", [](double x) { return x > 1 && x <= 10; });

@@ -31,6 +31,7 @@ namespace axisym
     ranges::rfm_max_degree.check(max_degree);
     ranges::rfm_local_levels.check(local_levels);
     ranges::rfm_local_degree.check(local_degree);
+    ranges::rfm_local_stress_degree.check(local_stress_degree);
     if (!(local_first_box > 1.0 && local_first_box <= 10.0))
       throw InputError("rfm.local_first_box = " + std::to_string(local_first_box) +
                        ": must be in (1, 10] (the smallest box must hold the zone)");

@@ -40,6 +40,9 @@ namespace axisym
       "rfm.local_levels", -1, 8, "-1: as many as the zone's size asks for; 0: none"};
     inline constexpr IntRange rfm_local_degree{"rfm.local_degree", 0, 12,
                                                "per direction, in each local box"};
+    inline constexpr IntRange rfm_local_stress_degree{
+      "rfm.local_stress_degree", -1, 12,
+      "per direction, the stress-only columns in each local box; -1: none"};
     inline constexpr IntRange fem_degree{"fem.degree", 1, 4, "FE_Q(p)"};
     inline constexpr IntRange fem_refinements{"fem.refinements", 0, 6,
                                               "level 6 already has 131072 cells"};
@@ -86,6 +89,9 @@ namespace axisym
     /// comparable to the section, as the paper's die); 0: none; k > 0: at most k.
     int local_levels = -1;
     int local_degree = 5;
+    /// The stress-only local columns (outline_model.h): in each box, per stress component,
+    /// the tensor Legendre polynomials of this degree on the box, without the cutoff (-1: none).
+    int local_stress_degree = 5;
     double local_first_box = 2.0;
     double local_max_box = 0.6;
 

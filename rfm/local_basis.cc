@@ -64,6 +64,37 @@ namespace rfm
     return b;
   }
 
+  Eigen::MatrixXd LocalBasis::piecewise_values(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                               const Eigen::Ref<const Eigen::VectorXd> &z,
+                                               const int degree) const
+  {
+    if (degree < 0)
+      throw std::invalid_argument("LocalBasis: degree must be >= 0");
+    const Eigen::Index n_points = r.size(), m = degree + 1, per = m * m;
+    Eigen::MatrixXd v = Eigen::MatrixXd::Zero(n_points, static_cast<Eigen::Index>(patches_.size()) * per);
+    Eigen::VectorXd px(m), dpx(m), py(m), dpy(m);
+    for (std::size_t l = 0; l < patches_.size(); ++l)
+      {
+        const LocalPatch &p = patches_[l];
+        const double h = p.half_size, x_lo = p.one_sided ? 0.0 : -1.0;
+        const double sx = 2.0 / (1.0 - x_lo);
+        const Eigen::Index first = static_cast<Eigen::Index>(l) * per;
+        for (Eigen::Index k = 0; k < n_points; ++k)
+          {
+            const double dr = r[k] - p.r, dz = z[k] - p.z;
+            const double x = (dr * p.t[0] + dz * p.t[1]) / h, y = (dr * p.n[0] + dz * p.n[1]) / h;
+            if (!(x >= x_lo && x < 1.0 && y >= 0.0 && y < 1.0))
+              continue;
+            legendre_values(degree, sx * (x - x_lo) - 1.0, px, dpx);
+            legendre_values(degree, 2.0 * y - 1.0, py, dpy);
+            for (Eigen::Index j = 0; j < m; ++j)
+              for (Eigen::Index i = 0; i < m; ++i)
+                v(k, first + j * m + i) = px[i] * py[j];
+          }
+      }
+    return v;
+  }
+
   std::array<std::vector<double>, 2> LocalBasis::breaks() const
   {
     std::array<std::vector<double>, 2> out;

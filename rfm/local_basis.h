@@ -71,6 +71,15 @@ namespace rfm
     BasisValues evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
                          const Eigen::Ref<const Eigen::VectorXd> &z) const;
 
+    /// The stress-only columns (outline_model.h): per box, the tensor Legendre polynomials of
+    /// degree <= `degree` in the box's coordinates on the box and zero outside, without the
+    /// cutoff (stresses need no continuity; the strains of the columns above jump across the
+    /// boxes' sides, where every column of evaluate() vanishes). Values only, n_points x
+    /// (boxes (degree + 1)^2), the same ordering as evaluate(). A point on a side shared by
+    /// two cells belongs to the box when 0 <= y < 1 and x_lo <= x < 1.
+    Eigen::MatrixXd piecewise_values(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                     const Eigen::Ref<const Eigen::VectorXd> &z, int degree) const;
+
     /// The r and the z coordinates of the boxes' corners (for the cells of a tensor rule: the
     /// functions are polynomials on every cell between them).
     std::array<std::vector<double>, 2> breaks() const;

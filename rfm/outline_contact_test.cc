@@ -33,12 +33,16 @@ namespace rfm
 
   // Hertz under force control (issue 23): a paraboloid R = 0.1 m pressed with 2 kN on the end
   // face of a steel cylinder 23 contact radii wide and high. The contact radius against
-  // Hertz's a = (3 P R / 4 E*)^(1/3) within the issue's 0.3 % (measured +0.19 % at the
-  // defaults: the boxes rebuilt about the zone found; +1.0 % with the boxes of the first
-  // estimate and no fading), delta against the finest FEM's 7.3681e-6 m (Q2, L = 4; measured
-  // +0.23 %; the half-space's a^2 / R = 7.504e-6 m does not apply to the finite column).
+  // Hertz's a = (3 P R / 4 E*)^(1/3) within the issue's 0.3 % and against the finest FEM's
+  // 0.866165 mm (Q2, L = 4) within its 0.1 % (measured +0.085 % and +0.093 % at the defaults;
+  // +1.0 % with the boxes of the first estimate, no fading and no stress-only local columns),
+  // delta against the FEM's 7.3681e-6 m within 0.2 % (measured +0.07 %; the half-space's
+  // a^2 / R = 7.504e-6 m does not apply to the finite column).
   TEST(OutlineContact, HertzByForceReachesTheClosedFormRadius)
   {
+#if defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "19 solves: over 400 s under the sanitizers; the Release run checks it";
+#endif
     keep_freed_matrices_in_heap(); // as rfm_solve does: 2.5 times faster here
     auto j = axisym::testing::punched_cylinder();
     j["rfm"]["degree"] = 8; // rfm_solve's default for a die problem
@@ -48,8 +52,9 @@ namespace rfm
     const double e_star = 2.1e11 / (1 - 0.3 * 0.3);
     const double a = std::cbrt(3 * 2000.0 * 0.1 / (4 * e_star));
     EXPECT_NEAR(-r.zone.s_lo, a, 3e-3 * a);
+    EXPECT_NEAR(-r.zone.s_lo, 0.866165e-3, 1e-3 * 0.866165e-3);
     EXPECT_EQ(r.zone.s_hi, 0.0);
-    EXPECT_NEAR(r.zone.indentation, 7.3681e-6, 5e-3 * 7.3681e-6);
+    EXPECT_NEAR(r.zone.indentation, 7.3681e-6, 2e-3 * 7.3681e-6);
     ASSERT_TRUE(r.model);
     EXPECT_NEAR(r.model->die_force("top").domain, 2000.0, 1e-3 * 2000.0);
   }

@@ -95,6 +95,8 @@ namespace rfm
     Eigen::Index n_local_functions() const { return local_.n_basis_functions(); }
     const LocalBasis &local_basis() const { return local_; }
     Eigen::Index n_boundary_columns() const { return structures_.n_boundary_columns(); }
+    /// The stress-only local columns (all four components; 0 without local boxes).
+    Eigen::Index n_local_stress_columns() const { return n_local_stress_; }
     Eigen::Index n_quadrature_points() const { return quadrature_.n_points(); }
     /// Unknowns after the orthonormalization (stress, displacement).
     std::array<Eigen::Index, 2> n_kept_unknowns() const { return n_kept_; }
@@ -162,6 +164,14 @@ namespace rfm
     /// The system (R11: its lower triangle; the enrichment's displacement Gram matrix in
     /// gram_e_).
     ReissnerSystem assemble();
+    /// The stress structures' values with the stress-only local columns appended to the
+    /// boundary columns: per component k, omega_k times LocalBasis::piecewise_values (the
+    /// component's own omega keeps every traction condition exact).
+    OutlineStressValues stress_values(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                      const Eigen::Ref<const Eigen::VectorXd> &z) const;
+    /// The stress columns beyond the 4 N polynomial ones: the structures' boundary columns and
+    /// the stress-only local columns.
+    Eigen::Index n_stress_border() const { return structures_.n_boundary_columns() + n_local_stress_; }
     /// The Gram matrices of the displacement columns (values and gradients, per component)
     /// for the basis transform.
     std::array<Eigen::MatrixXd, 2> displacement_grams() const;
@@ -179,6 +189,8 @@ namespace rfm
 
     std::vector<DieZone> zones_;
     LocalBasis local_; ///< the local boxes' columns after the global ones
+    int local_stress_degree_ = -1; ///< of the stress-only local columns (-1: none)
+    Eigen::Index n_local_stress_ = 0;
     Material material_;
     axisym::BodyLoads loads_; ///< body force in p_u and W, thermal strain in p_s and the functionals
     bool mirrored_ = false;   ///< integrals twice (the section and its image in z = 0)

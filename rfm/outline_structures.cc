@@ -307,6 +307,12 @@ namespace rfm
               throw std::invalid_argument("OutlineStructures: a zone's fade must start beyond "
                                           "the zone and end beyond its start");
             zone.fade_start = z.fade_start, zone.fade_end = z.fade_end;
+            zone.fade_normal_start = z.fade_normal_start, zone.fade_normal_end = z.fade_normal_end;
+            if (zone.fade_normal_end == 0.0)
+              zone.fade_normal_start = z.fade_start, zone.fade_normal_end = z.fade_end;
+            if (!(zone.fade_normal_start >= 0.0 && zone.fade_normal_end > zone.fade_normal_start))
+              throw std::invalid_argument("OutlineStructures: a zone's normal fade must start at "
+                                          "n >= 0 and end beyond its start");
           }
         const bool normal_r = std::abs(std::abs(zone.frame.normal.r) - 1.0) < 1e-12;
         const bool normal_z = std::abs(std::abs(zone.frame.normal.z) - 1.0) < 1e-12;
@@ -554,9 +560,10 @@ namespace rfm
     // Faded: value psi(|s|) psi(n), n into the body (-normal).
     const double n = -((r - zone.frame.center.r) * zone.frame.normal.r +
                        (z - zone.frame.center.z) * zone.frame.normal.z);
-    const auto psi = [&](const double x) -> std::array<double, 2> {
-      const double w = zone.fade_end - zone.fade_start;
-      const double t = (x - zone.fade_start) / w;
+    const auto psi = [](const double x, const double start,
+                        const double end) -> std::array<double, 2> {
+      const double w = end - start;
+      const double t = (x - start) / w;
       if (t <= 0.0)
         return {1.0, 0.0};
       if (t >= 1.0)
@@ -565,8 +572,8 @@ namespace rfm
       return {1.0 - t * t * t * (10.0 - 15.0 * t + 6.0 * t * t),
               -30.0 * t * t * (1.0 - t) * (1.0 - t) / w};
     };
-    const auto ps = psi(std::abs(s));
-    const auto pn = psi(std::max(n, 0.0));
+    const auto ps = psi(std::abs(s), zone.fade_start, zone.fade_end);
+    const auto pn = psi(std::max(n, 0.0), zone.fade_normal_start, zone.fade_normal_end);
     const double d_s = slope * ps[0] * pn[0] + value * (s < 0 ? -ps[1] : ps[1]) * pn[0];
     const double d_n = n > 0.0 ? value * ps[0] * pn[1] : 0.0;
     return {value * ps[0] * pn[0],

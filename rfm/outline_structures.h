@@ -158,6 +158,8 @@ namespace rfm
     /// die's centre. OutlineModel sets them to the sides of two of its local boxes
     /// (local_basis.h), which are cell ends of its rule and where the local columns may kink.
     double fade_start = 0, fade_end = 0;
+    /// The fade into the body, in n (both 0: as along the part).
+    double fade_normal_start = 0, fade_normal_end = 0;
   };
 
   class OutlineStructures
@@ -259,7 +261,7 @@ namespace rfm
       axisym::DieFrame frame;
       axisym::DieProfile profile;
       double indentation = 0;
-      double fade_start = 0, fade_end = 0;
+      double fade_start = 0, fade_end = 0, fade_normal_start = 0, fade_normal_end = 0;
       int component = 0;
       double sign = 1;
     };
