@@ -68,6 +68,43 @@ namespace rfm
     EXPECT_DOUBLE_EQ(b[0][5], 0.006);
   }
 
+  // The stress-only columns: on the box the products of Legendre polynomials of the box's
+  // coordinates (x in [0, 1] mapped onto [-1, 1] for a one-sided box), without the cutoff, so
+  // nonzero up to the box's sides; zero outside, including beyond a side.
+  TEST(LocalBasis, PiecewiseValuesAreLegendreProductsOnTheBox)
+  {
+    const LocalBasis basis = two_boxes();
+    const int d = 4, per = (d + 1) * (d + 1);
+    Eigen::VectorXd r(4), z(4);
+    r << 0.0015, 0.0021, 0.0099, 0.0099; // in a near its side; beyond a's side; in b; beyond b
+    z << 0.0195, 0.0195, 0.0039, 0.0041;
+    const Eigen::MatrixXd v = basis.piecewise_values(r, z, d);
+    ASSERT_EQ(v.rows(), 4);
+    ASSERT_EQ(v.cols(), 2 * per);
+    const auto legendre = [](const int k, const double x) {
+      const double p[] = {1.0, x, 0.5 * (3 * x * x - 1), 0.5 * (5 * x * x * x - 3 * x),
+                          (35 * x * x * x * x - 30 * x * x + 3) / 8.0};
+      return p[k];
+    };
+    // Box a: x = r / 0.002 in [0, 1] -> xi = 2 x - 1, y = (0.02 - z) / 0.002 -> 2 y - 1.
+    const double xi_a = 2 * (0.0015 / 0.002) - 1, eta_a = 2 * (0.0005 / 0.002) - 1;
+    // Box b: x = z / 0.004 in [-1, 1], y = (0.01 - r) / 0.004.
+    const double xi_b = 0.0039 / 0.004, eta_b = 2 * (0.0001 / 0.004) - 1;
+    for (int j = 0; j <= d; ++j)
+      for (int i = 0; i <= d; ++i)
+        {
+          EXPECT_NEAR(v(0, j * (d + 1) + i), legendre(i, xi_a) * legendre(j, eta_a), 1e-13);
+          EXPECT_NEAR(v(2, per + j * (d + 1) + i), legendre(i, xi_b) * legendre(j, eta_b), 1e-13);
+        }
+    EXPECT_EQ(v.row(0).tail(per).cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_EQ(v.row(1).cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_EQ(v.row(2).head(per).cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_EQ(v.row(3).cwiseAbs().maxCoeff(), 0.0);
+    // Near the side x -> 1 the values stay O(1) (no cutoff).
+    EXPECT_GT(std::abs(v(2, per + d)), 0.5);
+    EXPECT_THROW(basis.piecewise_values(r, z, -1), std::invalid_argument);
+  }
+
   TEST(LocalBasis, RefusesBadBoxes)
   {
     LocalPatch p;

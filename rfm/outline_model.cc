@@ -1060,7 +1060,12 @@ namespace rfm
     const double n_eq = n_ends * 2.0 * n_near * n_near;
     const double n_e = n_ends * options.edge_modes * (options.edge_mode_degree + 1.0) *
                        (options.edge_mode_degree + 2.0) / 2.0;
-    const double n_s = 4 * n + n_e, n_u = 2 * n + n_e;
+    // The stress-only local columns: four components per box.
+    const double n_ls = options.local_stress_degree < 0
+                          ? 0.0
+                          : 4.0 * n_dies * n_boxes * (options.local_stress_degree + 1.0) *
+                              (options.local_stress_degree + 1.0);
+    const double n_s = 4 * n + n_ls + n_e, n_u = 2 * n + n_e;
     return 8.0 * (14.0 * n_q * n + 20.0 * n_eq * n_s + 4.0 * n_s * n_s + 3.0 * n_s * n_u +
                   4.0 * n_u * n_u);
   }
