@@ -155,10 +155,11 @@ namespace rfm
     /// functions must cancel it to that many more digits. With fading the continuation is
     /// (g0(|s|) - delta) psi(|s|) psi(n), n the distance into the body from the part and psi
     /// the C2 quintic step from 1 at fade_start to 0 at fade_end: zero outside a box about the
-    /// die's centre. OutlineModel sets them to the sides of two of its local boxes
-    /// (local_basis.h), which are cell ends of its rule and where the local columns may kink.
+    /// die's centre. OutlineModel fades from the zone's end (along the part) and from the part
+    /// (into the body) to the side of one of its local boxes (local_basis.h): cell ends of its
+    /// rule, where the local columns may kink.
     double fade_start = 0, fade_end = 0;
-    /// The fade into the body, in n (both 0: as along the part).
+    /// The fade into the body, in n >= 0 (both 0: as along the part).
     double fade_normal_start = 0, fade_normal_end = 0;
   };
 
