@@ -767,7 +767,10 @@ namespace rfm
             // the zone's other end and the part's end beyond the edge (the interaction
             // integral's domain).
             const double beyond = into > 0 ? s_edge - f.s_min : f.s_max - s_edge;
-            double room = std::min(zone.s_hi - zone.s_lo, beyond);
+            // With two free ends each takes half the zone: the near-edge rules add "all minus
+            // the polynomial part" on their half discs, which must not overlap.
+            const bool other_free = into > 0 ? zone.s_hi < f.s_max - tol : zone.s_lo > f.s_min + tol;
+            double room = std::min((other_free ? 0.5 : 1.0) * (zone.s_hi - zone.s_lo), beyond);
             for (const axisym::OutlineEdge &e : problem.body->outline.edges())
               if (e.part != zone.part)
                 room = std::min(room, e.distance_to(p));
