@@ -3,8 +3,8 @@
 #include "rfm/contact.h"
 #include "rfm/hardware.h"
 #include "rfm/section_quadrature.h"
+#include "rfm/symmetric_eigen.h"
 
-#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <chrono>
@@ -264,14 +264,13 @@ namespace rfm
     // with l > 1e-14 max l kept: T = D V L^-1/2, so that T^T G T = I.
     auto orthonormal = [](const Eigen::MatrixXd &gram) {
       const Eigen::VectorXd d = gram.diagonal().cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
-      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(d.asDiagonal() * gram *
-                                                               d.asDiagonal());
-      const Eigen::VectorXd &l = eig.eigenvalues(); // ascending
+      const SymmetricEigen eig = symmetric_eigen(d.asDiagonal() * gram * d.asDiagonal(), true);
+      const Eigen::VectorXd &l = eig.values; // ascending
       Eigen::Index first = 0;
       while (first < l.size() && !(l[first] > 1e-14 * l[l.size() - 1]))
         ++first;
       const Eigen::Index kept = l.size() - first;
-      return Eigen::MatrixXd(d.asDiagonal() * eig.eigenvectors().rightCols(kept) *
+      return Eigen::MatrixXd(d.asDiagonal() * eig.vectors.rightCols(kept) *
                              l.tail(kept).cwiseSqrt().cwiseInverse().asDiagonal());
     };
     // Stresses: all columns at once (R11 couples the components and the boundary columns
@@ -340,18 +339,26 @@ namespace rfm
   std::array<Eigen::MatrixXd, 2> OutlineModel::displacement_grams() const
   {
     // Values / l^2 plus gradients (l the size of the section, so both terms weigh alike).
+    // In blocks of points, as evaluate_parts.
     const Quadrature2D &q = quadrature_;
-    const Eigen::VectorXd mu = q.weights.cwiseProduct(q.r);
-    const DisplacementBasisValues v = displacement_basis(
-      basis_values(q.r, q.z), as_structure(structures_.displacement(q.r, q.z)));
     const double l = structures_.body().outline.size();
+    const Eigen::Index n = n_basis_functions(), n_points = q.n_points();
     std::array<Eigen::MatrixXd, 2> gram;
     for (int m = 0; m < 2; ++m)
+      gram[m].setZero(n, n);
+    for (Eigen::Index k0 = 0; k0 < n_points; k0 += evaluation_block)
       {
-        const Eigen::MatrixXd wv = mu.asDiagonal() * v.value[m];
-        gram[m] = (wv.transpose() * v.value[m]) / (l * l);
-        gram[m].noalias() += v.d_r[m].transpose() * (mu.asDiagonal() * v.d_r[m]);
-        gram[m].noalias() += v.d_z[m].transpose() * (mu.asDiagonal() * v.d_z[m]);
+        const Eigen::Index k = std::min(evaluation_block, n_points - k0);
+        const auto r = q.r.segment(k0, k), z = q.z.segment(k0, k);
+        const Eigen::VectorXd mu = q.weights.segment(k0, k).cwiseProduct(r);
+        const DisplacementBasisValues v =
+          displacement_basis(basis_values(r, z), as_structure(structures_.displacement(r, z)));
+        for (int m = 0; m < 2; ++m)
+          {
+            gram[m].noalias() += (v.value[m].transpose() * (mu.asDiagonal() * v.value[m])) / (l * l);
+            gram[m].noalias() += v.d_r[m].transpose() * (mu.asDiagonal() * v.d_r[m]);
+            gram[m].noalias() += v.d_z[m].transpose() * (mu.asDiagonal() * v.d_z[m]);
+          }
       }
     return gram;
   }
@@ -589,6 +596,31 @@ namespace rfm
   }
 
   FieldValues OutlineModel::evaluate_parts(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                           const Eigen::Ref<const Eigen::VectorXd> &z,
+                                           const bool with_enrichment) const
+  {
+    // In blocks of points: the basis values of the whole section's rule (48 000 points times
+    // 3 (p + 1)^2 columns per component at p = 20) would take gigabytes, and their page faults
+    // and zeroing took longer than the products.
+    const Eigen::Index n_points = r.size();
+    if (n_points <= evaluation_block)
+      return evaluate_block(r, z, with_enrichment);
+    FieldValues f;
+    f.u.resize(n_points, 2);
+    f.sigma.resize(n_points, n_stress_components);
+    f.strain.resize(n_points, n_stress_components);
+    for (Eigen::Index k0 = 0; k0 < n_points; k0 += evaluation_block)
+      {
+        const Eigen::Index m = std::min(evaluation_block, n_points - k0);
+        const FieldValues b = evaluate_block(r.segment(k0, m), z.segment(k0, m), with_enrichment);
+        f.u.middleRows(k0, m) = b.u;
+        f.sigma.middleRows(k0, m) = b.sigma;
+        f.strain.middleRows(k0, m) = b.strain;
+      }
+    return f;
+  }
+
+  FieldValues OutlineModel::evaluate_block(const Eigen::Ref<const Eigen::VectorXd> &r,
                                            const Eigen::Ref<const Eigen::VectorXd> &z,
                                            const bool with_enrichment) const
   {

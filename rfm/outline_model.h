@@ -175,9 +175,13 @@ namespace rfm
     /// The Gram matrices of the displacement columns (values and gradients, per component)
     /// for the basis transform.
     std::array<Eigen::MatrixXd, 2> displacement_grams() const;
-    /// The fields, without the enrichment's part when !with_enrichment (no mirroring).
+    /// The fields, without the enrichment's part when !with_enrichment (no mirroring), in
+    /// blocks of at most evaluation_block points.
     FieldValues evaluate_parts(const Eigen::Ref<const Eigen::VectorXd> &r,
                                const Eigen::Ref<const Eigen::VectorXd> &z, bool with_enrichment) const;
+    FieldValues evaluate_block(const Eigen::Ref<const Eigen::VectorXd> &r,
+                               const Eigen::Ref<const Eigen::VectorXd> &z, bool with_enrichment) const;
+    static constexpr Eigen::Index evaluation_block = 2048;
     /// The enrichment columns of every zone end side by side.
     EdgeColumns edge_columns(const Eigen::Ref<const Eigen::VectorXd> &r,
                              const Eigen::Ref<const Eigen::VectorXd> &z) const;

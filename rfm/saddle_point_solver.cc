@@ -4,24 +4,22 @@
 
 #include "rfm/bordered_cholesky.h"
 #include "rfm/dense_cholesky.h"
+#include "rfm/symmetric_eigen.h"
 
-#include <Eigen/Eigenvalues>
 
 #include <cmath>
 #include <limits>
 #include <sstream>
-#include <vector>
 #include <vector>
 
 namespace rfm
 {
   namespace
   {
-    // From the lower triangle of a (SelfAdjointEigenSolver reads nothing else).
+    // From the lower triangle of a (symmetric_eigen reads nothing else).
     double eigen_condition(const Eigen::Ref<const Eigen::MatrixXd> &a)
     {
-      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(a, Eigen::EigenvaluesOnly);
-      const Eigen::VectorXd &l = es.eigenvalues();
+      const Eigen::VectorXd l = symmetric_eigen(a, false).values;
       return l.minCoeff() > 0 ? l.maxCoeff() / l.minCoeff()
                               : std::numeric_limits<double>::infinity();
     }

@@ -85,6 +85,15 @@ namespace rfm
   // The recurrence in arithmetic T (double, or long double: 64-bit significand, so the
   // rounding noise that the recurrence amplifies is 2^-11 of the double one), chunk points
   // at a time, values and (with derivatives) (x q)' = x' q + x q'.
+  //
+  // Column k solves q_k h_kk + sum_{j<k} h_jk q_j = x q_parent(k). The first degree_r + 1
+  // columns (j = 0) go one at a time (parent k - 1). Beyond them the parent is
+  // k - (degree_r + 1), so a block of degree_r + 1 consecutive columns has every parent
+  // before the block: the block's right-hand sides x q_parent less the known columns' share
+  // (one matrix product) and then a small triangular solve with the block's part of h. The
+  // same recurrence as one column at a time, with the sums in another order; the matrix
+  // products run at the GEMM rate where the one-column form ran at the GEMV rate (3-4x
+  // faster at p = 20).
   template <typename T>
   BasisValues SectionPolynomialBasis::evaluate_in(const Eigen::Ref<const Eigen::VectorXd> &r,
                                                   const Eigen::Ref<const Eigen::VectorXd> &z,
@@ -93,13 +102,13 @@ namespace rfm
   {
     using Matrix = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>;
     using Array = Eigen::Array<T, Eigen::Dynamic, 1>;
-    const Eigen::Index n = r.size(), n_f = n_basis_functions();
+    const Eigen::Index n = r.size(), n_f = n_basis_functions(), row = degree_r_ + 1;
     const Matrix h = h_.cast<T>();
     BasisValues b;
     b.value.resize(n, n_f);
     if (derivatives)
       b.d_r.resize(n, n_f), b.d_z.resize(n, n_f);
-    Matrix q(chunk, n_f), q_r, q_z;
+    Matrix q(chunk, n_f), q_r, q_z, rhs(chunk, row);
     if (derivatives)
       q_r.resize(chunk, n_f), q_z.resize(chunk, n_f);
     for (Eigen::Index start = 0; start < n; start += chunk)
@@ -111,26 +120,47 @@ namespace rfm
         v.col(0).setConstant(T(q0_));
         if (derivatives)
           q_r.topRows(m).col(0).setZero(), q_z.topRows(m).col(0).setZero();
-        for (Eigen::Index k = 1; k < n_f; ++k)
+        // j = 0: one column at a time.
+        for (Eigen::Index k = 1; k < std::min(row, n_f); ++k)
           {
-            const bool along_r = k <= degree_r_; // j = 0
-            const Eigen::Index parent = along_r ? k - 1 : k - (degree_r_ + 1);
-            const Array &x = along_r ? xi : eta;
             const auto hk = h.col(k).head(k);
             const T inv = T(1) / h(k, k);
             if (derivatives)
               {
                 auto vr = q_r.topRows(m), vz = q_z.topRows(m);
-                vr.col(k) = (x * vr.col(parent).array()).matrix();
-                vz.col(k) = (x * vz.col(parent).array()).matrix();
-                if (along_r)
-                  vr.col(k) += T(r_scale_) * v.col(parent);
-                else
-                  vz.col(k) += T(z_scale_) * v.col(parent);
+                vr.col(k) = (xi * vr.col(k - 1).array()).matrix() + T(r_scale_) * v.col(k - 1);
+                vz.col(k) = (xi * vz.col(k - 1).array()).matrix();
                 vr.col(k) = (vr.col(k) - vr.leftCols(k) * hk) * inv;
                 vz.col(k) = (vz.col(k) - vz.leftCols(k) * hk) * inv;
               }
-            v.col(k) = ((x * v.col(parent).array()).matrix() - v.leftCols(k) * hk) * inv;
+            v.col(k) = ((xi * v.col(k - 1).array()).matrix() - v.leftCols(k) * hk) * inv;
+          }
+        // j >= 1: a block of columns k0 .. k0 + w - 1 at a time (parents k - row < k0).
+        for (Eigen::Index k0 = row; k0 < n_f; k0 += row)
+          {
+            const Eigen::Index w = std::min(row, n_f - k0);
+            const auto h_known = h.block(0, k0, k0, w);
+            const auto h_block = h.block(k0, k0, w, w).template triangularView<Eigen::Upper>();
+            auto block = [&](auto &&values, auto &&rhs_of_column) {
+              auto x = rhs.topLeftCorner(m, w);
+              for (Eigen::Index i = 0; i < w; ++i)
+                x.col(i) = rhs_of_column(k0 + i - row);
+              x.noalias() -= values.leftCols(k0) * h_known;
+              h_block.template solveInPlace<Eigen::OnTheRight>(x);
+              values.middleCols(k0, w) = x;
+            };
+            if (derivatives)
+              {
+                auto vr = q_r.topRows(m), vz = q_z.topRows(m);
+                block(vr, [&](Eigen::Index parent) {
+                  return (eta * vr.col(parent).array()).matrix();
+                });
+                block(vz, [&](Eigen::Index parent) {
+                  return Eigen::Matrix<T, Eigen::Dynamic, 1>(
+                    (eta * vz.col(parent).array()).matrix() + T(z_scale_) * v.col(parent));
+                });
+              }
+            block(v, [&](Eigen::Index parent) { return (eta * v.col(parent).array()).matrix(); });
           }
         b.value.middleRows(start, m) = v.template cast<double>();
         if (derivatives)
