@@ -4,9 +4,10 @@
 // With OpenBLAS (RFM_OPENBLAS) through LAPACK's dsyevd: blocked tridiagonal reduction and
 // divide and conquer, whose level-3 BLAS calls run at the GEMM rate, where Eigen's
 // SelfAdjointEigenSolver reduces with level-2 updates and accumulates the QR rotations one at
-// a time. Measured on the project's 2-core machine, one thread, n = 2640 (the stress Gram of
-// the sharp flat punch at p = 20): see the closing note of issue 23. Without OpenBLAS,
-// Eigen's solver. Both are backward stable; the results agree to rounding.
+// a time. Measured on the project's 2-core machine, one thread: the sharp flat punch at
+// p = 20 (a 2640-column stress Gram and two 549-column displacement ones) spent 17.9 s in
+// its solve phase with Eigen's solver, 12.2 s with dsyevd. Without OpenBLAS, Eigen's
+// solver. Both are backward stable; the results agree to rounding.
 #pragma once
 
 #include <Eigen/Core>
