@@ -37,7 +37,7 @@ namespace axisym
                        ": must be in (1, 10] (the smallest box must hold the zone)");
     if (!(local_max_box > 0.0 && local_max_box <= 1.0))
       throw InputError("rfm.local_max_box = " + std::to_string(local_max_box) +
-                       ": must be in (0, 1] (a fraction of the section's smaller side)");
+                       ": must be in (0, 1] (a fraction of the section's extent along the die's part)");
     if (tolerance && !(*tolerance >= min_tolerance && *tolerance <= 0.1))
       throw InputError("rfm.tolerance = " + std::to_string(*tolerance) +
                        ": must be in [1e-14, 0.1] (the indicator |Phi_L - Phi_C| / |Phi_R| "

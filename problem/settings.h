@@ -83,9 +83,10 @@ namespace axisym
     /// to this total degree ((d + 1)(d + 2)/2 columns per mode; 0: the modes alone).
     int edge_mode_degree = 2;
     /// Local resolution near a die's zone (rfm/local_basis.h): nested boxes of half sizes
-    /// local_first_box c, twice that, ... up to local_max_box times the section's smaller
-    /// side (c the zone's extent from its centre), each with the tensor Legendre polynomials of
-    /// degree local_degree times a cutoff. -1: as many boxes as fit (none when the zone is
+    /// local_first_box c, twice that, ... up to local_max_box times the section's extent
+    /// along the die's part (c the zone's extent from its centre), each with the tensor
+    /// Legendre polynomials of degree local_degree times a cutoff (2 local_degree + 1 along
+    /// the part in a box about a zone with two free ends, local_basis.h). -1: as many boxes as fit (none when the zone is
     /// comparable to the section, as the paper's die); 0: none; k > 0: at most k.
     int local_levels = -1;
     int local_degree = 5;

@@ -1,5 +1,6 @@
 #include "rfm/local_basis.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -21,21 +22,40 @@ namespace rfm
       }
   }
 
+  int LocalBasis::max_t_degree() const
+  {
+    int d = degree_;
+    for (const LocalPatch &p : patches_)
+      d = std::max(d, t_degree(p, degree_));
+    return d;
+  }
+
+  Eigen::Index LocalBasis::n_functions(const int d) const
+  {
+    Eigen::Index n = 0;
+    for (const LocalPatch &p : patches_)
+      n += n_functions(p, d);
+    return n;
+  }
+
   BasisValues LocalBasis::evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
                                    const Eigen::Ref<const Eigen::VectorXd> &z) const
   {
-    const Eigen::Index n_points = r.size(), m = degree_ + 1, per = functions_per_patch();
+    const Eigen::Index n_points = r.size(), m = degree_ + 1;
     BasisValues b;
     b.value.setZero(n_points, n_basis_functions());
     b.d_r.setZero(n_points, n_basis_functions());
     b.d_z.setZero(n_points, n_basis_functions());
-    Eigen::VectorXd px(m), dpx(m), py(m), dpy(m);
-    for (std::size_t l = 0; l < patches_.size(); ++l)
+    Eigen::VectorXd px, dpx, py(m), dpy(m);
+    Eigen::Index first = 0;
+    for (std::size_t l = 0; l < patches_.size(); first += n_functions(patches_[l], degree_), ++l)
       {
         const LocalPatch &p = patches_[l];
+        const int d_t = t_degree(p, degree_);
+        const Eigen::Index m_t = d_t + 1;
+        px.resize(m_t), dpx.resize(m_t);
         const double h = p.half_size, x_lo = p.one_sided ? 0.0 : -1.0;
         const double sx = 2.0 / (1.0 - x_lo); // d xi / dx
-        const Eigen::Index first = static_cast<Eigen::Index>(l) * per;
         for (Eigen::Index k = 0; k < n_points; ++k)
           {
             const double dr = r[k] - p.r, dz = z[k] - p.z;
@@ -46,14 +66,14 @@ namespace rfm
             const double cx = p.one_sided ? 1.0 - x : (1.0 - x) * (1.0 + x);
             const double dcx = p.one_sided ? -1.0 : -2.0 * x;
             const double cy = 1.0 - y, dcy = -1.0;
-            legendre_values(degree_, sx * (x - x_lo) - 1.0, px, dpx);
+            legendre_values(d_t, sx * (x - x_lo) - 1.0, px, dpx);
             legendre_values(degree_, 2.0 * y - 1.0, py, dpy);
             for (Eigen::Index j = 0; j < m; ++j)
-              for (Eigen::Index i = 0; i < m; ++i)
+              for (Eigen::Index i = 0; i < m_t; ++i)
                 {
                   const double fx = cx * px[i], dfx = dcx * px[i] + cx * sx * dpx[i];
                   const double fy = cy * py[j], dfy = dcy * py[j] + cy * 2.0 * dpy[j];
-                  const Eigen::Index col = first + j * m + i;
+                  const Eigen::Index col = first + j * m_t + i;
                   const double d_x = dfx * fy / h, d_y = fx * dfy / h; // per metre
                   b.value(k, col) = fx * fy;
                   b.d_r(k, col) = d_x * p.t[0] + d_y * p.n[0];
@@ -70,26 +90,29 @@ namespace rfm
   {
     if (degree < 0)
       throw std::invalid_argument("LocalBasis: degree must be >= 0");
-    const Eigen::Index n_points = r.size(), m = degree + 1, per = m * m;
-    Eigen::MatrixXd v = Eigen::MatrixXd::Zero(n_points, static_cast<Eigen::Index>(patches_.size()) * per);
-    Eigen::VectorXd px(m), dpx(m), py(m), dpy(m);
-    for (std::size_t l = 0; l < patches_.size(); ++l)
+    const Eigen::Index n_points = r.size(), m = degree + 1;
+    Eigen::MatrixXd v = Eigen::MatrixXd::Zero(n_points, n_functions(degree));
+    Eigen::VectorXd px, dpx, py(m), dpy(m);
+    Eigen::Index first = 0;
+    for (std::size_t l = 0; l < patches_.size(); first += n_functions(patches_[l], degree), ++l)
       {
         const LocalPatch &p = patches_[l];
+        const int d_t = t_degree(p, degree);
+        const Eigen::Index m_t = d_t + 1;
+        px.resize(m_t), dpx.resize(m_t);
         const double h = p.half_size, x_lo = p.one_sided ? 0.0 : -1.0;
         const double sx = 2.0 / (1.0 - x_lo);
-        const Eigen::Index first = static_cast<Eigen::Index>(l) * per;
         for (Eigen::Index k = 0; k < n_points; ++k)
           {
             const double dr = r[k] - p.r, dz = z[k] - p.z;
             const double x = (dr * p.t[0] + dz * p.t[1]) / h, y = (dr * p.n[0] + dz * p.n[1]) / h;
             if (!(x >= x_lo && x < 1.0 && y >= 0.0 && y < 1.0))
               continue;
-            legendre_values(degree, sx * (x - x_lo) - 1.0, px, dpx);
+            legendre_values(d_t, sx * (x - x_lo) - 1.0, px, dpx);
             legendre_values(degree, 2.0 * y - 1.0, py, dpy);
             for (Eigen::Index j = 0; j < m; ++j)
-              for (Eigen::Index i = 0; i < m; ++i)
-                v(k, first + j * m + i) = px[i] * py[j];
+              for (Eigen::Index i = 0; i < m_t; ++i)
+                v(k, first + j * m_t + i) = px[i] * py[j];
           }
       }
     return v;

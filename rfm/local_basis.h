@@ -59,24 +59,39 @@ namespace rfm
     LocalBasis(std::vector<LocalPatch> patches, int degree);
 
     bool empty() const { return patches_.empty(); }
+    /// The degree across the part (along n), and along it in a one-sided box.
     int degree() const { return degree_; }
     const std::vector<LocalPatch> &patches() const { return patches_; }
-    Eigen::Index functions_per_patch() const { return (degree_ + 1) * (degree_ + 1); }
-    Eigen::Index n_basis_functions() const
+    /// The degree along t in a box whose functions have degree d along n: d in a one-sided
+    /// box, 2 d + 1 in a two-sided one. A two-sided box spans twice the length along t, and a
+    /// field about a zone with two free ends is neither even nor odd there: with 2 d + 1 its
+    /// even and its odd parts each get d + 1 functions, the resolution of a one-sided box of
+    /// degree d (measured on the ring die at the FEM's zone: see the closing note of issue 23,
+    /// session 5).
+    static int t_degree(const LocalPatch &p, const int d) { return p.one_sided ? d : 2 * d + 1; }
+    /// The largest degree along t of any box (for the quadrature rule).
+    int max_t_degree() const;
+    /// Columns of one box with degree d along n: (t_degree + 1)(d + 1).
+    static Eigen::Index n_functions(const LocalPatch &p, const int d)
     {
-      return static_cast<Eigen::Index>(patches_.size()) * functions_per_patch();
+      return static_cast<Eigen::Index>(t_degree(p, d) + 1) * (d + 1);
     }
+    /// All boxes' columns with degree d along n.
+    Eigen::Index n_functions(int d) const;
+    Eigen::Index n_basis_functions() const { return n_functions(degree_); }
     /// Values and first derivatives at points (n_points x n_basis_functions(); zero outside
-    /// each box). Ordering: patch by patch, index j (d + 1) + i within a patch.
+    /// each box). Ordering: patch by patch, index j (t_degree + 1) + i within a patch (i along
+    /// t, j along n).
     BasisValues evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
                          const Eigen::Ref<const Eigen::VectorXd> &z) const;
 
     /// The stress-only columns (outline_model.h): per box, the tensor Legendre polynomials of
     /// degree <= `degree` in the box's coordinates on the box and zero outside, without the
     /// cutoff (stresses need no continuity; the strains of the columns above jump across the
-    /// boxes' sides, where every column of evaluate() vanishes). Values only, n_points x
-    /// (boxes (degree + 1)^2), the same ordering as evaluate(). A point on a side shared by
-    /// two cells belongs to the box when 0 <= y < 1 and x_lo <= x < 1.
+    /// boxes' sides, where every column of evaluate() vanishes). `degree` along n and
+    /// t_degree(box, degree) along t. Values only, n_points x n_functions(degree), the same
+    /// ordering as evaluate(). A point on a side shared by two cells belongs to the box when
+    /// 0 <= y < 1 and x_lo <= x < 1.
     Eigen::MatrixXd piecewise_values(const Eigen::Ref<const Eigen::VectorXd> &r,
                                      const Eigen::Ref<const Eigen::VectorXd> &z, int degree) const;
 

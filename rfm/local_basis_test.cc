@@ -24,16 +24,18 @@ namespace rfm
   TEST(LocalBasis, SupportedInItsBox)
   {
     const LocalBasis basis = two_boxes();
-    ASSERT_EQ(basis.n_basis_functions(), 2 * 16);
+    // a: one-sided, degree 3 both ways (16); b: two-sided, 2 * 3 + 1 along t (8 x 4 = 32).
+    ASSERT_EQ(basis.n_basis_functions(), 16 + 32);
     Eigen::VectorXd r(5), z(5);
     r << 0.001, 0.0025, 0.001, 0.009, 0.01 - 0.004;   // in a; beyond a's side; at a's depth;
     z << 0.019, 0.019, 0.02 - 0.002, 0.001, 0.001;   // in b; at b's depth
     const BasisValues v = basis.evaluate(r, z);
     EXPECT_GT(v.value.row(0).head(16).cwiseAbs().maxCoeff(), 1e-3);
-    EXPECT_EQ(v.value.row(0).tail(16).cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_EQ(v.value.row(0).tail(32).cwiseAbs().maxCoeff(), 0.0);
     EXPECT_EQ(v.value.row(1).cwiseAbs().maxCoeff(), 0.0);
     EXPECT_LT(v.value.row(2).cwiseAbs().maxCoeff(), 1e-12);
-    EXPECT_GT(v.value.row(3).tail(16).cwiseAbs().maxCoeff(), 1e-3);
+    EXPECT_GT(v.value.row(3).tail(32).cwiseAbs().maxCoeff(), 1e-3);
+    EXPECT_EQ(v.value.row(3).head(16).cwiseAbs().maxCoeff(), 0.0);
     EXPECT_LT(v.value.row(4).cwiseAbs().maxCoeff(), 1e-12);
   }
 
@@ -74,34 +76,46 @@ namespace rfm
   TEST(LocalBasis, PiecewiseValuesAreLegendreProductsOnTheBox)
   {
     const LocalBasis basis = two_boxes();
-    const int d = 4, per = (d + 1) * (d + 1);
+    // Box a one-sided: degree d both ways; box b two-sided: 2 d + 1 along t (its even and odd
+    // parts in x each get d + 1 functions).
+    const int d = 4, d_b = 2 * d + 1, per_a = (d + 1) * (d + 1), per_b = (d_b + 1) * (d + 1);
     Eigen::VectorXd r(4), z(4);
     r << 0.0015, 0.0021, 0.0099, 0.0099; // in a near its side; beyond a's side; in b; beyond b
     z << 0.0195, 0.0195, 0.0039, 0.0041;
     const Eigen::MatrixXd v = basis.piecewise_values(r, z, d);
     ASSERT_EQ(v.rows(), 4);
-    ASSERT_EQ(v.cols(), 2 * per);
+    ASSERT_EQ(v.cols(), per_a + per_b);
+    // Legendre polynomials by Bonnet's recurrence (k + 1) P_{k+1} = (2k + 1) x P_k - k P_{k-1}.
     const auto legendre = [](const int k, const double x) {
-      const double p[] = {1.0, x, 0.5 * (3 * x * x - 1), 0.5 * (5 * x * x * x - 3 * x),
-                          (35 * x * x * x * x - 30 * x * x + 3) / 8.0};
-      return p[k];
+      double p0 = 1.0, p1 = x;
+      if (k == 0)
+        return p0;
+      for (int m = 1; m < k; ++m)
+        {
+          const double p2 = ((2 * m + 1) * x * p1 - m * p0) / (m + 1);
+          p0 = p1, p1 = p2;
+        }
+      return p1;
     };
+    EXPECT_NEAR(legendre(4, 0.3), (35 * 0.0081 - 30 * 0.09 + 3) / 8.0, 1e-15);
     // Box a: x = r / 0.002 in [0, 1] -> xi = 2 x - 1, y = (0.02 - z) / 0.002 -> 2 y - 1.
     const double xi_a = 2 * (0.0015 / 0.002) - 1, eta_a = 2 * (0.0005 / 0.002) - 1;
     // Box b: x = z / 0.004 in [-1, 1], y = (0.01 - r) / 0.004.
     const double xi_b = 0.0039 / 0.004, eta_b = 2 * (0.0001 / 0.004) - 1;
     for (int j = 0; j <= d; ++j)
-      for (int i = 0; i <= d; ++i)
-        {
+      {
+        for (int i = 0; i <= d; ++i)
           EXPECT_NEAR(v(0, j * (d + 1) + i), legendre(i, xi_a) * legendre(j, eta_a), 1e-13);
-          EXPECT_NEAR(v(2, per + j * (d + 1) + i), legendre(i, xi_b) * legendre(j, eta_b), 1e-13);
-        }
-    EXPECT_EQ(v.row(0).tail(per).cwiseAbs().maxCoeff(), 0.0);
+        for (int i = 0; i <= d_b; ++i)
+          EXPECT_NEAR(v(2, per_a + j * (d_b + 1) + i), legendre(i, xi_b) * legendre(j, eta_b), 1e-13)
+            << "i = " << i << ", j = " << j;
+      }
+    EXPECT_EQ(v.row(0).tail(per_b).cwiseAbs().maxCoeff(), 0.0);
     EXPECT_EQ(v.row(1).cwiseAbs().maxCoeff(), 0.0);
-    EXPECT_EQ(v.row(2).head(per).cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_EQ(v.row(2).head(per_a).cwiseAbs().maxCoeff(), 0.0);
     EXPECT_EQ(v.row(3).cwiseAbs().maxCoeff(), 0.0);
     // Near the side x -> 1 the values stay O(1) (no cutoff).
-    EXPECT_GT(std::abs(v(2, per + d)), 0.5);
+    EXPECT_GT(std::abs(v(2, per_a + 1)), 0.9); // P_1(xi_b) = 0.975
     EXPECT_THROW(basis.piecewise_values(r, z, -1), std::invalid_argument);
   }
 
