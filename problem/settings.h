@@ -86,8 +86,9 @@ namespace axisym
     /// local_first_box c, twice that, ... up to local_max_box times the section's extent
     /// along the die's part (c the zone's extent from its centre), each with the tensor
     /// Legendre polynomials of degree local_degree times a cutoff (2 local_degree + 1 along
-    /// the part in a box about a zone with two free ends, local_basis.h). -1: as many boxes as fit (none when the zone is
-    /// comparable to the section, as the paper's die); 0: none; k > 0: at most k.
+    /// the part in a box about a zone with two free ends, local_basis.h). -1: as many boxes
+    /// as fit (none when the zone is comparable to the section, as the paper's die); 0: none;
+    /// k > 0: at most k.
     int local_levels = -1;
     int local_degree = 5;
     /// The stress-only local columns (outline_model.h): in each box, per stress component,

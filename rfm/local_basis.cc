@@ -1,6 +1,5 @@
 #include "rfm/local_basis.h"
 
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -20,14 +19,6 @@ namespace rfm
         if (std::abs(tt - 1.0) > 1e-12 || std::abs(nn - 1.0) > 1e-12 || std::abs(tn) > 1e-12)
           throw std::invalid_argument("LocalBasis: t and n must be orthonormal");
       }
-  }
-
-  int LocalBasis::max_t_degree() const
-  {
-    int d = degree_;
-    for (const LocalPatch &p : patches_)
-      d = std::max(d, t_degree(p, degree_));
-    return d;
   }
 
   Eigen::Index LocalBasis::n_functions(const int d) const

@@ -69,8 +69,6 @@ namespace rfm
     /// degree d (measured on the ring die at the FEM's zone: see the closing note of issue 23,
     /// session 5).
     static int t_degree(const LocalPatch &p, const int d) { return p.one_sided ? d : 2 * d + 1; }
-    /// The largest degree along t of any box (for the quadrature rule).
-    int max_t_degree() const;
     /// Columns of one box with degree d along n: (t_degree + 1)(d + 1).
     static Eigen::Index n_functions(const LocalPatch &p, const int d)
     {

@@ -239,8 +239,8 @@ namespace rfm
   /// t along the part (away from the section when the centre is at the part's end: one-sided
   /// boxes), n into the body, as long as h_l <= local_max_box times the extent of the
   /// section's box along t, at most local_levels of them (-1: no limit), with local_degree
-  /// (LocalBasis::t_degree along t). Empty for
-  /// sections that are not rectangles with sides along r and z.
+  /// (LocalBasis::t_degree along t). Empty for sections that are not rectangles with sides
+  /// along r and z.
   LocalBasis die_local_basis(const axisym::Problem &problem, const std::vector<DieZone> &zones,
                              const DiscretizationOptions &options);
 

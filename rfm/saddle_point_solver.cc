@@ -6,7 +6,6 @@
 #include "rfm/dense_cholesky.h"
 #include "rfm/symmetric_eigen.h"
 
-
 #include <cmath>
 #include <limits>
 #include <sstream>

@@ -92,8 +92,8 @@ namespace rfm
   // before the block: the block's right-hand sides x q_parent less the known columns' share
   // (one matrix product) and then a small triangular solve with the block's part of h. The
   // same recurrence as one column at a time, with the sums in another order; the matrix
-  // products run at the GEMM rate where the one-column form ran at the GEMV rate (3-4x
-  // faster at p = 20).
+  // products run at the GEMM rate where the one-column form ran at the GEMV rate (the basis
+  // evaluation's share of the sharp flat punch's profile at p = 20 fell from 27 % to 6 %).
   template <typename T>
   BasisValues SectionPolynomialBasis::evaluate_in(const Eigen::Ref<const Eigen::VectorXd> &r,
                                                   const Eigen::Ref<const Eigen::VectorXd> &z,
