@@ -1,10 +1,33 @@
 #include "rfm/local_basis.h"
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
 namespace rfm
 {
+  namespace
+  {
+    // A box's frame: the degree along t, where x starts (0 one-sided, -1 two-sided), d xi / dx
+    // for the map of [x_lo, 1] onto [-1, 1], and the scaled coordinates (x, y) of a point.
+    struct BoxFrame
+    {
+      BoxFrame(const LocalPatch &patch, const int degree)
+        : p(patch)
+        , d_t(LocalBasis::t_degree(patch, degree))
+        , x_lo(patch.one_sided ? 0.0 : -1.0)
+        , sx(2.0 / (1.0 - x_lo))
+      {}
+      std::array<double, 2> coordinates(const double r, const double z) const
+      {
+        const double dr = r - p.r, dz = z - p.z;
+        return {(dr * p.t[0] + dz * p.t[1]) / p.half_size, (dr * p.n[0] + dz * p.n[1]) / p.half_size};
+      }
+      const LocalPatch &p;
+      int d_t;
+      double x_lo, sx;
+    };
+  } // namespace
   LocalBasis::LocalBasis(std::vector<LocalPatch> patches, const int degree)
     : patches_(std::move(patches)), degree_(degree)
   {
@@ -42,15 +65,14 @@ namespace rfm
     for (std::size_t l = 0; l < patches_.size(); first += n_functions(patches_[l], degree_), ++l)
       {
         const LocalPatch &p = patches_[l];
-        const int d_t = t_degree(p, degree_);
+        const BoxFrame f(p, degree_);
+        const int d_t = f.d_t;
         const Eigen::Index m_t = d_t + 1;
         px.resize(m_t), dpx.resize(m_t);
-        const double h = p.half_size, x_lo = p.one_sided ? 0.0 : -1.0;
-        const double sx = 2.0 / (1.0 - x_lo); // d xi / dx
+        const double h = p.half_size, x_lo = f.x_lo, sx = f.sx;
         for (Eigen::Index k = 0; k < n_points; ++k)
           {
-            const double dr = r[k] - p.r, dz = z[k] - p.z;
-            const double x = (dr * p.t[0] + dz * p.t[1]) / h, y = (dr * p.n[0] + dz * p.n[1]) / h;
+            const auto [x, y] = f.coordinates(r[k], z[k]);
             if (!(x > x_lo - 1e-14 && x < 1.0 && y > -1e-14 && y < 1.0))
               continue;
             // The cutoff c(x, y) = cx(x) cy(y) and its derivatives.
@@ -87,16 +109,14 @@ namespace rfm
     Eigen::Index first = 0;
     for (std::size_t l = 0; l < patches_.size(); first += n_functions(patches_[l], degree), ++l)
       {
-        const LocalPatch &p = patches_[l];
-        const int d_t = t_degree(p, degree);
+        const BoxFrame f(patches_[l], degree);
+        const int d_t = f.d_t;
         const Eigen::Index m_t = d_t + 1;
         px.resize(m_t), dpx.resize(m_t);
-        const double h = p.half_size, x_lo = p.one_sided ? 0.0 : -1.0;
-        const double sx = 2.0 / (1.0 - x_lo);
+        const double x_lo = f.x_lo, sx = f.sx;
         for (Eigen::Index k = 0; k < n_points; ++k)
           {
-            const double dr = r[k] - p.r, dz = z[k] - p.z;
-            const double x = (dr * p.t[0] + dz * p.t[1]) / h, y = (dr * p.n[0] + dz * p.n[1]) / h;
+            const auto [x, y] = f.coordinates(r[k], z[k]);
             if (!(x >= x_lo && x < 1.0 && y >= 0.0 && y < 1.0))
               continue;
             legendre_values(d_t, sx * (x - x_lo) - 1.0, px, dpx);
