@@ -82,4 +82,22 @@ namespace rfm
   OutlineContactResult solve_outline_zone(const axisym::Problem &problem,
                                           const DiscretizationOptions &discretization,
                                           double s_lo, double s_hi);
+
+  /// The contact pressure p(s) [Pa] of a die's zone as consistent reactions (Babuska and
+  /// Miller; DESIGN.md 4.4; the hollow cylinder's form: consistent_contact_pressure in
+  /// contact.h), at the distances `s` from the die's centre along its part (0 outside the
+  /// zone). With x the zone's coordinate in [0, 1] (one free end: |s| / c) or [-1, 1] (two:
+  /// from the zone's middle, h its half length), p = w(x) sum_j b_j X_j(x): w = sqrt(1 - x^2)
+  /// and X_j the Chebyshev polynomials of the second kind U_j for a smooth edge (the pressure
+  /// falls like a square root at a free end), w = 1 / sqrt(1 - x^2) and the first kind T_j for
+  /// a flat punch's sharp edge (p is infinite there: +infinity at |x| = 1). One free end takes
+  /// the even degrees 0, 2, .., 2 (n_moments - 1) (p is even about the axis or a symmetry
+  /// edge), two free ends every degree up to that. The b_j solve G b = m with the moments m_k
+  /// of OutlineModel::die_moments for test fields phi_k (the .cc file: die_force's for k = 0,
+  /// so the pressure carries P exactly, and bumps of the zone next to it beyond) and
+  /// G_kj = int_zone w X_j phi_k r ds. Precondition: model.ok() solved on `zone`,
+  /// n_moments >= 1.
+  std::vector<double> consistent_die_pressure(const OutlineModel &model, const axisym::Problem &problem,
+                                              const DieZone &zone, const std::vector<double> &s,
+                                              int n_moments);
 } // namespace rfm

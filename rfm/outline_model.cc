@@ -1047,6 +1047,64 @@ namespace rfm
     return {-2.0 * M_PI * (volume - traction_work), -2.0 * M_PI * trace};
   }
 
+  double OutlineModel::die_depth(const axisym::DieFrame &frame) const
+  {
+    const axisym::Point n = frame.normal, c = frame.center;
+    double depth = 0.0;
+    for (const axisym::OutlineEdge &e : structures_.body().outline.edges())
+      for (int k = 0; k <= 64; ++k)
+        {
+          const axisym::Point x = e.point_at(k / 64.0);
+          depth = std::max(depth, -((x.r - c.r) * n.r + (x.z - c.z) * n.z));
+        }
+    return depth;
+  }
+
+  Eigen::VectorXd OutlineModel::die_moments(const axisym::DieFrame &frame,
+                                            const DieTestFields &phi) const
+  {
+    const axisym::Point n = frame.normal, t = frame.tangent, c = frame.center;
+    auto coordinates = [&](const Eigen::VectorXd &r, const Eigen::VectorXd &z) {
+      Eigen::VectorXd s(r.size()), d(r.size());
+      for (Eigen::Index q = 0; q < r.size(); ++q)
+        {
+          s[q] = frame.coordinate({r[q], z[q]});
+          d[q] = -((r[q] - c.r) * n.r + (z[q] - c.z) * n.z);
+        }
+      return phi(s, d);
+    };
+    // V_k = phi_k n: grad phi_k = phi_s t - phi_d n.
+    const Eigen::VectorXd volume = integrate(
+      [&](const FieldValues &f, const Eigen::VectorXd &r, const Eigen::VectorXd &z) -> Eigen::MatrixXd {
+        const Eigen::MatrixXd values = coordinates(r, z);
+        const Eigen::Index m = values.cols() / 3;
+        Eigen::MatrixXd g(r.size(), m);
+        for (Eigen::Index q = 0; q < r.size(); ++q)
+          {
+            const auto fq = axisym::body_force(loads_, material_, r[q], z[q]);
+            const double f_n = fq[0] * n.r + fq[1] * n.z;
+            for (Eigen::Index k = 0; k < m; ++k)
+              {
+                const double v = values(q, k), v_s = values(q, m + k), v_d = values(q, 2 * m + k);
+                const double d_r = v_s * t.r - v_d * n.r, d_z = v_s * t.z - v_d * n.z;
+                g(q, k) = f.sigma(q, rr) * n.r * d_r + f.sigma(q, zz) * n.z * d_z +
+                          f.sigma(q, tt) * v * n.r / r[q] + f.sigma(q, rz) * (n.r * d_z + n.z * d_r) -
+                          v * f_n;
+              }
+          }
+        return g;
+      });
+    const Eigen::VectorXd work = traction_work([&](const Eigen::VectorXd &r, const Eigen::VectorXd &z) {
+      const Eigen::MatrixXd values = coordinates(r, z);
+      const Eigen::Index m = values.cols() / 3;
+      Eigen::MatrixXd v(r.size(), 2 * m);
+      for (Eigen::Index k = 0; k < m; ++k)
+        v.col(2 * k) = values.col(k) * n.r, v.col(2 * k + 1) = values.col(k) * n.z;
+      return v;
+    });
+    return work - volume;
+  }
+
   double estimate_memory_bytes(const axisym::Problem &problem, const DiscretizationOptions &options)
   {
     const axisym::Body &body = *problem.body;

@@ -122,6 +122,24 @@ namespace rfm
     };
     DieForce die_force(const std::string &part) const;
 
+    /// Moments of the die's contact pressure p on the part of `frame` (consistent reactions,
+    /// Babuska and Miller; DESIGN.md 4.4): for m scalar test functions phi_k(s, d) of the
+    /// distance s from the frame's centre along the part and d into the body from its line,
+    ///   m_k = int_zone p phi_k r ds = W_t(V_k) - int [s_h . e(V_k) - f . V_k] r dr dz
+    /// (per radian; twice for a mirrored body) with V_k = phi_k n, n the part's outward normal
+    /// (phi = 1 - d / die_depth gives P / 2 pi: die_force's domain integral). V_k must vanish
+    /// where the displacement along n is prescribed off the zone. The error of m_k is of the
+    /// order of the stress error times how well the displacement space approximates V_k,
+    /// far below that of the trace for smooth V_k. `phi(s, d)` returns n x 3 m: phi_k in
+    /// columns 0..m-1, d phi_k / ds in m..2 m-1, d phi_k / dd in 2 m..3 m-1.
+    /// Precondition: ok(), `frame` a die frame of the problem's part (straight).
+    using DieTestFields = std::function<Eigen::MatrixXd(const Eigen::VectorXd &, const Eigen::VectorXd &)>;
+    Eigen::VectorXd die_moments(const axisym::DieFrame &frame, const DieTestFields &phi) const;
+    /// D: the largest distance into the body from the line of `frame`'s part [m].
+    double die_depth(const axisym::DieFrame &frame) const;
+    /// The body is mirrored in z = 0 (its integrals count the image as well).
+    bool mirrored() const { return mirrored_; }
+
     /// Contact-edge enrichment (DESIGN.md 4.4, edge_modes.h) at every free end of a zone: the
     /// odd modes 1, 3, ... (rfm.edge_modes) times the monomials up to rfm.edge_mode_degree, in
     /// the frame of the end (t into the zone, n into the body), cut off at rho_0 =

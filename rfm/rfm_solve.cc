@@ -165,10 +165,12 @@ namespace
                            {"reissner", phi.reissner}}}}};
     if (has_up && has_down)
       c["zone"] = {zone.s_lo, zone.s_hi};
-    // The pressure trace -sigma_nn at 101 points of the zone (p is the trace too: the
-    // consistent reactions are not on the outline path yet).
+    // The pressure at 101 points of the zone: p the consistent reactions
+    // (rfm::consistent_die_pressure; null at a sharp edge, where it is infinite), p_trace the
+    // trace -sigma_nn.
     const int n = 101;
-    Eigen::VectorXd r(n), z(n), s(n);
+    Eigen::VectorXd r(n), z(n);
+    std::vector<double> s(n);
     for (int k = 0; k < n; ++k)
       {
         s[k] = zone.s_lo + (zone.s_hi - zone.s_lo) * k / (n - 1.0);
@@ -176,13 +178,18 @@ namespace
         r[k] = x.r, z[k] = x.z;
       }
     const rfm::FieldValues v = m.evaluate(r, z);
+    const std::vector<double> consistent =
+      rfm::consistent_die_pressure(m, problem, zone, s, rfm::default_pressure_moments);
     nlohmann::json pressure = nlohmann::json::array();
     for (int k = 0; k < n; ++k)
       {
-        const double p = -(v.sigma(k, rfm::rr) * f.normal.r * f.normal.r +
-                            2 * v.sigma(k, rfm::rz) * f.normal.r * f.normal.z +
-                            v.sigma(k, rfm::zz) * f.normal.z * f.normal.z);
-        pressure.push_back({{"s", s[k]}, {"r", r[k]}, {"z", z[k]}, {"p", p}, {"p_trace", p}});
+        const double trace = -(v.sigma(k, rfm::rr) * f.normal.r * f.normal.r +
+                                2 * v.sigma(k, rfm::rz) * f.normal.r * f.normal.z +
+                                v.sigma(k, rfm::zz) * f.normal.z * f.normal.z);
+        pressure.push_back({{"s", s[k]}, {"r", r[k]}, {"z", z[k]},
+                            {"p", std::isfinite(consistent[k]) ? nlohmann::json(consistent[k])
+                                                               : nlohmann::json(nullptr)},
+                            {"p_trace", trace}});
       }
     c["pressure"] = pressure;
     return c;

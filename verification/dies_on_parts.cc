@@ -16,6 +16,9 @@
 //      edges) and as the mirrored half (one free edge): both ends of the zone against the
 //      half's c, and c against plane-strain Hertz for the ring's line load.
 //      The RFM (outline path, the punch's face as the zone) beside the FEM: P and K against p.
+//   For Hertz and the rounded punch, the RFM at its defaults beside the FEM: at the FEM's
+//   zone (P or delta, and the consistent pressure against the FEM's p(s)), and in full mode
+//   its own zone search (c, P, delta).
 //   5. The paper's die written as an outline (the half section, not mirrored): the RFM's
 //      zone search on the outline path, the rectangle model's search on the hollow-cylinder
 //      form (its P halved), and the FEM on the outline file and on the hollow-cylinder form
@@ -88,6 +91,111 @@ namespace
       out.push_back({{"s", p.s}, {"p", p.p}, {"p_trace", p.p_trace}});
     return out;
   }
+
+  double seconds_since(const std::chrono::steady_clock::time_point t0)
+  {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+
+  /// The RFM's pressure against the FEM's at the FEM's points of the part: the consistent
+  /// reactions (rfm::consistent_die_pressure) and the trace, max |p - p_FEM| / max p_FEM.
+  std::pair<double, double> pressure_errors(const rfm::OutlineModel &m, const axisym::Problem &problem,
+                                            const rfm::DieZone &zone, const fem::ContactResult &fem)
+  {
+    const axisym::DieFrame f = axisym::die_frame(*problem.body, zone.part);
+    std::vector<double> s;
+    Eigen::VectorXd r(fem.pressure.size()), z(fem.pressure.size());
+    for (const fem::PressurePoint &q : fem.pressure)
+      {
+        r[static_cast<Eigen::Index>(s.size())] = q.r, z[static_cast<Eigen::Index>(s.size())] = q.z;
+        s.push_back(q.s);
+      }
+    const std::vector<double> p =
+      rfm::consistent_die_pressure(m, problem, zone, s, rfm::default_pressure_moments);
+    const rfm::FieldValues v = m.evaluate(r, z);
+    double consistent = 0, trace = 0;
+    for (std::size_t i = 0; i < s.size(); ++i)
+      {
+        const auto k = static_cast<Eigen::Index>(i);
+        const double p_trace = -(v.sigma(k, rfm::rr) * f.normal.r * f.normal.r +
+                                 2 * v.sigma(k, rfm::rz) * f.normal.r * f.normal.z +
+                                 v.sigma(k, rfm::zz) * f.normal.z * f.normal.z);
+        const bool in_zone = s[i] >= zone.s_lo && s[i] <= zone.s_hi;
+        consistent = std::max(consistent, std::abs(p[i] - fem.pressure[i].p));
+        trace = std::max(trace, std::abs((in_zone ? p_trace : 0.0) - fem.pressure[i].p));
+      }
+    return {consistent / peak_pressure(fem), trace / peak_pressure(fem)};
+  }
+
+  /// The RFM's pressure profile at 101 points of its zone (for the report's figure).
+  nlohmann::json rfm_profile(const rfm::OutlineModel &m, const axisym::Problem &problem,
+                             const rfm::DieZone &zone)
+  {
+    std::vector<double> s;
+    for (int k = 0; k <= 100; ++k)
+      s.push_back(zone.s_lo + (zone.s_hi - zone.s_lo) * k / 100.0);
+    const std::vector<double> p =
+      rfm::consistent_die_pressure(m, problem, zone, s, rfm::default_pressure_moments);
+    nlohmann::json out = nlohmann::json::array();
+    for (std::size_t i = 0; i < s.size(); ++i)
+      out.push_back({{"s", s[i]}, {"p", std::isfinite(p[i]) ? nlohmann::json(p[i]) : nlohmann::json(nullptr)}});
+    return out;
+  }
+
+  /// The RFM on a die of one free end at the defaults: at the FEM's zone (c_fem, by the
+  /// problem's indentation or force: P or delta against the FEM's, p(s) against the FEM's
+  /// p) and, in full mode, the zone search (c, P, delta against the FEM's).
+  nlohmann::json rfm_rows(const axisym::Problem &problem, const std::string &part,
+                          const fem::ContactResult &fem, const bool search, const std::string &what)
+  {
+    const axisym::DieFrame f = axisym::die_frame(*problem.body, part);
+    const bool up = f.s_max > 0;
+    const double c_fem = fem.half_width;
+    nlohmann::json out;
+    fmt::print("RFM p = {}: {:>10} {:>13} {:>10} {:>12} {:>10} {:>9} {:>9} {:>9} {:>8}\n",
+               problem.rfm.degree, "", "c [m]", "vs FEM", "P [N]", "vs FEM", "delta vs",
+               "p(s) err", "trace", "time [s]");
+    auto row = [&](const std::string &key, const rfm::OutlineContactResult &r, const double seconds) {
+      if (!r.success || !r.model)
+        throw verification::NumericalFailure(what + " RFM (" + key + "): " + r.message);
+      const double c = up ? r.zone.s_hi : -r.zone.s_lo;
+      const double force = r.model->die_force(part).domain;
+      const auto [p_err, trace_err] = pressure_errors(*r.model, problem, r.zone, fem);
+      const double indicator = r.model->functionals().indicator();
+      out[key] = {{"half_width", c},
+                  {"half_width_vs_fem", c / c_fem - 1},
+                  {"force", force},
+                  {"force_vs_fem", force / fem.force - 1},
+                  {"indentation", r.zone.indentation},
+                  {"indentation_vs_fem", r.zone.indentation / fem.indentation - 1},
+                  {"edge_intensity", r.model->edge_intensity(0)},
+                  {"pressure_error_relative", p_err},
+                  {"pressure_trace_error_relative", trace_err},
+                  {"indicator", indicator},
+                  {"solves", r.history.size()},
+                  {"seconds", seconds},
+                  {"pressure", rfm_profile(*r.model, problem, r.zone)}};
+      double peak = 0;
+      for (const nlohmann::json &q : out[key]["pressure"])
+        if (q["p"].is_number())
+          peak = std::max(peak, q["p"].get<double>());
+      out[key]["peak_pressure"] = peak;
+      fmt::print("           {:>10} {:>13.6e} {:>10.2e} {:>12.6e} {:>10.2e} {:>9.2e} {:>9.2e} {:>9.2e} {:>8.2f}\n",
+                 key, c, c / c_fem - 1, force, force / fem.force - 1,
+                 r.zone.indentation / fem.indentation - 1, p_err, trace_err, seconds);
+    };
+    auto t0 = std::chrono::steady_clock::now();
+    const rfm::OutlineContactResult at_fem =
+      rfm::solve_outline_zone(problem, problem.rfm, up ? 0.0 : -c_fem, up ? c_fem : 0.0);
+    row("at_fem_zone", at_fem, seconds_since(t0));
+    if (search)
+      {
+        t0 = std::chrono::steady_clock::now();
+        const rfm::OutlineContactResult found = rfm::solve_outline_contact(problem, problem.rfm);
+        row("search", found, seconds_since(t0));
+      }
+    return out;
+  }
 } // namespace
 
 nlohmann::json run(const verification::DriverContext &context)
@@ -131,6 +239,16 @@ nlohmann::json run(const verification::DriverContext &context)
       }
     c["fem"]["finest"] = c["fem"]["L" + std::to_string(levels.back())];
     c["fem"]["pressure"] = profile(*last.contact);
+    c["rfm"] = rfm_rows(problem, "top", *last.contact, full, "Hertz");
+    for (auto &[key, row] : c["rfm"].items())
+      {
+        row["contact_radius_vs_hertz"] = row["half_width"].get<double>() / a - 1;
+        row["peak_pressure_vs_hertz"] = row["peak_pressure"].get<double>() / p0 - 1;
+        fmt::print("RFM {}: a / a_Hertz - 1 = {:.2e}, p0 / p0_Hertz - 1 = {:.2e} (the consistent "
+                   "pressure's peak)\n",
+                   key, row["contact_radius_vs_hertz"].get<double>(),
+                   row["peak_pressure_vs_hertz"].get<double>());
+      }
     results["hertz"] = c;
   }
 
@@ -170,8 +288,10 @@ nlohmann::json run(const verification::DriverContext &context)
   };
   {
     const std::string file = "flat_rounded_punch_indentation.json";
-    auto [c, last] = punch("flat_rounded", axisym::read_problem_file(context.problem_path(file)),
-                           file, "Flat punch with rounded edges (b = 0.5 mm, rho = 50 mm), 2 um", {});
+    const axisym::Problem problem = axisym::read_problem_file(context.problem_path(file));
+    auto [c, last] = punch("flat_rounded", problem, file,
+                           "Flat punch with rounded edges (b = 0.5 mm, rho = 50 mm), 2 um", {});
+    c["rfm"] = rfm_rows(problem, "top", *last.contact, full, "rounded flat punch");
     results["flat_rounded"] = c;
   }
   {
@@ -221,7 +341,7 @@ nlohmann::json run(const verification::DriverContext &context)
     // The RFM: the punch's face as the zone, K at its edge (rfm/outline_contact.h).
     fmt::print("RFM: {:>3} {:>13} {:>10} {:>15} {:>10} {:>10} {:>8}\n", "p", "P [N]", "vs FEM",
                "K [Pa m^1/2]", "vs FEM", "indicator", "time [s]");
-    for (const int p : full ? std::vector<int>{8, 12, 16} : std::vector<int>{8, 12})
+    for (const int p : full ? std::vector<int>{8, 12, 16} : std::vector<int>{8})
       {
         rfm::DiscretizationOptions o = problem.rfm;
         o.degree = p;

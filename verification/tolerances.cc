@@ -25,6 +25,20 @@ namespace verification
       {
         const std::string quantity = entry.at("quantity").get<std::string>();
         const std::string why = entry.value("why", "");
+        // An entry for one mode only (the full mode's longer runs) is skipped in the others.
+        if (entry.contains("mode"))
+          {
+            const std::string mode = entry.at("mode").get<std::string>();
+            if (mode != "quick" && mode != "full")
+              throw axisym::InputError("tolerance entry " + quantity + ": mode '" + mode +
+                                       "' is neither quick nor full");
+            if (results.value("mode", "") != mode)
+              {
+                out << fmt::format("SKIP {}: {} mode only\n", quantity, mode);
+                ++report.n_skipped;
+                continue;
+              }
+          }
         const nlohmann::json::json_pointer ptr(quantity);
         if (!results.contains(ptr) || !results.at(ptr).is_number())
           throw axisym::InputError("tolerance entry " + quantity + ": no such number in the " +

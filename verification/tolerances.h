@@ -1,7 +1,8 @@
 // Tolerance gates of the verification suite. verification/tolerances.json holds, per
 // driver, a list of entries
 //   {"quantity": "/json/pointer/into/the/driver/results", "max" | "min": limit,
-//    "why": "where the limit comes from"}
+//    "why": "where the limit comes from", "mode": "full" (optional: checked in that mode
+//    only; the driver's results name their mode)}
 // and check_tolerances() compares the driver's results against every entry of its own
 // driver, printing one line per entry and a readable failure naming the quantity, the
 // measured value and the limit.
@@ -16,7 +17,7 @@ namespace verification
 {
   struct ToleranceReport
   {
-    int n_passed = 0, n_failed = 0;
+    int n_passed = 0, n_failed = 0, n_skipped = 0;
   };
 
   /// Checks every entry listed under `driver` in the tolerance file; writes a line per

@@ -1,5 +1,7 @@
 #include "verification/tolerances.h"
 
+#include "problem/input_error.h"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -38,6 +40,25 @@ namespace verification
     EXPECT_NE(msg.find("3.2"), std::string::npos) << msg;
     EXPECT_NE(msg.find("1.0"), std::string::npos) << msg;
     EXPECT_NE(msg.find("deliberately tightened"), std::string::npos) << msg;
+  }
+
+  // An entry for the full mode is checked there (and can fail) and skipped in quick mode,
+  // where its quantity is not computed; a mode that is neither is an error.
+  TEST(Tolerances, FullModeEntriesAreSkippedInQuickMode)
+  {
+    const std::string file = write_file("tol_mode.json", R"({"d": [
+      {"quantity": "/long/err", "max": 1e-3, "why": "full run only", "mode": "full"}]})");
+    std::ostringstream out;
+    ToleranceReport r = check_tolerances(file, "d", {{"mode", "quick"}}, out);
+    EXPECT_EQ(r.n_skipped, 1);
+    EXPECT_EQ(r.n_passed + r.n_failed, 0);
+    EXPECT_NE(out.str().find("SKIP /long/err"), std::string::npos) << out.str();
+    r = check_tolerances(file, "d", {{"mode", "full"}, {"long", {{"err", 2e-3}}}}, out);
+    EXPECT_EQ(r.n_failed, 1);
+    EXPECT_THROW(check_tolerances(file, "d", {{"mode", "full"}}, out), axisym::InputError);
+    const std::string bad = write_file("tol_bad_mode.json", R"({"d": [
+      {"quantity": "/long/err", "max": 1e-3, "mode": "fast"}]})");
+    EXPECT_THROW(check_tolerances(bad, "d", {{"mode", "full"}}, out), axisym::InputError);
   }
 
   TEST(Tolerances, MissingQuantityIsAnError)
