@@ -1020,6 +1020,39 @@ def pressure_profile(profile):
     return [np.array([t[i] for t in pts]) for i in range(3)]
 
 
+def rfm_die_rows(c):
+    """The RFM's rows of a die (dies_on_parts' rfm_rows): at the FEM's zone, and its search."""
+    rows = c.get("rfm", {})
+    if not rows:
+        return []
+    out = ["| RFM, p = 8 defaults | c [mm] | c vs FEM | P [N] | P vs FEM | delta [um] | delta vs FEM | "
+           "p(s) error | trace error | indicator | steps | time [s] |",
+           "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    names = {"at_fem_zone": "at the FEM's zone", "search": "zone search (K = 0)"}
+    for key in ("at_fem_zone", "search"):
+        if key not in rows:
+            continue
+        r = rows[key]
+        out.append(f"| {names[key]} | {r['half_width'] * 1e3:.6f} | {r['half_width_vs_fem']:+.2e} | "
+                   f"{r['force']:.3f} | {r['force_vs_fem']:+.2e} | {r['indentation'] * 1e6:.5f} | "
+                   f"{r['indentation_vs_fem']:+.2e} | {r['pressure_error_relative']:.3f} | "
+                   f"{r['pressure_trace_error_relative']:.2f} | {r['indicator']:.2e} | {r['solves']} | "
+                   f"{r['seconds']:.1f} |")
+    out.append("")
+    return out
+
+
+def plot_rfm_pressure(ax, c):
+    """The RFM's consistent pressure of its search (else at the FEM's zone) on a figure."""
+    rows = c.get("rfm", {})
+    key = "search" if "search" in rows else "at_fem_zone" if "at_fem_zone" in rows else None
+    if key is None:
+        return
+    pts = sorted((abs(q["s"]), q["p"]) for q in rows[key]["pressure"] if q["p"] is not None)
+    ax.plot([t[0] * 1e3 for t in pts], [t[1] / 1e6 for t in pts], "-", color="tab:red", lw=1.5,
+            label="RFM p = 8: consistent pressure" + (" (its zone)" if key == "search" else " (FEM's zone)"))
+
+
 def dies_section(dies, out_dir):
     """Dies on parts of outline sections (issue 23): the FEM against closed forms and
     independent models (`dies_on_parts`)."""
@@ -1028,10 +1061,14 @@ def dies_section(dies, out_dir):
           "reference: penalty active set on the part, force control by the linearity in the "
           "indentation, the mesh refined toward the zone and its free ends "
           "(`fem_reference/README.md`). The RFM's outline contact (`rfm/outline_contact.h`: the "
-          "edge modes in the frame of the zone's end, the zone's end where K vanishes) takes an "
-          "indentation and a zone with one free end so far: it has columns for the sharp flat "
-          "punch (7.3) and the paper's die written as an outline (7.5); Hertz (a force) and the "
-          "ring die (two free ends) are the FEM's alone.", ""]
+          "edge modes in the frame of the zone's end, the zone's end where K vanishes, a force by "
+          "the linearity in the indentation) runs at its defaults beside the FEM on Hertz (7.1), "
+          "the rounded flat punch (7.2), the sharp flat punch (7.3) and the paper's die written as "
+          "an outline (7.5). Its pressure p(s) is the consistent reactions "
+          "(`rfm::consistent_die_pressure`: weak equilibrium against test fields of the zone); the "
+          "error columns give max |p - p_FEM| over the FEM's points relative to the FEM's peak, for "
+          "p and for the trace -sigma_nn. The ring die's search (two free ends, 6 minutes at the "
+          "defaults) is not run here: its numbers are in the README.", ""]
     h = dies["hertz"]
     hz = h["hertz"]
     levels = sorted((k for k in h["fem"] if k.startswith("L")), key=lambda k: int(k[1:]))
@@ -1062,8 +1099,14 @@ def dies_section(dies, out_dir):
             label="Hertz")
     ax.plot(s * 1e3, p / 1e6, "o", ms=3, label=f"FEM L = {levels[-1][1:]}: penalty pressure")
     ax.plot(s * 1e3, pt / 1e6, ".", ms=2, alpha=0.5, label="FEM trace -sigma_nn")
+    plot_rfm_pressure(ax, h)
     ax.set_xlim(0, 1.3 * a * 1e3)
     decorate(ax, "distance from the centre s [mm]", "p [MPa]", "Hertz: contact pressure")
+    md += rfm_die_rows(h)
+    srch = h.get("rfm", {}).get("search")
+    if srch:
+        md += [f"The RFM's search against Hertz: a {srch['contact_radius_vs_hertz']:+.2e}, the consistent "
+               f"pressure's peak p0 {srch['peak_pressure_vs_hertz']:+.2e}.", ""]
     md += [f"![hertz]({save(fig, out_dir, 'die_hertz_pressure.png')})", ""]
 
     def punch(key, title, extra):
@@ -1087,8 +1130,10 @@ def dies_section(dies, out_dir):
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
     ax.plot(s * 1e3, p / 1e6, "o", ms=3, label=f"FEM L = {lv[-1][1:]}: penalty pressure")
     ax.plot(s * 1e3, pt / 1e6, ".", ms=2, alpha=0.5, label="FEM trace -sigma_nn")
+    plot_rfm_pressure(ax, dies["flat_rounded"])
     ax.set_xlim(0, 1.5 * dies["flat_rounded"]["fem"]["finest"]["half_width"] * 1e3)
     decorate(ax, "distance from the centre s [mm]", "p [MPa]", "Flat punch with rounded edges")
+    md += rfm_die_rows(dies["flat_rounded"])
     md += [f"![flat_rounded]({save(fig, out_dir, 'die_flat_rounded_pressure.png')})", ""]
 
     f = dies["flat"]
