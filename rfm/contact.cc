@@ -1,5 +1,7 @@
 #include "rfm/contact.h"
 
+#include "rfm/contact_methods.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -496,376 +498,46 @@ namespace rfm
     return it;
   }
 
-  namespace
+  bool contact_methods::ZoneTrials::solve(const double c, ContactIterate &it, const char *phase)
   {
-    struct Solver
-    {
-      const Problem &problem;
-      const DiscretizationOptions &discretization;
-      const ContactOptions &options;
-      ContactResult &result;
-
-      // Solves at c; returns false (and sets the message) on a numerical failure.
-      bool solve(const double c, ContactIterate &it, const char *phase)
+    auto model = solve_cylinder_zone(problem, discretization, c);
+    if (!model->ok())
       {
-        auto model = solve_cylinder_zone(problem, discretization, c);
-        if (!model->ok())
-          {
-            std::ostringstream msg;
-            msg << "solve at c = " << c << " m failed: " << model->summary().message;
-            result.message = msg.str();
-            return false;
-          }
-        it = check_contact(problem, *model, options);
-        it.phase = phase;
-        result.history.push_back(it);
-        result.model = std::move(model);
-        result.final = it;
-        return true;
+        std::ostringstream msg;
+        msg << "solve at c = " << c << " m failed: " << model->summary().message;
+        result.message = msg.str();
+        return false;
       }
-    };
-  } // namespace
+    it = check_contact(problem, *model, options);
+    it.phase = phase;
+    result.history.push_back(it);
+    result.model = std::move(model);
+    result.final = it;
+    return true;
+  }
 
   ContactResult solve_contact(const Problem &problem, const DiscretizationOptions &discretization,
                               const ContactOptions &options)
   {
     ContactResult result;
     result.method = problem.contact.method;
-    Solver s{problem, discretization, options, result};
-    const double a = problem.geometry.half_length();
-    ContactIterate it;
-
-    // 1. A given zone.
+    contact_methods::ZoneTrials s{problem, discretization, options, result};
     if (problem.contact.method == "fixed")
       {
-        result.success = s.solve(problem.contact.half_width.value_or(a), it, "fixed");
+        ContactIterate it;
+        result.success = s.solve(problem.contact.half_width.value_or(problem.geometry.half_length()),
+                                 it, "fixed");
         if (result.success)
           result.message = it.conditions_hold() ? "fixed zone; conditions 1.2 and 1.3 hold"
                                                 : "fixed zone; conditions 1.2/1.3 violated "
                                                   "(expected unless c is the true half-width)";
-        return result;
       }
-
-    // 2. The root of the edge intensity K(c).
-    if (problem.contact.method == "edge-intensity")
-      {
-        if (discretization.edge_modes < 1)
-          {
-            result.message = "contact.method edge-intensity needs the n = 1 edge mode "
-                             "(rfm.edge_modes >= 1)";
-            return result;
-          }
-        const double tol = options.root_tolerance * a;
-        int n_solves = 0;
-        auto solve_k = [&](const double c, const char *phase) {
-          ++n_solves;
-          if (!s.solve(c, it, phase))
-            return false;
-          if (!std::isfinite(it.edge_intensity))
-            {
-              result.message = "no edge intensity at c = " + std::to_string(c) + " m";
-              return false;
-            }
-          return true;
-        };
-        // 2a. Bracket: K < 0 at lo (too short), K > 0 at hi (too long). Secant steps,
-        //     each kept within a factor of the distance to the ends of (0, a).
-        double c0 = 0.5 * a;
-        if (!solve_k(c0, "bracket"))
-          return result;
-        double k0 = it.edge_intensity;
-        double c1 = k0 < 0 ? 0.6 * a : 0.4 * a;
-        if (!solve_k(c1, "bracket"))
-          return result;
-        double k1 = it.edge_intensity;
-        const double c_min = 0.01 * a, c_max = a * (1.0 - 0.01);
-        while ((k0 < 0) == (k1 < 0) && k1 != 0.0)
-          {
-            if (n_solves >= options.max_iterations)
-              {
-                result.message = "edge intensity: no sign change of K found in " +
-                                 std::to_string(n_solves) + " solves";
-                return result;
-              }
-            if (k1 < 0 && c1 >= c_max)
-              {
-                // K < 0 up to the end of the side: the zone reaches it (full contact) if
-                // the pressure is compressive there.
-                if (!s.solve(a, it, "final"))
-                  return result;
-                if (!it.tension)
-                  {
-                    result.success = true;
-                    result.message = "K(c) < 0 up to c = 0.99 a and no tension at c = a: full "
-                                     "contact";
-                    result.half_width_range = {a, a};
-                    return result;
-                  }
-                result.message = "edge intensity: the root of K(c) is not bracketed in (0, a] "
-                                 "(K < 0 up to 0.99 a, tension at c = a)";
-                return result;
-              }
-            if (k1 > 0 && c1 <= c_min)
-              {
-                result.message = "edge intensity: the root of K(c) is not bracketed in (0, a] "
-                                 "(K > 0 down to c = 0.01 a)";
-                return result;
-              }
-            double next = k1 != k0 ? c1 - k1 * (c1 - c0) / (k1 - k0) : c1;
-            if (k1 < 0)
-              next = std::clamp(next, c1 + 0.05 * (a - c1), c1 + 0.5 * (a - c1));
-            else
-              next = std::clamp(next, 0.5 * c1, c1 - 0.05 * c1);
-            next = std::clamp(next, c_min, c_max);
-            c0 = c1, k0 = k1, c1 = next;
-            if (!solve_k(c1, "bracket"))
-              return result;
-            k1 = it.edge_intensity;
-          }
-        double lo = k0 < 0 ? c0 : c1, k_lo = k0 < 0 ? k0 : k1;
-        double hi = k0 < 0 ? c1 : c0, k_hi = k0 < 0 ? k1 : k0;
-        double c = k1 == 0.0 ? c1 : 0.0;
-
-        // 2b. Illinois (regula falsi that halves the retained end's K when the same end
-        //     is kept twice): superlinear on the nearly linear K(c), never leaves the bracket.
-        int side = 0; // -1: the last step replaced lo, +1: it replaced hi
-        double c_prev = c1;
-        while (k1 != 0.0)
-          {
-            c = (lo * k_hi - hi * k_lo) / (k_hi - k_lo);
-            if (std::abs(c - c_prev) < tol || hi - lo < tol)
-              break;
-            if (n_solves >= options.max_iterations)
-              {
-                result.message = "edge intensity: the secant iteration did not converge in " +
-                                 std::to_string(n_solves) + " solves";
-                return result;
-              }
-            if (!solve_k(c, "secant"))
-              return result;
-            const double k = it.edge_intensity;
-            c_prev = c;
-            if (k == 0.0)
-              break;
-            if (k < 0)
-              {
-                lo = c, k_lo = k;
-                if (side == -1)
-                  k_hi *= 0.5;
-                side = -1;
-              }
-            else
-              {
-                hi = c, k_hi = k;
-                if (side == 1)
-                  k_lo *= 0.5;
-                side = 1;
-              }
-          }
-
-        // 2c. P(c) is stationary where K changes sign (DESIGN.md 4.4). The two are
-        //     independent domain integrals of the discrete field (measured at p = 8, nu =
-        //     0.3: the root of K +0.08 %, the stationary point of P +0.04 % from the FEM's
-        //     c); c is the stationary point, found by successive parabolic interpolation of P
-        //     over the solves so far (the three with the largest P), each vertex solved,
-        //     until the vertex is within h / 100 of the best solve; a vertex is kept within h
-        //     of those three points.
-        result.edge_intensity_root = c;
-        bool stationary = false;
-        const double h = options.stationary_step * a;
-        if (h > 0.0)
-          {
-            for (int round = 0; round < 6; ++round)
-              {
-                std::vector<const ContactIterate *> best;
-                for (const ContactIterate &done : result.history)
-                  if (std::none_of(best.begin(), best.end(), [&](const ContactIterate *b) {
-                        return std::abs(b->half_width - done.half_width) <= 1e-9 * a;
-                      }))
-                    best.push_back(&done);
-                if (best.size() < 3)
-                  break;
-                std::partial_sort(best.begin(), best.begin() + 3, best.end(),
-                                  [](const ContactIterate *x, const ContactIterate *y) {
-                                    return x->force > y->force;
-                                  });
-                const double x0 = best[0]->half_width, x1 = best[1]->half_width,
-                             x2 = best[2]->half_width;
-                const double f0 = best[0]->force, f1 = best[1]->force, f2 = best[2]->force;
-                // Vertex of the parabola through the three points (Newton's divided
-                // differences); it must open downwards.
-                const double d01 = (f1 - f0) / (x1 - x0), d12 = (f2 - f1) / (x2 - x1);
-                const double curvature = (d12 - d01) / (x2 - x0);
-                if (!(curvature < 0.0))
-                  break; // no maximum near the root: keep the root of K
-                double vertex = 0.5 * (x0 + x1) - 0.5 * d01 / curvature;
-                const double lo3 = std::min({x0, x1, x2}), hi3 = std::max({x0, x1, x2});
-                vertex = std::clamp(vertex, std::max(lo3 - h, c_min), std::min(hi3 + h, c_max));
-                if (std::abs(vertex - x0) < 1e-2 * h)
-                  {
-                    c = x0; // the best solve is the stationary point to the tolerance
-                    stationary = true;
-                    break;
-                  }
-                ContactIterate probe;
-                if (!s.solve(vertex, probe, "stationary"))
-                  return result;
-                c = vertex;
-                stationary = true;
-              }
-          }
-        // 2d. The answer: a final solve at c, with the check of 1.2 and 1.3 (the last solve
-        //     when it is at c).
-        if (std::abs(result.history.back().half_width - c) <= 1e-12 * a)
-          {
-            result.history.back().phase = result.final.phase = "final";
-            it = result.history.back();
-          }
-        else if (!s.solve(c, it, "final"))
-          return result;
-        result.half_width_range = {lo, hi};
-        result.success = true;
-        result.message = (stationary ? std::string("stationary point of P(c) at c = ") +
-                                         std::to_string(c / a) + " a, next to the root of the "
-                                         "edge intensity K(c) at " +
-                                         std::to_string(*result.edge_intensity_root / a) + " a ("
-                                     : std::string("root of the edge intensity K(c) at c = ") +
-                                         std::to_string(c / a) + " a (") +
-                         std::to_string(result.history.size()) +
-                         " solves); conditions 1.2 and 1.3 " +
-                         (it.conditions_hold() ? "hold there" : "are violated there beyond the tolerance");
-        return result;
-      }
-
-    // 3. The paper's successive iterations, safeguarded by the bracket [lo, hi]:
-    //    lo is a zone known to be too short (penetration), hi one known too long (tension).
-    if (problem.contact.method == "iterate")
-      {
-        double lo = 0.0, hi = a, c = a;
-        bool holds = false, last_too_long = false;
-        int same_side = -1;
-        int n_solves = 0;
-        for (; n_solves < options.max_iterations && !holds; ++n_solves)
-          {
-            if (!s.solve(c, it, "iteration"))
-              return result;
-            if (it.conditions_hold())
-              {
-                holds = true;
-                break;
-              }
-            // Penetration outside the zone means the zone is too short, whatever the
-            // pressure does: a too-long zone opens a gap beyond its edge. Tension together
-            // with penetration is the oscillation of a compressive edge singularity that
-            // the polynomial stresses cannot represent, not a sign of a too-long zone.
-            // With the edge modes, the sign of K tells a too-long zone (tensile edge) from a
-            // too-short one directly, and decides when both conditions fail (the violations
-            // of a nearly right zone are then both at the noise level).
-            const bool too_long = (it.tension && it.penetration && std::isfinite(it.edge_intensity))
-                                    ? it.edge_intensity > 0
-                                    : it.tension && !it.penetration;
-            double proposal;
-            if (too_long)
-              hi = std::min(hi, c), proposal = it.first_tension_z;
-            else
-              lo = std::max(lo, c), proposal = it.penetration_end_z;
-            if (hi - lo <= options.tolerance * a)
-              break; // bracketed without a c where both hold: accept the bracket below
-            // Keep the fixed-point step if it stays well inside the bracket and the zone
-            // has not erred on the same side three times running: near c the fixed point
-            // creeps (the penetrating interval beyond a zone slightly too short is short
-            // too; measured at p = 10: 30 steps from 0.50 a to 0.516 a), bisection does not.
-            same_side = (too_long == last_too_long) ? same_side + 1 : 0;
-            last_too_long = too_long;
-            const double margin = 0.01 * (hi - lo);
-            c = (proposal > lo + margin && proposal < hi - margin && same_side < 2)
-                  ? proposal
-                  : 0.5 * (lo + hi);
-          }
-        if (!holds && hi - lo > options.tolerance * a)
-          {
-            result.message = "contact iteration did not converge in " +
-                             std::to_string(options.max_iterations) + " solves";
-            return result;
-          }
-
-        // Refinement: at finite N the conditions hold on an interval of c, which shrinks to
-        // the true c as N grows. Bisect for both ends: the largest c without tension and
-        // the smallest c without penetration. The answer is the interval's midpoint; its
-        // half-length is the discretization uncertainty of c at this N.
-        double c_lo = holds ? c : lo, c_hi = holds ? c : hi;
-        if (holds)
-          {
-            double bad = hi, good = c; // upper end: good holds 1.2, bad is tensile
-            while (bad - good > options.tolerance * a && n_solves++ < options.max_iterations)
-              {
-                const double mid = 0.5 * (good + bad);
-                if (!s.solve(mid, it, "refinement"))
-                  return result;
-                (it.tension ? bad : good) = mid;
-              }
-            c_hi = good;
-            bad = lo, good = c; // lower end: good holds 1.3, bad penetrates
-            while (good - bad > options.tolerance * a && n_solves++ < options.max_iterations)
-              {
-                const double mid = 0.5 * (good + bad);
-                if (!s.solve(mid, it, "refinement"))
-                  return result;
-                (it.penetration ? bad : good) = mid;
-              }
-            c_lo = good;
-          }
-        if (!s.solve(0.5 * (c_lo + c_hi), it, "final"))
-          return result;
-        result.half_width_range = {c_lo, c_hi};
-        result.success = true;
-        result.message = holds ? "conditions 1.2 and 1.3 hold for c in [" +
-                                   std::to_string(c_lo / a) + ", " + std::to_string(c_hi / a) +
-                                   "] a at this N; c is its midpoint"
-                               : "zone bracketed to the tolerance without an iterate free of "
-                                 "violations (discretization noise at this N)";
-        return result;
-      }
-
-    // 4. Barber's principle: golden-section maximization of P(c) on [0.05 a, a].
-    const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-    double lo = 0.05 * a, hi = a;
-    double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-    ContactIterate i1, i2;
-    if (!s.solve(x1, i1, "search") || !s.solve(x2, i2, "search"))
-      return result;
-    int k = 2;
-    while (hi - lo > options.tolerance * a)
-      {
-        if (++k > options.max_iterations)
-          {
-            result.message = "max-force search did not reach the tolerance in " +
-                             std::to_string(options.max_iterations) + " solves";
-            return result;
-          }
-        if (i1.force > i2.force)
-          {
-            hi = x2, x2 = x1, i2 = i1;
-            x1 = hi - g * (hi - lo);
-            if (!s.solve(x1, i1, "search"))
-              return result;
-          }
-        else
-          {
-            lo = x1, x1 = x2, i1 = i2;
-            x2 = lo + g * (hi - lo);
-            if (!s.solve(x2, i2, "search"))
-              return result;
-          }
-      }
-    // Final solve at the maximizer, with the check of conditions 1.2 and 1.3.
-    if (!s.solve(0.5 * (lo + hi), it, "final"))
-      return result;
-    result.success = true;
-    result.message = it.conditions_hold()
-                       ? "maximum of P(c) found; conditions 1.2 and 1.3 hold there"
-                       : "maximum of P(c) found; conditions 1.2/1.3 violated there beyond the "
-                         "tolerance (P is flat at its maximum: see `iterate`)";
+    else if (problem.contact.method == "edge-intensity")
+      contact_methods::edge_intensity(s);
+    else if (problem.contact.method == "iterate")
+      contact_methods::iterate(s);
+    else
+      contact_methods::max_force(s);
     return result;
   }
 } // namespace rfm

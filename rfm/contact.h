@@ -8,7 +8,8 @@
 //   * condition 1.3 violated: penetration u_r > u_r* outside the zone (c too short).
 // Both are checked on a fine grid of points along the outer side.
 //
-// Four ways to fix c (problem file: contact.method):
+// Four ways to fix c (problem file: contact.method; one file per method behind
+// contact_methods.h: contact_edge_intensity.cc, contact_iterate.cc, contact_max_force.cc):
 //   edge-intensity (default): the zone where the edge intensity K(c) changes sign
 //              (DESIGN.md 4.4). The enriched bilateral solve at a trial c gives
 //              K = sqrt(2 pi) a_1 from the coefficient of the n = 1 edge mode: K < 0 when
