@@ -22,10 +22,10 @@
 #include "benchmarks/benchmark_problems.h"
 #include "benchmarks/dense_reference.h"
 #include "rfm/allocator.h"
-#include "rfm/contact.h"
+#include "rfm/contact/contact.h"
 #include "rfm/hardware.h"
 #include "rfm/outline_model.h"
-#include "rfm/section_quadrature.h"
+#include "rfm/quadrature/section_quadrature.h"
 
 #include <benchmark/benchmark.h>
 

@@ -70,7 +70,7 @@ namespace axisym
     int n_cells_z = 1;          ///< uniform cells in z before splitting at break points
     int n_graded_layers = 8;    ///< geometric layers toward each break point
     double grading_ratio = 0.35; ///< width ratio between successive graded layers
-    /// Contact-edge enrichment (rfm/edge_modes.h): the odd modes n = 1, 3, ..., 2 k - 1 for
+    /// Contact-edge enrichment (rfm/spaces/edge_modes.h): the odd modes n = 1, 3, ..., 2 k - 1 for
     /// k = edge_modes, added to both the stress and the displacement space at every
     /// contact edge; 0 switches it off.
     int edge_modes = 2;
@@ -82,7 +82,7 @@ namespace axisym
     /// Each edge mode is multiplied by the monomials of the scaled offsets from the edge up
     /// to this total degree ((d + 1)(d + 2)/2 columns per mode; 0: the modes alone).
     int edge_mode_degree = 2;
-    /// Local resolution near a die's zone (rfm/local_basis.h): nested boxes of half sizes
+    /// Local resolution near a die's zone (rfm/spaces/local_basis.h): nested boxes of half sizes
     /// local_first_box c, twice that, ... up to local_max_box times the section's extent
     /// along the die's part (c the zone's extent from its centre), each with the tensor
     /// Legendre polynomials of degree local_degree times a cutoff (2 local_degree + 1 along

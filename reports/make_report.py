@@ -258,7 +258,7 @@ def die_section(die, paper_tables, out_dir):
     md.append("### 2.2 The unknown zone: c and P per method, N and quadrature")
     md.append("")
     md.append("`edge-intensity` (the default): the sign change of the edge intensity K(c), from the axisymmetric "
-              "interaction integral with the n = -1 edge mode (rfm/contact.h), "
+              "interaction integral with the n = -1 edge mode (rfm/contact/contact.h), "
               "is bracketed by secant steps and closed by the Illinois method to 1e-3 a; c is then the stationary "
               "point of P(c) next to that root, by successive parabolic interpolation over the solves (DESIGN.md "
               "4.4: P is stationary where the true K vanishes); the interval column gives that root. "
@@ -501,7 +501,7 @@ def comparison_section(cmp, die, paper_tables, out_dir):
               f"{100*ag.get('edge_intensity_root_default_difference_relative', float('nan')):.2f} % (default degree) and "
               f"{100*ag.get('edge_intensity_root_difference_relative', float('nan')):.2f} % (largest p) from the FEM's c "
               "(K from the interaction integral, a domain integral like P; the root of the n = 1 coefficient itself, "
-              "into which the unresolved edge field leaks, lies further above, as measured in rfm/contact.h). "
+              "into which the unresolved edge field leaks, lies further above, as measured in rfm/contact/contact.h). "
               "The paper's iteration checks conditions 1.2 and 1.3 on the field with its edge term recovered from "
               "the interaction integral (on the raw traces it stopped at the root of the coefficient). "
               f"The paper's c = {c_paper} a is {100 * (c_paper / ag['fem_half_width_ratio'] - 1):.1f} % above the "
@@ -528,9 +528,9 @@ def comparison_section(cmp, die, paper_tables, out_dir):
         md.append("K from the axisymmetric interaction integral (a domain integral of Betti's theorem with the n = -1 "
                   "mode over the half disc of radius 0.9 min(c, a - c, R2 - R1), with the hoop terms), from the n = 1 "
                   "coefficient of the stress space, and from the plane-strain contour integral on the half circle "
-                  "rho = 0.05 rho_0, which leaves out the hoop terms (rfm/contact.h). The three agree to a few per cent "
+                  "rho = 0.05 rho_0, which leaves out the hoop terms (rfm/contact/contact.h). The three agree to a few per cent "
                   "where K is large; near the root the coefficient is biased (its root lies above the FEM's c; "
-                  "rfm/contact.h).")
+                  "rfm/contact/contact.h).")
         md.append("")
     if "time_to_half_width_accuracy" in d:
         md.append("Time to reach c within a tolerance of the finest FEM value (RFM: edge-intensity over p):")
@@ -557,7 +557,7 @@ def comparison_section(cmp, die, paper_tables, out_dir):
         fem_peak = max(pr["fem"]["pressure"]["p_pa"]) / 1e6
         rfm_peak = max(pr["iterate"]["pressure"]["p_pa"]) / 1e6
         if "pressure_consistent_max_difference_relative_to_fem_p0" in ag:
-            md.append(f"At the default degree the consistent-reaction pressure (Babuska-Miller moments, rfm/contact.h) is within "
+            md.append(f"At the default degree the consistent-reaction pressure (Babuska-Miller moments, rfm/contact/contact.h) is within "
                       f"{100*ag['pressure_consistent_max_difference_relative_to_fem_p0_inner']:.1f} % of p_FEM(0) for "
                       f"z <= 0.98 c_FEM and {100*ag['pressure_consistent_max_difference_relative_to_fem_p0']:.1f} % everywhere "
                       f"(the largest differences are at the zone edge, where a difference dc in c shows as "
@@ -803,7 +803,7 @@ def bodies_section(bor, out_dir):
               "against Lame's closed form")
     md.append("")
     md.append("RFM: outline structures, polynomials orthonormal on the section (Arnoldi on sample "
-              "points, rfm/section_basis.h; long-double recurrence from p = 18), curved-triangle "
+              "points, rfm/spaces/section_basis.h; long-double recurrence from p = 18), curved-triangle "
               "quadrature. Max stress error over a 41 x 41 polar grid, relative to max |sigma|; the "
               "functional against -U.")
     md.append("")
@@ -831,7 +831,7 @@ def bodies_section(bor, out_dir):
                key=lambda k: sph["rfm"][k]["max_error_relative"])
     md.append("The box's Legendre basis is nearly dependent on the quarter annulus; with it the error "
               "flattened at high p, because the orthonormalization had to drop the small directions "
-              "(the measurements are in rfm/section_basis.h and rfm/outline_model.h). The section-orthonormal "
+              "(the measurements are in rfm/spaces/section_basis.h and rfm/outline_model.h). The section-orthonormal "
               "basis keeps them all. Its recurrence amplifies its own rounding in double, so it runs in long "
               "double from p = 18. Issue 13 asks a max stress error below 1e-6 at "
               f"N <= 400: here {sph['rfm'][best]['max_error_relative']:.2e} at N = "
@@ -1060,7 +1060,7 @@ def dies_section(dies, out_dir):
           "A rigid die on any straight part (`boundary.PART.die`, DESIGN.md 7.1), solved by the FEM "
           "reference: penalty active set on the part, force control by the linearity in the "
           "indentation, the mesh refined toward the zone and its free ends "
-          "(`fem_reference/README.md`). The RFM's outline contact (`rfm/outline_contact.h`: the "
+          "(`fem_reference/README.md`). The RFM's outline contact (`rfm/contact/outline_contact.h`: the "
           "edge modes in the frame of the zone's end, the zone's end where K vanishes, a force by "
           "the linearity in the indentation) runs at its defaults beside the FEM on Hertz (7.1), "
           "the rounded flat punch (7.2), the sharp flat punch (7.3) and the paper's die written as "
@@ -1143,7 +1143,7 @@ def dies_section(dies, out_dir):
                     f"at the centre against P / (2 pi b^2) with the FEM's own P: "
                     f"{f['centre_pressure_over_sneddon']:.4f}. The edge pressure is singular: its intensity "
                     "K = sqrt(2 pi) a_1 (DESIGN.md 4.4; negative: compressive) from the FEM's field by the "
-                    "interaction integral in the edge's frame (`rfm/contact.h`), against Sneddon's "
+                    "interaction integral in the edge's frame (`rfm/contact/contact.h`), against Sneddon's "
                     "K = -sqrt(2 pi) P / (2 pi b sqrt(2 b)) with the FEM's P: "
                     + ", ".join(f"L = {k[1:]} {v['edge_intensity']:.5e} Pa m^1/2 (ratio {v['over_sneddon']:.4f})"
                                 for k, v in sorted(f["fem"]["edge_intensity"].items(), key=lambda kv: int(kv[0][1:])))

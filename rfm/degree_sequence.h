@@ -3,7 +3,7 @@
 // model, outline_model.h: solve_outline_to_tolerance).
 #pragma once
 
-#include "rfm/assembly.h"
+#include "rfm/assembly/assembly.h"
 
 #include <algorithm>
 #include <cstdio>

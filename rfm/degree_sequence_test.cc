@@ -1,6 +1,6 @@
 // The tolerance search of rfm_solve (degree_sequence.h) on scripted indicator sequences.
 #include "rfm/degree_sequence.h"
-#include "rfm/saddle_point_solver.h"
+#include "rfm/solve/saddle_point_solver.h"
 
 #include <gtest/gtest.h>
 

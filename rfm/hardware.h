@@ -5,7 +5,7 @@
 // on one thread in the solver. The parallelism is the solver's own, on n_threads()
 // threads of one persistent pool (run_on_threads): the assembly splits its block
 // products between them, and the large saddle-point solves run as a task graph of tiles
-// (rfm/bordered_cholesky.h), each task a single-threaded OpenBLAS call. Default:
+// (rfm/solve/bordered_cholesky.h), each task a single-threaded OpenBLAS call. Default:
 // OPENBLAS_NUM_THREADS, else OMP_NUM_THREADS, else all cores; set_n_threads overrides it
 // (rfm_benchmark --threads=N). Results are bitwise identical between runs with the same
 // thread count (each output entry is computed by one thread in a fixed order; the
@@ -57,7 +57,7 @@ namespace rfm
 
   /// Saddle-point systems with at least this many unknowns (stress + displacement) are
   /// factorized on n_threads() threads, smaller ones on one: measured two-thread over
-  /// one-thread solve times (rfm/bordered_cholesky.h) 1.25x at 510 unknowns (die p = 8),
+  /// one-thread solve times (rfm/solve/bordered_cholesky.h) 1.25x at 510 unknowns (die p = 8),
   /// 1.45x at 726 (Lame p = 10), 1.65x at 1014 (p = 12); none at 486 (Lame p = 8).
   inline constexpr long parallel_solve_unknowns = 500;
 

@@ -1,9 +1,9 @@
 #include "rfm/outline_model.h"
 
-#include "rfm/contact.h"
+#include "rfm/contact/contact.h"
 #include "rfm/hardware.h"
-#include "rfm/section_quadrature.h"
-#include "rfm/symmetric_eigen.h"
+#include "rfm/quadrature/section_quadrature.h"
+#include "rfm/solve/symmetric_eigen.h"
 
 #include <algorithm>
 #include <chrono>

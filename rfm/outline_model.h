@@ -42,16 +42,16 @@
 #pragma once
 
 #include "problem/problem.h"
-#include "rfm/assembly.h"
-#include "rfm/basis.h"
-#include "rfm/section_basis.h"
+#include "rfm/assembly/assembly.h"
 #include "rfm/degree_sequence.h"
-#include "rfm/edge_modes.h"
-#include "rfm/local_basis.h"
-#include "rfm/outline_structures.h"
-#include "rfm/quadrature.h"
-#include "rfm/saddle_point_solver.h"
-#include "rfm/solution.h"
+#include "rfm/fields/solution.h"
+#include "rfm/quadrature/quadrature.h"
+#include "rfm/solve/saddle_point_solver.h"
+#include "rfm/spaces/basis.h"
+#include "rfm/spaces/edge_modes.h"
+#include "rfm/spaces/local_basis.h"
+#include "rfm/spaces/section_basis.h"
+#include "rfm/structures/outline_structures.h"
 
 #include <array>
 #include <functional>

@@ -1,7 +1,7 @@
 #include "rfm/outline_model.h"
 
 #include "problem/test_problems.h"
-#include "rfm/contact.h"
+#include "rfm/contact/contact.h"
 
 #include <gtest/gtest.h>
 

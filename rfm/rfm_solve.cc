@@ -11,13 +11,13 @@
 //   build/bin/rfm_solve verification/problems/die_paper.json --vtu out/   # out/rfm_solution.vtu
 //
 // Exit status: 0 success, 2 bad input (nothing written), 3 numerical failure.
-#include "rfm/allocator.h"
-#include "rfm/contact.h"
-#include "rfm/outline_contact.h"
-#include "rfm/outline_model.h"
-#include "rfm/vtu_output.h"
 #include "problem/json_io.h"
 #include "problem/problem.h"
+#include "rfm/allocator.h"
+#include "rfm/contact/contact.h"
+#include "rfm/contact/outline_contact.h"
+#include "rfm/fields/vtu_output.h"
+#include "rfm/outline_model.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>

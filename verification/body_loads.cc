@@ -19,7 +19,7 @@
 #include "fem_reference/axisymmetric_fem.h"
 #include "problem/problem.h"
 #include "rfm/outline_model.h"
-#include "rfm/quadrature.h"
+#include "rfm/quadrature/quadrature.h"
 #include "verification/body_load_exact.h"
 #include "verification/driver.h"
 #include "verification/outline_errors.h"

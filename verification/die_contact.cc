@@ -16,9 +16,9 @@
 //
 // Sample run:
 //   build/bin/die_contact --mode quick --output-dir build/verification-output
-#include "rfm/contact.h"
-#include "problem/problem.h"
 #include "problem/json_io.h"
+#include "problem/problem.h"
+#include "rfm/contact/contact.h"
 #include "verification/driver.h"
 
 #include <fmt/core.h>

@@ -29,8 +29,8 @@
 //   build/bin/dies_on_parts --mode quick --output-dir build/verification-output
 #include "fem_reference/axisymmetric_fem.h"
 #include "problem/problem.h"
-#include "rfm/contact.h"
-#include "rfm/outline_contact.h"
+#include "rfm/contact/contact.h"
+#include "rfm/contact/outline_contact.h"
 #include "verification/driver.h"
 #include "verification/fem_samples.h"
 
@@ -290,7 +290,7 @@ nlohmann::json run(const verification::DriverContext &context)
     results["flat_rounded"] = c;
   }
   {
-    // The edge intensity by the interaction integral (rfm/contact.h) on the FEM's field, in
+    // The edge intensity by the interaction integral (rfm/contact/contact.h) on the FEM's field, in
     // the frame of the punch's edge (b, h): t = -e_r (into the zone), n = -e_z (into the
     // body); the flat face prescribes u.n = -delta everywhere. Against Sneddon's half-space
     // pressure near the edge, P / (2 pi b sqrt(2 b x)): K = -sqrt(2 pi) P / (2 pi b sqrt(2 b)).
@@ -333,7 +333,7 @@ nlohmann::json run(const verification::DriverContext &context)
     c["fem"]["edge_intensity"] = k_levels;
     c["fem"]["edge_intensity_finest"] = k_levels["L" + std::to_string(levels.back())];
     c["fem"]["edge_intensity_change_last_relative"] = std::abs(k_fem - k_prev) / std::abs(k_fem);
-    // The RFM: the punch's face as the zone, K at its edge (rfm/outline_contact.h).
+    // The RFM: the punch's face as the zone, K at its edge (rfm/contact/outline_contact.h).
     fmt::print("RFM: {:>3} {:>13} {:>10} {:>15} {:>10} {:>10} {:>8}\n", "p", "P [N]", "vs FEM",
                "K [Pa m^1/2]", "vs FEM", "indicator", "time [s]");
     for (const int p : full ? std::vector<int>{8, 12} : std::vector<int>{8})

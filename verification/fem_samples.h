@@ -1,10 +1,10 @@
 // The FEM reference's fields at given points, as an rfm::FieldEvaluator: for integrals the
-// RFM library evaluates on any field (the interaction integral of rfm/contact.h), with the
+// RFM library evaluates on any field (the interaction integral of rfm/contact/contact.h), with the
 // FEM solved once with the integral's points as its samples. Header only (verification).
 #pragma once
 
 #include "fem_reference/axisymmetric_fem.h"
-#include "rfm/contact.h"
+#include "rfm/contact/contact.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -16,11 +16,11 @@
 //
 // Sample run:
 //   build/bin/lame_cylinder --mode quick --output-dir build/verification
-#include "rfm/outline_model.h"
-#include "problem/problem.h"
 #include "problem/json_io.h"
-#include "verification/lame_errors.h"
+#include "problem/problem.h"
+#include "rfm/outline_model.h"
 #include "verification/driver.h"
+#include "verification/lame_errors.h"
 
 #include <fmt/core.h>
 

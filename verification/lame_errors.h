@@ -2,8 +2,8 @@
 // a problem file, and the relative stress errors of an RFM model against it.
 #pragma once
 
-#include "rfm/outline_model.h"
 #include "problem/problem.h"
+#include "rfm/outline_model.h"
 #include "verification/lame_exact.h"
 
 #include <utility>

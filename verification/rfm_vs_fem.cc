@@ -13,11 +13,11 @@
 // Sample run:
 //   build/bin/rfm_vs_fem --mode quick --output-dir build/verification-output
 #include "fem_reference/axisymmetric_fem.h"
-#include "rfm/contact.h"
 #include "problem/json_io.h"
-#include "verification/lame_errors.h"
+#include "rfm/contact/contact.h"
 #include "verification/driver.h"
 #include "verification/fem_samples.h"
+#include "verification/lame_errors.h"
 
 #include <fmt/core.h>
 

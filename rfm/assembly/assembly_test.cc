@@ -1,0 +1,172 @@
+#include "rfm/assembly/assembly.h"
+
+#include "rfm/hardware.h"
+#include "rfm/quadrature/section_quadrature.h"
+#include "rfm/structures/outline_structures.h"
+
+#include <Eigen/Eigenvalues>
+#include <gtest/gtest.h>
+
+namespace rfm
+{
+  namespace
+  {
+    // The inputs of add_polynomial_blocks for the paper's die at c = 0.12 m (the hollow
+    // cylinder's half section with its zone): the tensor Legendre basis and the outline
+    // structures at the tensor rule graded toward the zone's end.
+    struct Inputs
+    {
+      Quadrature2D q;
+      Eigen::VectorXd mu;
+      BasisValues b;
+      StressStructureValues s;
+      DisplacementStructureValues d;
+      Eigen::Index n = 0;
+    };
+    Inputs make_inputs(const int degree)
+    {
+      const axisym::Problem p = axisym::parse_problem(nlohmann::json::parse(R"({
+        "geometry": {"inner_radius": 0.1, "outer_radius": 0.2, "length": 0.4},
+        "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3},
+        "die": {"indentation": 1.0e-6}})"));
+      const OutlineStructures structures(*p.body, degree, {DieZone{"outer", 0.0, 0.12, 1e-6}});
+      Inputs in;
+      in.q = rectangle_gauss(structures.body().outline, degree + 4);
+      in.mu = 2.0 * in.q.weights.cwiseProduct(in.q.r); // mirrored: both halves
+      const TensorLegendreBasis basis(degree, 0.1, 0.2, 0.0, 0.2);
+      in.b = basis.evaluate(in.q.r, in.q.z);
+      const OutlineStressValues s = structures.stress(in.q.r, in.q.z);
+      in.s = {s.omega, s.s0};
+      const OutlineDisplacementValues d = structures.displacement(in.q.r, in.q.z);
+      in.d = {d.omega, d.omega_r, d.omega_z, d.u0, d.u0_r, d.u0_z};
+      in.n = basis.n_basis_functions();
+      return in;
+    }
+    ReissnerSystem assemble(const Inputs &in, const Eigen::Index chunk = 0, const bool full = true)
+    {
+      ReissnerSystem sys;
+      sys.r11.setZero(4 * in.n, 4 * in.n);
+      sys.r12.setZero(4 * in.n, 2 * in.n);
+      sys.p_s.setZero(4 * in.n);
+      sys.p_u.setZero(2 * in.n);
+      add_polynomial_blocks(in.mu, in.q.r, in.b, in.s, in.d, Material{}.compliance(), sys, chunk,
+                            full);
+      return sys;
+    }
+  } // namespace
+
+  TEST(Assembly, R11IsSymmetricNegativeDefinite)
+  {
+    const ReissnerSystem sys = assemble(make_inputs(3));
+    EXPECT_LT((sys.r11 - sys.r11.transpose()).cwiseAbs().maxCoeff(),
+              1e-14 * sys.r11.cwiseAbs().maxCoeff());
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(sys.r11);
+    EXPECT_LT(es.eigenvalues().maxCoeff(), 0.0);
+  }
+
+  // Chunks sum the same integrals in another order: rounding only. Threads own whole
+  // blocks, so the thread count changes nothing, bit for bit.
+  TEST(Assembly, ChunksAndThreadCountsChangeRoundingOnly)
+  {
+    const Inputs in = make_inputs(4);
+    const Eigen::Index n_q = in.q.n_points();
+    ASSERT_GT(n_q, 2 * min_chunk_points);
+    const ReissnerSystem one = assemble(in, n_q);
+    const ReissnerSystem many = assemble(in, min_chunk_points);
+    EXPECT_LT((one.r11 - many.r11).cwiseAbs().maxCoeff(), 1e-14 * one.r11.cwiseAbs().maxCoeff());
+    EXPECT_LT((one.r12 - many.r12).cwiseAbs().maxCoeff(), 1e-14 * one.r12.cwiseAbs().maxCoeff());
+    EXPECT_LT((one.p_s - many.p_s).cwiseAbs().maxCoeff(), 1e-14 * one.p_s.cwiseAbs().maxCoeff());
+
+    // Threads split every block by columns (the GEMMs of column ranges round differently
+    // from the whole block's): other thread counts agree to rounding, the same thread
+    // count gives the same bits.
+    const int threads = n_threads();
+    set_n_threads(1);
+    const ReissnerSystem serial = assemble(in, min_chunk_points);
+    set_n_threads(3);
+    const ReissnerSystem parallel = assemble(in, min_chunk_points);
+    const ReissnerSystem again = assemble(in, min_chunk_points);
+    set_n_threads(threads);
+    EXPECT_LT((serial.r11 - parallel.r11).cwiseAbs().maxCoeff(), 1e-14 * serial.r11.cwiseAbs().maxCoeff());
+    EXPECT_LT((serial.r12 - parallel.r12).cwiseAbs().maxCoeff(), 1e-14 * serial.r12.cwiseAbs().maxCoeff());
+    EXPECT_TRUE(serial.p_s == parallel.p_s);
+    EXPECT_TRUE(serial.p_u == parallel.p_u);
+    EXPECT_TRUE(parallel.r11 == again.r11);
+    EXPECT_TRUE(parallel.r12 == again.r12);
+    const Eigen::Index n_poly = 4 * in.n; // polynomial blocks: mirrored
+    const Eigen::MatrixXd poly = parallel.r11.topLeftCorner(n_poly, n_poly);
+    EXPECT_TRUE(poly == poly.transpose());
+  }
+
+  TEST(Assembly, ChunkFillsHalfOfL2)
+  {
+    // 4 N doubles per point in half of L2, a multiple of 8, clamped.
+    EXPECT_EQ(assembly_chunk_points(121, 1 << 20), 128); // 524288 / 3872 = 135
+    EXPECT_EQ(assembly_chunk_points(441, 1 << 20), min_chunk_points);
+    EXPECT_EQ(assembly_chunk_points(1, 1L << 30), max_chunk_points);
+  }
+
+  // One entry of each R12 block and of p_u by a plain loop over quadrature points with
+  // the strain formulas written out: an independent check of the GEMM formulation.
+  TEST(Assembly, BlocksMatchScalarLoop)
+  {
+    const Inputs in = make_inputs(2);
+    const ReissnerSystem sys = assemble(in);
+    const Eigen::Index n = in.n;
+    const auto &q = in.q;
+    const auto &b = in.b;
+    const auto &s = in.s;
+    const auto &d = in.d;
+    const Eigen::Matrix4d cm = Material{}.compliance();
+    const int j = 4, l = 7; // a stress and a displacement coordinate function
+    double rr_ur = 0, tt_ur = 0, rz_ur = 0, zz_uz = 0, rz_uz = 0, m_rr_tt = 0, m_rz_rz = 0;
+    for (Eigen::Index k = 0; k < q.n_points(); ++k)
+      {
+        const double mu = in.mu[k], r = q.r[k];
+        const double phi = b.value(k, l);
+        const double ur = d.omega(k, 0) * phi;
+        const double ur_r = d.omega_r(k, 0) * phi + d.omega(k, 0) * b.d_r(k, l);
+        const double ur_z = d.omega_z(k, 0) * phi + d.omega(k, 0) * b.d_z(k, l);
+        const double uz_r = d.omega_r(k, 1) * phi + d.omega(k, 1) * b.d_r(k, l);
+        const double uz_z = d.omega_z(k, 1) * phi + d.omega(k, 1) * b.d_z(k, l);
+        rr_ur += mu * s.omega(k, rr) * b.value(k, j) * ur_r;
+        tt_ur += mu * b.value(k, j) * ur / r;
+        rz_ur += mu * s.omega(k, rz) * b.value(k, j) * ur_z;
+        zz_uz += mu * s.omega(k, zz) * b.value(k, j) * uz_z;
+        rz_uz += mu * s.omega(k, rz) * b.value(k, j) * uz_r;
+        m_rr_tt -= mu * s.omega(k, rr) * b.value(k, j) * cm(rr, tt) * b.value(k, l);
+        m_rz_rz -= mu * s.omega(k, rz) * s.omega(k, rz) * b.value(k, j) * cm(rz, rz) * b.value(k, l);
+      }
+    // Relative to the largest entry of the matrix: single entries may cancel to ~0.
+    const double s11 = sys.r11.cwiseAbs().maxCoeff(), s12 = sys.r12.cwiseAbs().maxCoeff();
+    auto near = [&](double x, double y) {
+      EXPECT_NEAR(x, y, 1e-13 * s12);
+    };
+    auto near11 = [&](double x, double y) { EXPECT_NEAR(x, y, 1e-13 * s11); };
+    near(sys.r12(rr * n + j, l), rr_ur);
+    near(sys.r12(tt * n + j, l), tt_ur);
+    near(sys.r12(rz * n + j, l), rz_ur);
+    near(sys.r12(zz * n + j, n + l), zz_uz);
+    near(sys.r12(rz * n + j, n + l), rz_uz);
+    EXPECT_EQ(sys.r12(zz * n + j, l), 0.0); // u_r does no work on sigma_zz
+    near11(sys.r11(rr * n + j, tt * n + l), m_rr_tt);
+    near11(sys.r11(rz * n + j, rz * n + l), m_rz_rz);
+    EXPECT_GT(std::abs(m_rr_tt), 1e-6 * s11); // the compared entries are not trivially 0
+    EXPECT_EQ(sys.r11(rr * n + j, rz * n + l), 0.0);
+  }
+
+  // full_r11 = false writes the same lower triangle (bitwise) and leaves the strict upper
+  // alone; R12 and the loads are the same.
+  TEST(Assembly, LowerTriangleOnlyMatchesTheFullAssembly)
+  {
+    const Inputs in = make_inputs(6);
+    const ReissnerSystem full = assemble(in);
+    const ReissnerSystem lower = assemble(in, 0, false);
+    const Eigen::MatrixXd a = full.r11.triangularView<Eigen::Lower>();
+    const Eigen::MatrixXd b = lower.r11.triangularView<Eigen::Lower>();
+    EXPECT_TRUE(a == b);
+    EXPECT_TRUE(full.r12 == lower.r12);
+    EXPECT_TRUE(full.p_s == lower.p_s);
+    EXPECT_TRUE(full.p_u == lower.p_u);
+  }
+} // namespace rfm

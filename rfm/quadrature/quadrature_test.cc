@@ -1,0 +1,153 @@
+#include "rfm/quadrature/quadrature.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace rfm
+{
+  namespace
+  {
+    double integrate_monomial(const GaussRule1D &g, int k)
+    {
+      double s = 0;
+      for (Eigen::Index i = 0; i < g.nodes.size(); ++i)
+        s += g.weights[i] * std::pow(g.nodes[i], k);
+      return s;
+    }
+  } // namespace
+
+  TEST(GaussLegendre, ExactForDegree2nMinus1)
+  {
+    for (int n = 1; n <= 30; ++n)
+      {
+        const GaussRule1D g = gauss_legendre(n);
+        for (int k = 0; k <= 2 * n - 1; ++k)
+          {
+            const double exact = (k % 2 == 1) ? 0.0 : 2.0 / (k + 1);
+            EXPECT_NEAR(integrate_monomial(g, k), exact, 1e-14 * (1 + k))
+              << "n = " << n << ", x^" << k;
+          }
+      }
+  }
+
+  TEST(GaussLegendre, NotExactForDegree2n)
+  {
+    // The rule must fail at degree 2n: otherwise the test above could not fail either.
+    for (int n = 1; n <= 10; ++n)
+      EXPECT_GT(std::abs(integrate_monomial(gauss_legendre(n), 2 * n) - 2.0 / (2 * n + 1)),
+                1e-6);
+  }
+
+  TEST(GaussLegendre, NodesSortedInsideInterval)
+  {
+    const GaussRule1D g = gauss_legendre(17);
+    for (Eigen::Index i = 0; i + 1 < g.nodes.size(); ++i)
+      EXPECT_LT(g.nodes[i], g.nodes[i + 1]);
+    EXPECT_GT(g.nodes[0], -1.0);
+    EXPECT_LT(g.nodes[16], 1.0);
+    EXPECT_THROW(gauss_legendre(0), std::invalid_argument);
+  }
+
+  TEST(GradedPartition, SplitsAndGradesTowardBreakPoint)
+  {
+    const auto cells = graded_partition(0.0, 1.0, {0.25}, 3, 0.5);
+    // 0 | graded toward 0.25 from the left | 0.25 | graded away on the right | 1
+    EXPECT_DOUBLE_EQ(cells.front(), 0.0);
+    EXPECT_DOUBLE_EQ(cells.back(), 1.0);
+    bool has_break = false;
+    for (std::size_t i = 0; i + 1 < cells.size(); ++i)
+      {
+        EXPECT_LT(cells[i], cells[i + 1]);
+        has_break |= std::abs(cells[i] - 0.25) < 1e-15;
+      }
+    EXPECT_TRUE(has_break);
+    EXPECT_EQ(cells.size(), 2u + 1u + 3u + 3u);
+    // Smallest cells touch the break point, width 0.25 * 0.5^3 on the left.
+    const auto it = std::find_if(cells.begin(), cells.end(),
+                                 [](double x) { return std::abs(x - 0.25) < 1e-15; });
+    EXPECT_NEAR(*it - *(it - 1), 0.25 * 0.125, 1e-15);
+    EXPECT_NEAR(*(it + 1) - *it, 0.75 * 0.125, 1e-15);
+  }
+
+  TEST(TensorGauss, IntegratesPolynomialOnGradedCells)
+  {
+    const auto rc = graded_partition(0.1, 0.2, {0.13}, 4, 0.3);
+    const auto zc = graded_partition(0.0, 0.2, {0.05}, 4, 0.3);
+    const Quadrature2D q = tensor_gauss(rc, zc, 4); // exact to degree 7 per variable
+    double s = 0;
+    for (Eigen::Index k = 0; k < q.n_points(); ++k)
+      s += q.weights[k] * std::pow(q.r[k], 7) * std::pow(q.z[k], 6);
+    const double exact = (std::pow(0.2, 8) - std::pow(0.1, 8)) / 8 * std::pow(0.2, 7) / 7;
+    EXPECT_NEAR(s, exact, 1e-13 * exact);
+  }
+
+  // The t^2 map toward a singular end integrates x^(k/2) exactly for k >= -1.
+  TEST(GaussOnCells, SqrtMapIntegratesHalfPowersExactly)
+  {
+    const std::vector<double> cells{0.0, 0.5, 1.0};
+    const GaussRule1D g = gauss_on_cells(cells, 6, {0.5});
+    for (const double power : {-0.5, 0.5, 1.5, 2.5})
+      {
+        double s = 0.0;
+        for (Eigen::Index k = 0; k < g.nodes.size(); ++k)
+          s += g.weights[k] * std::pow(std::abs(g.nodes[k] - 0.5), power);
+        const double exact = 2.0 * std::pow(0.5, power + 1) / (power + 1);
+        EXPECT_NEAR(s, exact, 1e-13 * exact) << "power " << power;
+      }
+    // Without singular points it is the plain rule.
+    const GaussRule1D plain = gauss_on_cells(cells, 6);
+    EXPECT_NEAR(plain.weights.sum(), 1.0, 1e-15);
+  }
+
+  // Half-disc rule: area and moments of the half disc r <= r_c (a polynomial of degree
+  // d in r, z is a polynomial of degree 2 d in s times trigonometric terms in theta).
+  TEST(HalfDiscGauss, AreaAndMoments)
+  {
+    const double rc = 0.2, zc = 0.1, rho0 = 0.05;
+    const Quadrature2D q = half_disc_gauss(rc, zc, rho0, 12, 16);
+    EXPECT_NEAR(q.weights.sum(), 0.5 * M_PI * rho0 * rho0, 1e-15);
+    EXPECT_LE(q.r.maxCoeff(), rc);
+    // int (rc - r) dA = int rho sin(theta) rho drho dtheta = 2 rho0^3 / 3
+    EXPECT_NEAR(q.weights.dot((rc - q.r.array()).matrix()), 2.0 * std::pow(rho0, 3) / 3.0, 1e-17);
+    // int (z - zc)^2 dA = int rho^2 cos^2 rho drho dtheta = rho0^4 pi / 8
+    EXPECT_NEAR(q.weights.dot((q.z.array() - zc).square().matrix()), std::pow(rho0, 4) * M_PI / 8.0,
+                1e-13 * std::pow(rho0, 4));
+    // int rho^-1 dA = pi rho0 (the 1/rho singularity of two n = 1 stresses)
+    double s = 0.0;
+    for (Eigen::Index k = 0; k < q.n_points(); ++k)
+      s += q.weights[k] / std::hypot(q.r[k] - rc, q.z[k] - zc);
+    EXPECT_NEAR(s, M_PI * rho0, 1e-14);
+  }
+
+  // Clipped at z = zc + d (an edge near the end): area, the integral of 1/rho and the
+  // moment in z against closed forms; every point inside. The clipped panel's ray length
+  // d / cos(phi) has its pole 13 degrees beyond the panel (d / rho0 = 0.22): Gauss converges
+  // exponentially but more slowly there (3e-11 with 16 points, measured; 32 used here).
+  TEST(HalfDiscGauss, ClippedAtTheEnd)
+  {
+    const double rc = 0.2, zc = 0.18, rho0 = 0.09, d = 0.02;
+    const Quadrature2D q = half_disc_gauss(rc, zc, rho0, 12, 32, zc + d);
+    EXPECT_LE(q.r.maxCoeff(), rc);
+    EXPECT_LE(q.z.maxCoeff(), zc + d);
+    EXPECT_GT(q.weights.minCoeff(), 0.0);
+    // The half disc minus half of the circular segment beyond z = zc + d.
+    const double root = std::sqrt(rho0 * rho0 - d * d);
+    const double segment = rho0 * rho0 * std::acos(d / rho0) - d * root;
+    const double area = 0.5 * M_PI * rho0 * rho0 - 0.5 * segment;
+    EXPECT_NEAR(q.weights.sum(), area, 1e-14 * area);
+    // int rho^-1 dA = int L(theta) dtheta = rho0 theta* + d ln((rho0 + root) / d).
+    const double theta_star = M_PI - std::acos(d / rho0);
+    const double inv_rho = rho0 * theta_star + d * std::log((rho0 + root) / d);
+    double s = 0.0;
+    for (Eigen::Index k = 0; k < q.n_points(); ++k)
+      s += q.weights[k] / std::hypot(q.r[k] - rc, q.z[k] - zc);
+    EXPECT_NEAR(s, inv_rho, 1e-13 * inv_rho);
+    // int (z - zc) dA: the half disc gives -2 rho0^3 / 3 on z < zc and +2 rho0^3 / 3 on
+    // z > zc; the clipped part of the latter is half of the segment's moment about z = zc,
+    // int_d^rho0 t 2 sqrt(rho0^2 - t^2) dt = (2/3) root^3.
+    const double moment = -std::pow(root, 3) / 3.0;
+    EXPECT_NEAR(q.weights.dot((q.z.array() - zc).matrix()), moment,
+                1e-13 * std::pow(rho0, 3));
+  }
+} // namespace rfm

@@ -1,0 +1,108 @@
+// Coordinate functions orthonormal on the meridian section: the polynomials of degree
+// <= p_r in r and <= p_z in z (the span of the tensor Legendre basis, basis.h), built by
+// Arnoldi's process on sample points of the section (the "Vandermonde with Arnoldi" idea
+// of Brubeck, Nakatsukasa and Trefethen, SIAM Review 63, 2021, in two variables).
+//
+// Why. On a section that fills only part of its bounding box (the thick sphere's quarter
+// annulus: 59 %) the tensor Legendre polynomials of the box are exponentially close to
+// dependent on the section: the condition number of their r-weighted values there is
+// 1.1e9 at p = 12, 1.3e12 at p = 16 and 1.5e15 at p = 20 (measured). Every combination a
+// solution needs from the small directions then has Legendre coefficients of that size, and
+// the orthonormalization of the system (outline_model.h) has to drop them: the thick
+// sphere's max stress error stayed between 2e-5 and 8e-5 of max |sigma| from p = 14 on. No change of basis
+// computed from Legendre values can fix that (its matrix has the same condition number).
+// The functions here are never expanded in another basis: each is evaluated by the
+// recurrence that built it, which multiplies an orthonormal function by a bounded one.
+//
+//   q_0 = 1 / sqrt(sum_k w_k),
+//   h_kk q_k = x_k q_{parent(k)} - sum_{i < k} h_ik q_i,
+//
+// for the index k = j (p_r + 1) + i: x_k = eta (the box coordinate of z, in [-1, 1]) and
+// parent(k) = k - (p_r + 1), the function (i, j - 1), when j > 0; x_k = xi and
+// parent(k) = k - 1 on the first row j = 0. The parent's span is the monomials r^a z^b
+// with b < j - 1, or b = j - 1 and a <= i; times z that is b < j, or b = j and a <= i:
+// exactly the span of the indices up to k. (Multiplying (i - 1, j) by r instead would
+// leave the space: r times its r^p z^(j-1) part.) The h are the Gram-Schmidt coefficients
+// (two passes) at the sample points, stored; the derivatives follow by differentiating
+// the recurrence. So q_0..q_k span the same polynomials as the tensor Legendre functions
+// 0..k in the same order, and the q are orthonormal in sum_k w_k f g over the samples.
+//
+// Precision. Where the section fills its box only in part, the recurrence amplifies its
+// own rounding errors (the orthonormal functions of the tensor space grow fast outside the
+// section, and so do the errors of a forward recurrence): the evaluated functions carry
+// non-polynomial noise, with values and derivatives that no longer match. Measured on the
+// thick sphere (r-weighted rms of the noise, relative): 3.6e-10 at p = 12, 2.5e-7 at 16,
+// 7.4e-6 at 18, 2.0e-4 at 20; at p = 20 it made the RFM's stress error 1.1e-3 instead of
+// 4e-7 and the solution depend on the sample points. The constructor therefore evaluates
+// the recurrence in double at its own samples and measures max |G - I| (G the Gram matrix
+// there, I up to rounding: the Arnoldi vectors are orthonormal); above
+// extended_precision_threshold, evaluate() runs the recurrence in long double (64-bit
+// significand, 2^11 times less noise; the sphere at p = 20 took 50 s instead of 21 s on one
+// core). That covers p <= 20 on the thick sphere (p = 18: stress error 2.3e-5 -> 1.1e-6;
+// p = 20: 1.1e-3 -> 4.2e-7); at p = 22 the long-double noise is back near 1e-5 (stress
+// error 1.1e-5), and a double-double recurrence would be the next step.
+//
+// Evaluation costs about 3 n N^2 flops for n points (values and both derivatives), in
+// chunks of points that stay in cache.
+#pragma once
+
+#include "rfm/spaces/basis.h"
+
+#include <Eigen/Core>
+
+namespace rfm
+{
+  class SectionPolynomialBasis
+  {
+  public:
+    /// Orthonormality error of the double recurrence at the samples above which evaluate()
+    /// uses long double (see the header): 1e-6 relative noise in the functions is far
+    /// below the accuracy rfm.tolerance asks by default (1e-8 in the indicator, about 1e-4
+    /// in stress); the thick sphere at p = 16 (2.3e-7) gives the same stresses either way.
+    static constexpr double extended_precision_threshold = 1e-6;
+
+    /// Orthonormal in sum_k w_k f(x_k) g(x_k) over the sample points (r, z, w), which must
+    /// determine the polynomials (many more points than functions, spread over the
+    /// section; w > 0 except where r = 0). [r_min, r_max] x [z_min, z_max]: the box whose
+    /// coordinates xi, eta enter the recurrence (the samples' own box is a good choice).
+    /// Throws std::runtime_error if a function is numerically dependent on the ones
+    /// before it at the samples (h_kk below 1e-12 of the norm of x_k q_parent).
+    SectionPolynomialBasis(int degree_r, int degree_z, double r_min, double r_max, double z_min,
+                           double z_max, const Eigen::Ref<const Eigen::VectorXd> &r,
+                           const Eigen::Ref<const Eigen::VectorXd> &z,
+                           const Eigen::Ref<const Eigen::VectorXd> &w);
+
+    int degree_r() const { return degree_r_; }
+    int degree_z() const { return degree_z_; }
+    Eigen::Index n_basis_functions() const
+    {
+      return static_cast<Eigen::Index>(degree_r_ + 1) * (degree_z_ + 1);
+    }
+
+    /// Values and first derivatives at n points (n x N each, as TensorLegendreBasis);
+    /// values only (d_r, d_z empty, a third of the work) with derivatives = false.
+    /// `precision`: automatic (long double when extended_precision()), or forced.
+    enum class Precision { automatic, double_precision, long_double };
+    BasisValues evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
+                         const Eigen::Ref<const Eigen::VectorXd> &z, bool derivatives = true,
+                         Precision precision = Precision::automatic) const;
+
+    /// max |G - I| of the double recurrence at the samples (G: their Gram matrix).
+    double orthonormality_error() const { return orthonormality_error_; }
+    /// Whether evaluate() runs the recurrence in long double.
+    bool extended_precision() const { return extended_; }
+
+  private:
+    template <typename T>
+    BasisValues evaluate_in(const Eigen::Ref<const Eigen::VectorXd> &r,
+                            const Eigen::Ref<const Eigen::VectorXd> &z, bool derivatives,
+                            Eigen::Index chunk) const;
+    int degree_r_, degree_z_;
+    double r_mid_, r_scale_, z_mid_, z_scale_; ///< xi = (r - r_mid) r_scale, eta likewise
+    double q0_;                                ///< the constant q_0
+    /// Column k: h_ik for i < k above the diagonal, h_kk on it.
+    Eigen::MatrixXd h_;
+    double orthonormality_error_ = 0; ///< max |G - I| of the double recurrence at the samples
+    bool extended_ = false;           ///< evaluate in long double (evaluate_in<long double>)
+  };
+} // namespace rfm

@@ -1,0 +1,405 @@
+#include "rfm/structures/outline_structures.h"
+
+#include "problem/test_problems.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace rfm
+{
+  namespace
+  {
+    using axisym::PartCondition;
+
+    // A section with every edge and condition kind: the sphere of DESIGN.md 7.1 (arcs,
+    // the axis, a symmetry line), or a grooved solid shaft (a concave arc off the axis'
+    // center, an inclined free line, a clamped end).
+    axisym::Problem sphere(const nlohmann::json &outer)
+    {
+      nlohmann::json j = axisym::testing::thick_sphere();
+      if (!outer.empty())
+        j["boundary"]["outer"] = outer;
+      return axisym::parse_problem(j);
+    }
+
+    axisym::Problem grooved_shaft()
+    {
+      return axisym::parse_problem(nlohmann::json::parse(R"({
+        "geometry": {"outline": [
+          {"start": [0.0, 0.0]},
+          {"line_to": [0.04, 0.0], "part": "mid"},
+          {"arc_to": [0.05, 0.01], "center": [0.05, 0.0], "part": "groove"},
+          {"line_to": [0.05, 0.03], "part": "surface"},
+          {"line_to": [0.05, 0.05], "part": "land"},
+          {"line_to": [0.045, 0.08], "part": "taper"},
+          {"line_to": [0.0, 0.08], "part": "end"},
+          {"line_to": [0.0, 0.0], "part": "axis"}]},
+        "boundary": {"mid": {"symmetry": true}, "taper": {"traction": [2.0e6, -1.0e6]},
+                     "end": {"displacement": [1.0e-6, -2.0e-6]}, "surface": {"pressure": 3.0e6}},
+        "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
+    }
+
+    // A half disc split into two arcs of one circle at its top (a smooth join of two free
+    // edges), heated: the ring of verification/problems/heated_ring.json.
+    axisym::Problem ring()
+    {
+      return axisym::parse_problem(nlohmann::json::parse(R"({
+        "geometry": {"outline": [
+          {"start": [0.11, 0.0]},
+          {"line_to": [0.19, 0.0], "part": "equator"},
+          {"arc_to": [0.15, 0.04], "center": [0.15, 0.0], "part": "outer"},
+          {"arc_to": [0.11, 0.0], "center": [0.15, 0.0], "part": "inner"}]},
+        "boundary": {"equator": {"symmetry": true}, "inner": {"pressure": 1.0e6}},
+        "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
+    }
+
+    // Random points on edge e (away from its ends), and just inside the section.
+    std::vector<axisym::Point> points_on(const axisym::OutlineEdge &e, std::mt19937 &rng)
+    {
+      std::uniform_real_distribution<double> t(0.02, 0.98);
+      std::vector<axisym::Point> p;
+      for (int k = 0; k < 12; ++k)
+        p.push_back(e.point_at(t(rng)));
+      return p;
+    }
+  } // namespace
+
+  // omega = 0 on its edge, > 0 inside, |grad omega| = 1 on the edge; gradients against
+  // central differences; trimmed where the carrier runs on in the section.
+  TEST(EdgeOmega, VanishesOnItsEdgeIsPositiveInsideAndNormalized)
+  {
+    std::mt19937 rng(7);
+    for (const axisym::Problem &p : {sphere({{"pressure", 1.0}}), grooved_shaft()})
+      {
+        const axisym::Outline &outline = p.body->outline;
+        for (int e = 0; e < static_cast<int>(outline.edges().size()); ++e)
+          {
+            const EdgeOmega w(outline, e);
+            for (const axisym::Point &x : points_on(outline.edges()[e], rng))
+              {
+                EXPECT_NEAR(w(x.r, x.z).value, 0.0, 1e-15) << outline.edges()[e].part;
+                // Normalized: |grad omega| = 1 just inside the edge (a trimmed omega is
+                // |f| across its edge, with a kink on it).
+                const axisym::OutlineEdge &edge = outline.edges()[e];
+                axisym::Point n = edge.outward_normal_at(0.5);
+                if (edge.kind == axisym::OutlineEdge::Kind::arc)
+                  {
+                    const double s_out = edge.sweep() > 0 ? 1.0 : -1.0;
+                    n = {s_out * (x.r - edge.center.r) / edge.radius(),
+                         s_out * (x.z - edge.center.z) / edge.radius()};
+                  }
+                const double h = 1e-7 * outline.size();
+                const RValue v = w(x.r - h * n.r, x.z - h * n.z);
+                EXPECT_NEAR(std::hypot(v.d_r, v.d_z), 1.0, 1e-5) << edge.part;
+              }
+            // Positive at interior points; gradient against central differences.
+            std::uniform_real_distribution<double> ur(outline.bounding_box().r_min,
+                                                      outline.bounding_box().r_max);
+            std::uniform_real_distribution<double> uz(outline.bounding_box().z_min,
+                                                      outline.bounding_box().z_max);
+            int checked = 0;
+            while (checked < 30)
+              {
+                const axisym::Point x{ur(rng), uz(rng)};
+                if (!outline.contains(x, 0.0) || outline.distance_to_boundary(x) < 1e-3 * outline.size())
+                  continue;
+                ++checked;
+                const RValue v = w(x.r, x.z);
+                EXPECT_GT(v.value, 0.0) << outline.edges()[e].part;
+                const double h = 1e-6;
+                EXPECT_NEAR(v.d_r, (w(x.r + h, x.z).value - w(x.r - h, x.z).value) / (2 * h), 1e-6);
+                EXPECT_NEAR(v.d_z, (w(x.r, x.z + h).value - w(x.r, x.z - h).value) / (2 * h), 1e-6);
+              }
+          }
+        // The sphere's carriers never re-enter the section: all untrimmed (polynomial).
+        if (outline.edges().size() == 4)
+          {
+            for (int e = 0; e < 4; ++e)
+              EXPECT_FALSE(EdgeOmega(outline, e).trimmed()) << e;
+          }
+      }
+    // The surface and the land share the line r = 0.05: trimmed; the groove's circle and
+    // the other lines leave the shaft: untrimmed.
+    const axisym::Problem shaft = grooved_shaft();
+    for (int e = 0; e < 7; ++e)
+      EXPECT_EQ(EdgeOmega(shaft.body->outline, e).trimmed(), e == 2 || e == 3) << e;
+  }
+
+  // Every condition holds at random boundary points for random coefficients, to 1e-12
+  // relative: sigma . n = t on traction edges, sigma_rz = 0 and u . n = 0 on symmetry edges
+  // and the axis, u = u_bar on displacement edges.
+  // Dies with a given zone (a bilateral solve): a one-edge zone on the end face of a solid
+  // cylinder (centre on the axis), a two-edge zone on the side of a shaft, and the legacy
+  // cylinder's die on its outer side (centre on the mirror plane).
+  std::vector<std::pair<axisym::Problem, std::vector<DieZone>>> die_cases()
+  {
+    std::vector<std::pair<axisym::Problem, std::vector<DieZone>>> out;
+    out.emplace_back(axisym::parse_problem(axisym::testing::punched_cylinder()),
+                     std::vector<DieZone>{{"top", -0.004, 0.0, 2e-5}});
+    nlohmann::json shaft = axisym::testing::punched_cylinder();
+    shaft["boundary"]["top"] = {{"symmetry", true}};
+    shaft["boundary"]["side"]["die"] = {{"indentation", 3e-6},
+                                        {"center", {0.02, 0.01}},
+                                        {"profile", {{"shape", "paraboloid"}, {"radius", 0.05}}}};
+    out.emplace_back(axisym::parse_problem(shaft), std::vector<DieZone>{{"side", -0.003, 0.002, 3e-6}});
+    out.emplace_back(axisym::parse_problem(nlohmann::json::parse(R"({
+      "geometry": {"inner_radius": 0.1, "outer_radius": 0.2, "length": 0.4},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3},
+      "die": {"indentation": 1.0e-6}})")),
+                     std::vector<DieZone>{{"outer", 0.0, 0.1, 1e-6}});
+    return out;
+  }
+
+  TEST(OutlineStructures, EveryConditionHoldsForRandomCoefficients)
+  {
+    std::mt19937 rng(11);
+    std::normal_distribution<double> coef(0.0, 1.0);
+    std::vector<std::pair<axisym::Problem, std::vector<DieZone>>> cases;
+    for (const axisym::Problem &p :
+         {sphere({{"traction", {1.0e6, -3.0e6}}}), sphere(nlohmann::json::object()),
+          grooved_shaft(), ring()})
+      cases.emplace_back(p, std::vector<DieZone>{});
+    for (const auto &c : die_cases())
+      cases.push_back(c);
+    for (const auto &[p, zones] : cases)
+      {
+        const OutlineStructures s(*p.body, 6, zones);
+        const axisym::Body &body = s.body(); // split at the zones' ends
+        Eigen::VectorXd q_b(s.n_boundary_columns());
+        for (Eigen::Index j = 0; j < q_b.size(); ++j)
+          q_b[j] = coef(rng) * 1e6;
+        const double scale = 1e7; // stress scale of the loads and coefficients
+        for (int e = 0; e < static_cast<int>(body.outline.edges().size()); ++e)
+          {
+            const axisym::OutlineEdge &edge = body.outline.edges()[e];
+            const PartCondition &c = body.condition_of_edge(e);
+            const std::vector<axisym::Point> pts = points_on(edge, rng);
+            Eigen::VectorXd r(pts.size()), z(pts.size());
+            for (std::size_t k = 0; k < pts.size(); ++k)
+              r[k] = pts[k].r, z[k] = pts[k].z;
+            const OutlineStressValues sv = s.stress(r, z);
+            const OutlineDisplacementValues dv = s.displacement(r, z);
+            for (Eigen::Index k = 0; k < r.size(); ++k)
+              {
+                double sigma[4];
+                for (int comp = 0; comp < 4; ++comp)
+                  sigma[comp] = sv.s0(k, comp) + sv.omega(k, comp) * coef(rng) * 1e6 +
+                                sv.boundary[comp].row(k).dot(q_b);
+                double u[2];
+                for (int m = 0; m < 2; ++m)
+                  u[m] = dv.u0(k, m) + dv.omega(k, m) * coef(rng) * 1e-5;
+                const axisym::Point n = edge.outward_normal_at(0.5);
+                // The normal at this point (arcs: radial).
+                double n_r = n.r, n_z = n.z;
+                if (edge.kind == axisym::OutlineEdge::Kind::arc)
+                  {
+                    const double s_out = edge.sweep() > 0 ? 1.0 : -1.0;
+                    n_r = s_out * (r[k] - edge.center.r) / edge.radius();
+                    n_z = s_out * (z[k] - edge.center.z) / edge.radius();
+                  }
+                const double t_r = sigma[rr] * n_r + sigma[rz] * n_z;
+                const double t_z = sigma[rz] * n_r + sigma[zz] * n_z;
+                switch (c.kind)
+                  {
+                    case PartCondition::Kind::traction_free:
+                    case PartCondition::Kind::pressure:
+                    case PartCondition::Kind::traction:
+                      {
+                        const auto t = s.prescribed_traction(e, r[k], z[k]);
+                        EXPECT_NEAR(t_r, t[0], 1e-12 * scale) << edge.part;
+                        EXPECT_NEAR(t_z, t[1], 1e-12 * scale) << edge.part;
+                        break;
+                      }
+                    case PartCondition::Kind::symmetry:
+                    case PartCondition::Kind::axis:
+                      EXPECT_NEAR(sigma[rz], 0.0, 1e-12 * scale) << edge.part;
+                      EXPECT_NEAR(u[0] * n_r + u[1] * n_z, 0.0, 1e-18) << edge.part;
+                      break;
+                    case PartCondition::Kind::displacement:
+                      EXPECT_NEAR(u[0], c.displacement[0], 1e-18) << edge.part;
+                      EXPECT_NEAR(u[1], c.displacement[1], 1e-18) << edge.part;
+                      break;
+                    case PartCondition::Kind::die:
+                      {
+                        // The zone: shear free, u.n = g0(|s|) - delta, written here from the
+                        // die's frame and profile.
+                        const axisym::DieCondition &die = p.body->conditions.at(edge.part).die;
+                        const axisym::DieFrame f = axisym::die_frame(*p.body, edge.part);
+                        const double target =
+                          die.profile.gap(std::abs(f.coordinate({r[k], z[k]}))) - zones[0].indentation;
+                        ASSERT_TRUE(s.in_die_zone(e));
+                        EXPECT_NEAR(s.die_normal_displacement(e, r[k], z[k]), target, 1e-20);
+                        EXPECT_NEAR(sigma[rz], 0.0, 1e-12 * scale) << edge.part;
+                        EXPECT_NEAR(u[0] * n_r + u[1] * n_z, target, 1e-18) << edge.part;
+                        break;
+                      }
+                    default: break;
+                  }
+              }
+          }
+      }
+  }
+
+  // The boundary columns carry the tangential normal stress of their edge: on the outer
+  // arc of the sphere, sigma_ss = sum_j q_j P_j(xi) exactly.
+  TEST(OutlineStructures, BoundaryColumnsCarryTheTangentialStressOfTheirEdge)
+  {
+    const axisym::Problem p = sphere(nlohmann::json::object());
+    const OutlineStructures s(*p.body, 3);
+    ASSERT_EQ(s.n_boundary_columns(), 2 * 4); // outer and inner arcs, P_0..P_3
+    const axisym::OutlineEdge &outer = p.body->outline.edges()[1];
+    Eigen::VectorXd r(1), z(1);
+    const axisym::Point x = outer.point_at(0.3);
+    r << x.r;
+    z << x.z;
+    const OutlineStressValues v = s.stress(r, z);
+    const double xi = s.omegas()[1].edge_coordinate(x.r, x.z).value;
+    const axisym::Point t = outer.tangent_at(0.3);
+    // Column 2 (outer edge listed first among the S edges: P_2(xi)).
+    const double p2 = 0.5 * (3 * xi * xi - 1);
+    const double s_ss = v.boundary[rr](0, 2) * t.r * t.r + v.boundary[zz](0, 2) * t.z * t.z +
+                        2 * v.boundary[rz](0, 2) * t.r * t.z;
+    EXPECT_NEAR(s_ss, p2, 1e-14);
+    // The inner edge's columns vanish on the outer edge.
+    for (int j = 4; j < 8; ++j)
+      EXPECT_NEAR(v.boundary[rr](0, j), 0.0, 1e-14);
+  }
+
+  // Where two S edges join smoothly (the ring's arcs at (0.15, 0.04); the shaft's pressure
+  // and free lines at (0.05, 0.03)) omega_T vanishes to first order, as the distance to the
+  // boundary, not to second order as the product of the two edges' omegas would: the
+  // stress does not vanish there. At a right-angle corner of S edges (the shaft's groove lip
+  // at (0.05, 0.01)) it is the product, second order.
+  TEST(OutlineStructures, OmegaOfASmoothJoinIsFirstOrder)
+  {
+    struct Case
+    {
+      axisym::Problem problem;
+      axisym::Point join, inward;
+      double order;
+    };
+    for (const Case &c : {Case{ring(), {0.15, 0.04}, {0.0, -1.0}, 1.0},
+                          Case{grooved_shaft(), {0.05, 0.03}, {-1.0, 0.0}, 1.0},
+                          Case{grooved_shaft(), {0.05, 0.01}, {-std::sqrt(0.5), std::sqrt(0.5)}, 2.0}})
+      {
+        const OutlineStructures s(*c.problem.body, 4);
+        Eigen::VectorXd r(2), z(2);
+        const double h = 1e-5;
+        for (int k = 0; k < 2; ++k)
+          r[k] = c.join.r + (k + 1) * h * c.inward.r, z[k] = c.join.z + (k + 1) * h * c.inward.z;
+        const OutlineStressValues v = s.stress(r, z);
+        const double ratio = v.omega(1, rr) / v.omega(0, rr);
+        EXPECT_NEAR(std::log2(ratio), c.order, 0.05) << "join (" << c.join.r << ", " << c.join.z << ")";
+      }
+  }
+
+  // The split: a one-edge zone leaves one free sub-edge, a two-edge zone two, a zone over
+  // the whole part none; the zone's sub-edge keeps the part's name.
+  TEST(OutlineStructures, DieZoneSplitsItsPart)
+  {
+    const auto cases = die_cases();
+    auto count = [](const axisym::Body &b, const std::string &part) {
+      return std::count_if(b.outline.edges().begin(), b.outline.edges().end(),
+                           [&](const axisym::OutlineEdge &e) { return e.part == part; });
+    };
+    const OutlineStructures one(*cases[0].first.body, 4, cases[0].second);
+    EXPECT_EQ(count(one.body(), "top"), 1);
+    EXPECT_EQ(count(one.body(), "top#free"), 1);
+    const OutlineStructures two(*cases[1].first.body, 4, cases[1].second);
+    EXPECT_EQ(count(two.body(), "side"), 1);
+    EXPECT_EQ(count(two.body(), "side#free"), 2);
+    const OutlineStructures whole(*cases[2].first.body, 4, {{"outer", 0.0, 0.2, 1e-6}});
+    EXPECT_EQ(count(whole.body(), "outer"), 1);
+    EXPECT_EQ(count(whole.body(), "outer#free"), 0);
+    EXPECT_TRUE(whole.body().mirrored);
+    // A die part without a zone, and a zone on a part without a die.
+    EXPECT_THROW(OutlineStructures(*cases[0].first.body, 4), axisym::InputError);
+    EXPECT_THROW(OutlineStructures(*cases[0].first.body, 4, {{"side", 0.0, 0.01, 1e-6}}),
+                 std::invalid_argument);
+  }
+
+  // A zone inside its part (two free ends): its omega grows like the distance to the
+  // segment along the part's line, not like s^2 / L (the trimming of an ordinary segment, 2.4
+  // times the distance at the shaft's end here: for a ring die 1/100 of its part it reached
+  // 40 section sizes and the force came out negative).
+  TEST(OutlineStructures, AZoneInsideItsPartHasAnOmegaLikeTheDistance)
+  {
+    const auto cases = die_cases();
+    const OutlineStructures two(*cases[1].first.body, 4, cases[1].second);
+    const auto &edges = two.body().outline.edges();
+    int zone = -1;
+    for (int e = 0; e < static_cast<int>(edges.size()); ++e)
+      if (edges[e].part == "side")
+        zone = e;
+    ASSERT_GE(zone, 0);
+    const EdgeOmega omega(two.body().outline, zone, true);
+    // The zone is z in [0.007, 0.012] on r = 0.02.
+    const auto distance = [](const double r, const double z) {
+      const double dz = z < 0.007 ? 0.007 - z : (z > 0.012 ? z - 0.012 : 0.0);
+      return std::hypot(0.02 - r, dz);
+    };
+    for (const auto &[r, z] : std::vector<std::pair<double, double>>{
+           {0.02, 0.0}, {0.02, 0.02}, {0.0, 0.0}, {0.01, 0.02}, {0.015, 0.0095}})
+      {
+        const double w = omega(r, z).value, d = distance(r, z);
+        EXPECT_GT(w, 0.5 * d) << "at (" << r << ", " << z << ")";
+        EXPECT_LT(w, 1.5 * d) << "at (" << r << ", " << z << ")";
+      }
+    // Zero on the zone, positive on the free rest of the part.
+    EXPECT_NEAR(omega(0.02, 0.0095).value, 0.0, 1e-15);
+    EXPECT_GT(omega(0.02, 0.005).value, 1e-3);
+  }
+
+  // A faded zone: u . n = g0(|s|) - delta on the zone, the continuation zero outside the box
+  // of half size fade_end, and its gradient that of its values (central differences).
+  TEST(OutlineStructures, AFadedZoneValueVanishesOutsideItsBox)
+  {
+    auto cases = die_cases();
+    DieZone z{"side", -0.001, 0.001, 3e-6};
+    z.fade_start = 0.002, z.fade_end = 0.004;
+    const OutlineStructures faded(*cases[1].first.body, 4, {z});
+    const OutlineStructures plain(*cases[1].first.body, 4, {DieZone{"side", -0.001, 0.001, 3e-6}});
+    const auto u_r = [](const OutlineStructures &s, const double r, const double zz) {
+      const OutlineDisplacementValues v =
+        s.displacement(Eigen::VectorXd::Constant(1, r), Eigen::VectorXd::Constant(1, zz));
+      return std::array<double, 3>{v.u0(0, 0), v.u0_r(0, 0), v.u0_z(0, 0)};
+    };
+    // The centre (0.02, 0.01) and a point of the zone: the outward normal is +e_r.
+    const double g_half = 0.0005 * 0.0005 / (2 * 0.05);
+    EXPECT_NEAR(u_r(faded, 0.02, 0.01)[0], -3e-6, 1e-18);
+    EXPECT_NEAR(u_r(faded, 0.02, 0.0105)[0], g_half - 3e-6, 1e-18);
+    // Beyond the box, along the part and into the body: zero (unfaded: g0 - delta there).
+    EXPECT_EQ(u_r(faded, 0.02, 0.0145)[0], 0.0);
+    EXPECT_EQ(u_r(faded, 0.0155, 0.01)[0], 0.0);
+    EXPECT_GT(std::abs(u_r(plain, 0.02, 0.0145)[0]), 1e-4);
+    // Inside the fading band.
+    for (const auto &[r, zz] : std::vector<std::pair<double, double>>{
+           {0.0185, 0.0128}, {0.0195, 0.0072}, {0.0172, 0.0101}})
+      {
+        const double h = 1e-7;
+        const auto v = u_r(faded, r, zz);
+        const double d_r = (u_r(faded, r + h, zz)[0] - u_r(faded, r - h, zz)[0]) / (2 * h);
+        const double d_z = (u_r(faded, r, zz + h)[0] - u_r(faded, r, zz - h)[0]) / (2 * h);
+        EXPECT_NEAR(v[1], d_r, 1e-6 * (std::abs(d_r) + 1e-3)) << "at (" << r << ", " << zz << ")";
+        EXPECT_NEAR(v[2], d_z, 1e-6 * (std::abs(d_z) + 1e-3)) << "at (" << r << ", " << zz << ")";
+      }
+    // A fade that starts inside the zone is refused.
+    z.fade_start = 0.0005;
+    EXPECT_THROW(OutlineStructures(*cases[1].first.body, 4, {z}), std::invalid_argument);
+  }
+
+  TEST(OutlineStructures, RejectsAnInclinedSymmetryLine)
+  {
+    nlohmann::json j = nlohmann::json::parse(R"({
+      "geometry": {"outline": [
+        {"start": [0.1, 0.0]}, {"line_to": [0.2, 0.0], "part": "bottom"},
+        {"line_to": [0.2, 0.1], "part": "side"}, {"line_to": [0.1, 0.05], "part": "slope"},
+        {"line_to": [0.1, 0.0], "part": "inner"}]},
+      "boundary": {"bottom": {"symmetry": true}, "slope": {"symmetry": true}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})");
+    const axisym::Problem p = axisym::parse_problem(j);
+    EXPECT_THROW(OutlineStructures(*p.body, 2), axisym::InputError);
+  }
+} // namespace rfm
