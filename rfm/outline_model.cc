@@ -1,6 +1,6 @@
 #include "rfm/outline_model.h"
 
-#include "rfm/contact/contact.h"
+#include "rfm/fields/interaction_integral.h"
 #include "rfm/hardware.h"
 #include "rfm/quadrature/section_quadrature.h"
 #include "rfm/solve/symmetric_eigen.h"

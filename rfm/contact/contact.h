@@ -51,6 +51,7 @@
 // legacy_body: the half section, mirrored) with the zone [0, c] on the part `outer`.
 #pragma once
 
+#include "rfm/fields/interaction_integral.h"
 #include "rfm/outline_model.h"
 
 #include <functional>
@@ -216,20 +217,8 @@ namespace rfm
   /// The half-disc rule of edge_intensity_interaction (polar, rho = rho_1 s^2).
   Quadrature2D interaction_quadrature(const axisym::Geometry &geometry, double c, double rho_1);
 
-  /// The same integral at a contact edge of any straight part (the frame of edge_modes.h: t
-  /// into the zone along the part, n into the body), for any field: `contact_u(x)` is the
-  /// prescribed outward normal displacement on the contact face at the distance x >= 0 from the
-  /// edge, `free_pressure` the pressure on the free face. u~ = u_h - u_bar with u_bar's normal
-  /// component contact_u(0) and its tangential one the field's at the edge; the faces are the
-  /// part's line, W . n_out = -r s*_nn u~_n (contact) and -r p u*_n (free); divided by the edge's
-  /// radius. The hollow-cylinder form above is this with EdgeFrame::outer_side(R2, c),
-  /// contact_u(x) = u_r*(c - x) and the outer pressure. Returns K = sqrt(2 pi) a_1 [Pa m^1/2]
-  /// (K < 0: compressive, the zone too short, or a flat punch's edge).
-  double edge_intensity_interaction(const FieldEvaluator &field, const EdgeFrame &frame,
-                                    const Material &material, double rho_1,
-                                    const std::function<double(double)> &contact_u,
-                                    double free_pressure = 0.0);
-  Quadrature2D interaction_quadrature(const EdgeFrame &frame, double rho_1);
+  // The same integral at a contact edge of any straight part, for any field:
+  // rfm/fields/interaction_integral.h.
 
   /// The radius of the interaction integral's half disc used by check_contact:
   /// 0.9 min(c, a - c, R2 - R1) (the largest that keeps the other sides out; the root of K
