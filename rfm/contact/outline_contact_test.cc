@@ -113,37 +113,70 @@ namespace rfm
   }
 
   // The consistent pressure carries the domain-integral force: 2 pi int p r ds over the zone
-  // (a Gauss rule in theta, s = c sin theta, exact for the representation) against
-  // die_force, two separate integrals of the same moment m_0 (with one and with three
-  // moments; measured to 1e-15). The paper's die on the outline at a fixed zone (c = 0.1 m).
+  // (a Gauss rule in theta, x = sin theta, exact for the representation) against die_force,
+  // two separate integrals of the same moment m_0 (measured to 1e-15), with one and three
+  // moments. Three kinds of zone: one free end (the paper's die on the outline, c = 0.1 m),
+  // two free ends (the same die centred at z = 0.1 m: every degree, not only the even ones)
+  // and a flat punch's sharp edge (1 / sqrt(1 - x^2) and the first kind; infinite at the edge).
   TEST(ConsistentDiePressure, CarriesTheDomainForce)
   {
-    auto j = paper_die_outline();
-    j["contact"] = {{"method", "fixed"}, {"half_width", 0.1}};
-    const axisym::Problem p = axisym::parse_problem(j);
-    const OutlineContactResult r = solve_outline_zone(p, p.rfm, 0.0, 0.1);
-    ASSERT_TRUE(r.success) << r.message;
-    const double force = r.model->die_force("outer").domain;
+    struct Case
+    {
+      nlohmann::json problem;
+      std::string part;
+      double s_lo, s_hi;
+    };
+    std::vector<Case> cases;
+    cases.push_back({paper_die_outline(), "outer", 0.0, 0.1});
+    auto two = paper_die_outline();
+    two["boundary"]["outer"]["die"]["center"] = {0.2, 0.1};
+    two["rfm"]["local_levels"] = 0; // a zone of a quarter of the section needs no boxes
+    cases.push_back({two, "outer", -0.05, 0.05});
+    auto flat = axisym::testing::punched_cylinder();
+    flat["boundary"]["top"]["die"] = {{"indentation", 1e-6},
+                                      {"profile", {{"shape", "flat"}, {"radius", 1e-3}}}};
+    flat["rfm"]["local_levels"] = 0; // the integral's identity does not need the boxes
+    cases.push_back({flat, "top", -1e-3, 0.0});
     const GaussRule1D g = gauss_legendre(40);
-    std::vector<double> s;
-    for (Eigen::Index i = 0; i < g.nodes.size(); ++i)
-      s.push_back(0.1 * std::sin(0.25 * M_PI * (g.nodes[i] + 1.0)));
-    for (const int n : {1, 3})
+    for (const Case &k : cases)
       {
-        const std::vector<double> pressure = consistent_die_pressure(*r.model, p, r.zone, s, n);
-        double integral = 0.0;
+        const axisym::Problem p = axisym::parse_problem(k.problem);
+        const OutlineContactResult r = solve_outline_zone(p, p.rfm, k.s_lo, k.s_hi);
+        ASSERT_TRUE(r.success) << r.message;
+        const double force = r.model->die_force(k.part).domain;
+        const axisym::DieFrame f = axisym::die_frame(*p.body, k.part);
+        // s(theta) over the zone: from the centre (one free end) or from the zone's middle.
+        const bool two_ends = k.s_lo < 0.0 && k.s_hi > 0.0;
+        const double mid = two_ends ? 0.5 * (k.s_lo + k.s_hi) : 0.0;
+        const double h = two_ends ? 0.5 * (k.s_hi - k.s_lo) : k.s_hi - k.s_lo;
+        const double side = two_ends || k.s_hi > 0.0 ? 1.0 : -1.0;
+        const double theta_a = two_ends ? -0.5 * M_PI : 0.0, span = 0.5 * M_PI - theta_a;
+        std::vector<double> s, ds;
         for (Eigen::Index i = 0; i < g.nodes.size(); ++i)
           {
-            // ds = c cos(theta) d theta; r = 0.2 on the outer part.
-            const double theta = 0.25 * M_PI * (g.nodes[i] + 1.0);
-            integral += 0.25 * M_PI * g.weights[i] * 0.1 * std::cos(theta) * 0.2 * pressure[i];
+            const double theta = theta_a + 0.5 * span * (g.nodes[i] + 1.0);
+            s.push_back(mid + side * h * std::sin(theta));
+            ds.push_back(0.5 * span * g.weights[i] * h * std::cos(theta));
           }
-        EXPECT_NEAR(2 * M_PI * integral, force, 1e-9 * force) << n << " moments";
+        for (const int n : {1, 3})
+          {
+            const std::vector<double> pressure = consistent_die_pressure(*r.model, p, r.zone, s, n);
+            double integral = 0.0;
+            for (std::size_t i = 0; i < s.size(); ++i)
+              integral += ds[i] * f.point_at(s[i]).r * pressure[i];
+            EXPECT_NEAR(2 * M_PI * integral, force, 1e-9 * std::abs(force))
+              << k.part << " [" << k.s_lo << ", " << k.s_hi << "], " << n << " moments";
+          }
+        // Nothing outside the zone; infinite only at a sharp edge.
+        const double beyond = k.s_hi > 0.0 ? 1.2 * k.s_hi : 1.2 * k.s_lo;
+        const double edge = k.s_hi > 0.0 ? k.s_hi : k.s_lo;
+        const std::vector<double> at = consistent_die_pressure(*r.model, p, r.zone, {beyond, edge}, 3);
+        EXPECT_EQ(at[0], 0.0);
+        if (p.body->conditions.at(k.part).die.profile.shape == axisym::DieProfile::Shape::flat)
+          EXPECT_TRUE(std::isinf(at[1]));
+        else
+          EXPECT_EQ(at[1], 0.0);
       }
-    // Nothing outside the zone, and on the far side of the centre a one-sided zone has none.
-    const std::vector<double> outside = consistent_die_pressure(*r.model, p, r.zone, {0.15, -0.01}, 3);
-    EXPECT_EQ(outside[0], 0.0);
-    EXPECT_EQ(outside[1], 0.0);
   }
 
   // Hertz's pressure at the finest FEM's zone (a = 0.866165 mm, delta = 7.3681e-6 m, Q2 L = 4)
