@@ -393,9 +393,10 @@ namespace rfm
     // term. Measured against the finest FEM at p = 8 and three moments, max |p - p_FEM| /
     // p_max on the RFM's points at the searches' zones: Hertz 0.96 % (its peak -0.09 % from
     // Hertz's p0; at the FEM's zone 0.47 % on the FEM's points, the trace 61 % there), the
-    // rounded flat punch 11 %, the sharp flat punch 2.4 % of p(0) inside 0.9 b. C1 bumps (1 - x^2)^2 gave 2.1 % (peak +1.9 %), 11.4 % and 3.7 %;
-    // (1 - x^2)^4 gave 1.4 % (peak -1.4 %) and 10.8 % on the first two; fading into the body
-    // over h instead of h / 2, 2.5 % and 13 %. The hollow cylinder's tests (continued by their
+    // rounded flat punch 11 %, the sharp flat punch 2.4 % of p(0) inside 0.9 b. C1 bumps
+    // (1 - x^2)^2 gave 2.1 % (peak +1.9 %), 11.4 % and 3.7 %; (1 - x^2)^4 gave 1.4 % (peak
+    // -1.4 %) and 10.8 % on the first two; fading into the body over h instead of h / 2,
+    // 2.5 % and 13 %. The hollow cylinder's tests (continued by their
     // end value along the part and linearly through the body, contact.h) gave 5.9 % on Hertz,
     // 37 % with six moments: they kink at the zone's end and vary on the zone's scale across
     // the whole section.
