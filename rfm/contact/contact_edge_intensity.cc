@@ -1,6 +1,7 @@
 // contact.method "edge-intensity" on the hollow cylinder (contact.h): the root of K(c), then the
 // stationary point of P(c) next to it.
 #include "rfm/contact/contact_methods.h"
+#include "rfm/contact/illinois.h"
 
 #include <algorithm>
 #include <cmath>
@@ -91,18 +92,14 @@ namespace rfm::contact_methods
           return;
         k1 = it.edge_intensity;
       }
-    double lo = k0 < 0 ? c0 : c1, k_lo = k0 < 0 ? k0 : k1;
-    double hi = k0 < 0 ? c1 : c0, k_hi = k0 < 0 ? k1 : k0;
+    // 2b. Illinois on [lo, hi] (K < 0 at lo, K > 0 at hi).
+    IllinoisBracket br{k0 < 0 ? c0 : c1, k0 < 0 ? k0 : k1, k0 < 0 ? c1 : c0, k0 < 0 ? k1 : k0};
     double c = k1 == 0.0 ? c1 : 0.0;
-
-    // 2b. Illinois (regula falsi that halves the retained end's K when the same end
-    //     is kept twice): superlinear on the nearly linear K(c), never leaves the bracket.
-    int side = 0; // -1: the last step replaced lo, +1: it replaced hi
     double c_prev = c1;
     while (k1 != 0.0)
       {
-        c = (lo * k_hi - hi * k_lo) / (k_hi - k_lo);
-        if (std::abs(c - c_prev) < tol || hi - lo < tol)
+        c = br.secant();
+        if (std::abs(c - c_prev) < tol || br.b - br.a < tol)
           break;
         if (n_solves >= options.max_iterations)
           {
@@ -116,21 +113,9 @@ namespace rfm::contact_methods
         c_prev = c;
         if (k == 0.0)
           break;
-        if (k < 0)
-          {
-            lo = c, k_lo = k;
-            if (side == -1)
-              k_hi *= 0.5;
-            side = -1;
-          }
-        else
-          {
-            hi = c, k_hi = k;
-            if (side == 1)
-              k_lo *= 0.5;
-            side = 1;
-          }
+        br.replace(c, k);
       }
+    const double lo = br.a, hi = br.b;
 
     // 2c. P(c) is stationary where K changes sign (DESIGN.md 4.4). The two are
     //     independent domain integrals of the discrete field (measured at p = 8, nu =

@@ -1,5 +1,6 @@
 #include "rfm/contact/outline_contact.h"
 
+#include "rfm/contact/illinois.h"
 #include "rfm/quadrature/quadrature.h"
 
 #include <Eigen/Dense>
@@ -258,32 +259,19 @@ namespace rfm
             }
           // 2. Illinois on [c_a, c_b], until the bracket or the next step is below
           //    root_tolerance c (the last solve is then the answer).
-          int side = 0;
+          IllinoisBracket br{c_a, k_a, c_b, k_b};
           double c_last = c_b;
-          while (std::abs(c_b - c_a) > options.root_tolerance * std::max(c_a, c_b))
+          while (std::abs(br.b - br.a) > options.root_tolerance * std::max(br.a, br.b))
             {
               if (static_cast<int>(result.history.size()) >= options.max_solves)
                 throw std::runtime_error("the root of K did not converge in " +
                                          std::to_string(options.max_solves) + " solves");
-              const double c = (c_a * k_b - c_b * k_a) / (k_b - k_a);
+              const double c = br.secant();
               if (std::abs(c - c_last) <= options.root_tolerance * c)
                 break;
               const double k = k_of(c, "illinois");
               c_last = c;
-              if (std::signbit(k) == std::signbit(k_b))
-                {
-                  c_b = c, k_b = k;
-                  if (side == -1)
-                    k_a *= 0.5;
-                  side = -1;
-                }
-              else
-                {
-                  c_a = c, k_a = k;
-                  if (side == 1)
-                    k_b *= 0.5;
-                  side = 1;
-                }
+              br.replace(c, k);
               if (k == 0.0)
                 break;
             }
