@@ -99,7 +99,8 @@ namespace
   // A die on an outline part (DESIGN.md 7.1) as the RFM solves it so far: the bilateral
   // problem on a given zone (contact.method "fixed", contact.half_width c: the zone is
   // [0, c] from a centre at the part's end, [-c, c] otherwise, within the part; default the
-  // whole part). Throws InputError for what the outline RFM cannot do yet.
+  // whole part; the searches start from it). Throws InputError for what the outline RFM cannot
+  // do yet.
   std::vector<rfm::DieZone> die_zones(const axisym::Problem &problem)
   {
     const std::vector<std::string> parts = problem.body->die_parts();
@@ -109,11 +110,6 @@ namespace
       throw axisym::InputError("boundary." + parts[1] +
                                ".die: the RFM solves one die on an outline section so far "
                                "(fem_solve solves several)");
-    if (problem.contact.method != "fixed" && problem.contact.method != "edge-intensity")
-      throw axisym::InputError(
-        "contact.method = \"" + problem.contact.method + "\": on an outline part the RFM takes "
-        "\"edge-intensity\" (the default) or \"fixed\" so far (\"iterate\" and \"max-force\" "
-        "are on the hollow-cylinder form)");
     const axisym::DieFrame f = axisym::die_frame(*problem.body, parts[0]);
     const axisym::DieCondition &die = problem.body->conditions.at(parts[0]).die;
     const double c = problem.contact.half_width.value_or(std::max(-f.s_min, f.s_max));
@@ -204,6 +200,7 @@ namespace
     std::optional<rfm::DegreeSequence<rfm::OutlineModel>> sequence;
     std::vector<rfm::DieZone> zones = die_zones(problem);
     std::optional<rfm::OutlineContactResult> search;
+    std::optional<rfm::ContactResult> checked;
     if (!zones.empty() && problem.contact.method == "edge-intensity")
       {
         fmt::print(stderr, "rfm_solve: outline section, degree p = {}, die on {}: the zone's end "
@@ -233,6 +230,34 @@ namespace
           }
         zones = {search->zone};
         model = std::move(search->model);
+      }
+    else if (!zones.empty() && problem.contact.method != "fixed")
+      {
+        // iterate or max-force: conditions 1.2 and 1.3 on trial zones (outline_contact.h).
+        fmt::print(stderr, "rfm_solve: outline section, degree p = {}, die on {}: contact.method "
+                           "{} on conditions 1.2 and 1.3\n",
+                   problem.rfm.degree, zones[0].part, problem.contact.method);
+        checked = rfm::solve_outline_contact_by_conditions(
+          problem, problem.rfm, {}, [](const rfm::ContactIterate &it) {
+            fmt::print(stderr,
+                       "rfm_solve:   c = {:.6g} m: P = {:.6g} N, delta = {:.6g} m, K = {:.5g} Pa "
+                       "m^1/2, tension {}, penetration {} ({}, {:.1f} s)\n",
+                       it.half_width, it.force, it.indentation, it.edge_intensity,
+                       it.tension ? "yes" : "no", it.penetration ? "yes" : "no", it.phase,
+                       it.assembly_s + it.solve_s);
+          });
+        if (!checked->success || !checked->model)
+          {
+            nlohmann::json failed = {{"solver", "rfm"}, {"problem", problem.source},
+                                     {"diagnostics", {{"status", "failed"}, {"message", checked->message}}}};
+            failed["contact"] = rfm::to_json(*checked, problem, 0);
+            if (!output_path.empty())
+              axisym::write_json_atomically(output_path, failed);
+            fmt::print(stderr, "rfm_solve: numerical failure: {}\n", checked->message);
+            return 3;
+          }
+        model = std::move(checked->model);
+        zones = {model->zones().at(0)};
       }
     else if (!zones.empty())
       {
@@ -335,6 +360,15 @@ namespace
                                  {"phase", step.phase}});
             result["contact"]["iterations"] = history;
             result["contact"]["message"] = search->message;
+          }
+        if (checked)
+          {
+            // The method's record as on the hollow cylinder (contact.h's to_json), over the
+            // outline die's keys: its iterations with the conditions, its bracket of c.
+            const nlohmann::json m = rfm::to_json(*checked, problem, 0);
+            for (const char *key : {"method", "message", "iterations", "conditions", "half_width_range"})
+              if (m.contains(key))
+                result["contact"][key] = m[key];
           }
         result["dies"] = nlohmann::json::array({result["contact"]});
         // An indicator far above the die problems' usual 1e-3: the zone is small against the

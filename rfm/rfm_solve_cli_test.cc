@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -298,13 +299,35 @@ namespace
     EXPECT_NEAR(r.at("contact").at("force").get<double>(), 0.5 * 192617.1, 1e-4 * 96308.6);
     EXPECT_LT(std::abs(r.at("contact").at("edge_intensity").get<double>()), 1e3); // the root of K
 
-    // The methods not on the outline path yet.
+    // The paper's iterations on the outline path (outline_contact.h): the same zone, the
+    // record of every solve with its conditions, the bracket of c where they hold.
     j["contact"] = {{"method", "iterate"}};
     std::ofstream(in) << j.dump();
     fs::remove(out);
     o = run(in.string() + " --output " + out.string());
-    EXPECT_EQ(o.status, 2);
+    ASSERT_EQ(o.status, 0) << o.err;
+    r = nlohmann::json::parse(std::ifstream(out));
+    const nlohmann::json &it = r.at("contact");
+    EXPECT_EQ(it.at("method"), "iterate");
+    EXPECT_EQ(it.at("part"), "outer");
+    EXPECT_NEAR(it.at("half_width").get<double>(), 0.1038561, 1e-3 * 0.1038561);
+    ASSERT_GE(it.at("iterations").size(), 3u);
+    EXPECT_EQ(it.at("iterations")[0].at("half_width"), 0.2); // the paper's iteration 0: c = a
+    EXPECT_FALSE(it.at("iterations")[0].at("condition_1_2_holds").get<bool>());
+    const auto range = it.at("half_width_range").get<std::array<double, 2>>();
+    EXPECT_LE(range[0], it.at("half_width").get<double>());
+    EXPECT_GE(range[1], it.at("half_width").get<double>());
+    EXPECT_TRUE(it.at("conditions").contains("max_penetration_relative"));
+    EXPECT_EQ(r.at("dies").size(), 1u);
+
+    // Not for a zone with two free ends (the die's centre inside its part): bad input.
+    j["boundary"]["outer"]["die"]["center"] = {0.2, 0.1};
+    std::ofstream(in) << j.dump();
+    fs::remove(out);
+    o = run(in.string() + " --output " + out.string());
+    EXPECT_EQ(o.status, 2) << o.err;
     EXPECT_NE(o.err.find("contact.method"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("one free end"), std::string::npos) << o.err;
     EXPECT_FALSE(fs::exists(out));
   }
 

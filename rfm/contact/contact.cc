@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 namespace rfm
 {
@@ -208,11 +209,14 @@ namespace rfm
 
   nlohmann::json to_json(const ContactIterate &it, const Problem &problem)
   {
-    const double a = problem.geometry.half_length();
-    const double delta = problem.die ? problem.die->indentation : 1.0;
+    // The iterate's own a and delta (check_die_conditions); the legacy fields before a check.
+    const double a = it.extent > 0.0 ? it.extent : problem.geometry.half_length();
+    const double delta =
+      it.indentation > 0.0 ? it.indentation : (problem.die ? problem.die->indentation : 1.0);
     return {{"phase", it.phase},
             {"half_width", it.half_width},
             {"half_width_ratio", it.half_width / a},
+            {"indentation", it.indentation},
             {"force", it.force},
             {"force_trace", it.force_trace},
             {"edge_intensity", std::isfinite(it.edge_intensity) ? nlohmann::json(it.edge_intensity)
@@ -285,7 +289,7 @@ namespace rfm
   ContactIterate check_contact(const Problem &problem, const OutlineModel &model,
                                const ContactOptions &options)
   {
-    const double a = problem.geometry.half_length(), r2 = problem.geometry.outer_radius;
+    const double a = problem.geometry.half_length();
     const double c = zone_half_width(model);
     ContactIterate it;
     it.half_width = c;
@@ -311,79 +315,121 @@ namespace rfm
       (c < a && e) ? edge_intensity_interaction(model, problem, c,
                                                 interaction_radius(problem.geometry, c))
                    : nan;
+    check_die_conditions(model, axisym::legacy_body(problem), it.edge_intensity, options, it);
+    return it;
+  }
 
-    // Grid on the outer side with c itself as a node,
+  void check_die_conditions(const OutlineModel &model, const axisym::Body &body, const double k_edge,
+                            const ContactOptions &options, ContactIterate &it)
+  {
+    const DieZone &zone = model.zones().at(0);
+    const axisym::DieFrame frame = axisym::die_frame(body, zone.part);
+    const axisym::DieProfile &profile = body.conditions.at(zone.part).die.profile;
+    // The free side: s > 0 for a zone [0, c], s < 0 for [-c, 0]; t = |s| from the centre.
+    const double sign = zone.s_hi > 0.0 ? 1.0 : -1.0;
+    const double c = sign > 0 ? zone.s_hi : -zone.s_lo;
+    const double a = sign > 0 ? frame.s_max : -frame.s_min;
+    const double delta = zone.indentation;
+    it.indentation = delta, it.extent = a;
+
+    // Grid along the free side with c itself as a node,
     const int n = options.n_check_points;
-    std::vector<double> zs;
+    std::vector<double> ts;
     for (int k = 0; k < n; ++k)
-      zs.push_back(a * k / (n - 1.0));
-    zs.push_back(c);
+      ts.push_back(a * k / (n - 1.0));
+    ts.push_back(c);
     // and points graded toward c beyond it, c (1 + 10^-k): a zone too short shows first
-    // there (its penetration grows like sqrt(z - c), the die's gap like z - c). Inside the
-    // zone the uniform grid is enough: the edge term's tension grows like (c - z)^(-1/2).
+    // there (its penetration grows like sqrt(t - c), the die's gap like t - c). A zone too
+    // long shows inside it, where the edge term's tension grows like (c - t)^(-1/2) against a
+    // smooth pressure that falls to zero: the uniform grid resolves that when its spacing is
+    // at most c / 1000 (the hollow cylinder, c about a / 2); a zone small against its part
+    // (a Hertz zone 1/23 of its face: c / 90) gets points c (1 - 10^-k) as well.
+    const bool grade_inside = a / (n - 1.0) > 1e-3 * c;
     for (int k = 2; k <= 6; ++k)
-      if (const double zk = c * (1.0 + std::pow(10.0, -k)); zk < a)
-        zs.push_back(zk);
-    std::sort(zs.begin(), zs.end());
-    zs.erase(std::unique(zs.begin(), zs.end()), zs.end());
-    const Eigen::Map<const Eigen::VectorXd> z(zs.data(), static_cast<Eigen::Index>(zs.size()));
-    const Eigen::VectorXd r = Eigen::VectorXd::Constant(z.size(), r2);
+      {
+        if (const double tk = c * (1.0 + std::pow(10.0, -k)); tk < a)
+          ts.push_back(tk);
+        if (grade_inside)
+          ts.push_back(c * (1.0 - std::pow(10.0, -k)));
+      }
+    std::sort(ts.begin(), ts.end());
+    ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
+    const auto n_t = static_cast<Eigen::Index>(ts.size());
+    const Eigen::Map<const Eigen::VectorXd> t(ts.data(), n_t);
+    Eigen::VectorXd r(n_t), z(n_t);
+    for (Eigen::Index k = 0; k < n_t; ++k)
+      {
+        const axisym::Point x = frame.point_at(sign * t[k]);
+        r[k] = x.r, z[k] = x.z;
+      }
     FieldValues f = model.evaluate(r, z);
-    // The edge term: the n = 1 amplitude of both spaces replaced by the interaction
-    // integral's. The discrete coefficients carry the unresolved edge field (their root lies
+    // The edge term: the n = 1 amplitude of both spaces replaced by the given K. The discrete
+    // coefficients carry the unresolved edge field (on the hollow cylinder their root lies
     // 0.4-0.8 % above the FEM's c at p = 8-16), and the traces' sign near the edge, which
     // decides conditions 1.2 and 1.3 there, is that amplitude's.
-    if (e && std::isfinite(it.edge_intensity) && e->singular_column() >= 0)
+    const EdgeEnrichment *e = model.n_zone_edges() > 0 ? &model.zone_edge_enrichment(0) : nullptr;
+    if (e && std::isfinite(k_edge) && e->singular_column() >= 0)
       {
         const Eigen::Index j = e->singular_column();
-        const double a_1 = it.edge_intensity / std::sqrt(2.0 * M_PI);
+        const double a_1 = k_edge / std::sqrt(2.0 * M_PI);
         const auto [q_s, q_u] = model.edge_column_coefficients(0, j);
-        // Only the points in the columns' support |z - c| < rho_0 (z is sorted).
+        // Only the points in the columns' support |t - c| < rho_0 (t is sorted).
         const double rho_0 = e->cutoff_radius();
-        const auto first = std::lower_bound(zs.begin(), zs.end(), c - rho_0) - zs.begin();
-        const auto last = std::upper_bound(zs.begin(), zs.end(), c + rho_0) - zs.begin();
+        const auto first = std::lower_bound(ts.begin(), ts.end(), c - rho_0) - ts.begin();
+        const auto last = std::upper_bound(ts.begin(), ts.end(), c + rho_0) - ts.begin();
         if (last > first)
           {
             const Eigen::Index n_near = last - first;
             const EdgeColumns cols = e->evaluate(r.segment(first, n_near), z.segment(first, n_near));
-            f.sigma.col(rr).segment(first, n_near) += (a_1 - q_s) * cols.stress[rr].col(j);
-            f.u.col(0).segment(first, n_near) += (a_1 - q_u) * cols.u[0].col(j);
+            for (int i = 0; i < 4; ++i)
+              f.sigma.col(i).segment(first, n_near) += (a_1 - q_s) * cols.stress[i].col(j);
+            for (int i = 0; i < 2; ++i)
+              f.u.col(i).segment(first, n_near) += (a_1 - q_u) * cols.u[i].col(j);
           }
       }
+    const double nr = frame.normal.r, nz = frame.normal.z;
+    auto pressure = [&](const Eigen::Index k) {
+      return -(f.sigma(k, rr) * nr * nr + 2.0 * f.sigma(k, rz) * nr * nz + f.sigma(k, zz) * nz * nz);
+    };
+    // How far the part enters the die: (delta - g0) + u . n (> 0: penetration).
+    auto penetration = [&](const Eigen::Index k) {
+      return (delta - profile.gap(t[k])) + (f.u(k, 0) * nr + f.u(k, 1) * nz);
+    };
 
-    // Condition 1.2 inside the zone: p = -sigma_rr >= 0.
+    // Condition 1.2 inside the zone: p = -sigma_nn >= 0.
     double p_peak = 0.0;
-    for (Eigen::Index k = 0; k < z.size() && z[k] <= c; ++k)
-      p_peak = std::max(p_peak, -f.sigma(k, rr));
+    for (Eigen::Index k = 0; k < n_t && t[k] <= c; ++k)
+      p_peak = std::max(p_peak, pressure(k));
     it.peak_pressure = p_peak;
     const double tol_p = options.violation_tolerance * std::max(p_peak, 1e-300);
     it.first_tension_z = c;
-    for (Eigen::Index k = 0; k < z.size() && z[k] <= c; ++k)
+    it.max_tension = 0.0, it.tension = false;
+    for (Eigen::Index k = 0; k < n_t && t[k] <= c; ++k)
       {
-        const double p = -f.sigma(k, rr);
+        const double p = pressure(k);
         it.max_tension = std::max(it.max_tension, -p);
         if (p < -tol_p && !it.tension)
           {
             it.tension = true;
             // Walk back to the last non-negative pressure: the zero where it turns tensile.
             Eigen::Index j = k;
-            while (j > 0 && -f.sigma(j - 1, rr) < 0.0)
+            while (j > 0 && pressure(j - 1) < 0.0)
               --j;
             it.first_tension_z = j == 0 ? 0.0
-                                        : zero_between(z[j - 1], -f.sigma(j - 1, rr), z[j],
-                                                       -f.sigma(j, rr));
+                                        : zero_between(t[j - 1], pressure(j - 1), t[j], pressure(j));
           }
       }
 
-    // Condition 1.3 outside the zone: u_r <= u_r*.
-    const double tol_u = options.penetration_tolerance * problem.die->indentation;
+    // Condition 1.3 outside the zone: no penetration.
+    const double tol_u = options.penetration_tolerance * delta;
     it.penetration_end_z = c;
+    it.max_penetration = 0.0, it.penetration = false;
     bool in_run = false, run_done = false;
-    for (Eigen::Index k = 0; k < z.size(); ++k)
+    for (Eigen::Index k = 0; k < n_t; ++k)
       {
-        if (z[k] <= c)
+        if (t[k] <= c)
           continue;
-        const double pen = f.u(k, 0) - die_u_r(*problem.die, problem.geometry, z[k]);
+        const double pen = penetration(k);
         it.max_penetration = std::max(it.max_penetration, pen);
         if (pen > tol_u)
           {
@@ -393,19 +439,30 @@ namespace rfm
           }
         if (in_run && !run_done && pen <= 0.0)
           {
-            const double prev = f.u(k - 1, 0) - die_u_r(*problem.die, problem.geometry, z[k - 1]);
-            it.penetration_end_z = zero_between(z[k - 1], prev, z[k], pen);
+            it.penetration_end_z = zero_between(t[k - 1], penetration(k - 1), t[k], pen);
             run_done = true;
           }
       }
     if (in_run && !run_done)
       it.penetration_end_z = a;
-    return it;
   }
 
   bool contact_methods::ZoneTrials::solve(const double c, ContactIterate &it, const char *phase)
   {
-    auto model = solve_cylinder_zone(problem, discretization, c);
+    std::unique_ptr<OutlineModel> model;
+    try
+      {
+        model = model_at(c);
+      }
+    catch (const InputError &)
+      {
+        throw; // bad input, not a numerical failure
+      }
+    catch (const std::runtime_error &e)
+      {
+        result.message = e.what();
+        return false;
+      }
     if (!model->ok())
       {
         std::ostringstream msg;
@@ -413,11 +470,13 @@ namespace rfm
         result.message = msg.str();
         return false;
       }
-    it = check_contact(problem, *model, options);
+    it = check(*model);
     it.phase = phase;
     result.history.push_back(it);
     result.model = std::move(model);
     result.final = it;
+    if (on_step)
+      on_step(it);
     return true;
   }
 
@@ -426,7 +485,11 @@ namespace rfm
   {
     ContactResult result;
     result.method = problem.contact.method;
-    contact_methods::ZoneTrials s{problem, discretization, options, result};
+    contact_methods::ZoneTrials s{
+      problem, discretization, options, result, problem.geometry.half_length(),
+      [&](const double c) { return solve_cylinder_zone(problem, discretization, c); },
+      [&](const OutlineModel &model) { return check_contact(problem, model, options); },
+      false, false, 0.05 * problem.geometry.half_length()};
     if (problem.contact.method == "fixed")
       {
         ContactIterate it;

@@ -107,8 +107,12 @@ namespace rfm
     /// terms the plane-strain identity leaves out): measured at p = 8 it is within 4 % of K
     /// at c = 0.45 a (rho_1 -> 0.03 rho_0: 0.6 %) and 1.6 % at 0.6 a.
     double edge_intensity_reciprocal_work = 0.0;
-    double first_tension_z = 0.0; ///< first zero of p where it turns tensile [m] (or c)
-    double penetration_end_z = 0.0; ///< end of the penetrating interval beyond c [m] (or c)
+    /// First zero of p where it turns tensile [m] (or c): on a die part other than the hollow
+    /// cylinder's, the distance from the die's centre along the part toward the free end.
+    double first_tension_z = 0.0;
+    double penetration_end_z = 0.0; ///< end of the penetrating interval beyond c [m] (or c), as above
+    double indentation = 0.0; ///< delta [m] of the solve (under force control: found from P)
+    double extent = 0.0;      ///< a [m]: the zone's end runs over (0, a] (the hollow cylinder: L/2)
     bool tension = false, penetration = false; ///< violations above the tolerances
     /// "fixed", "iteration", "refinement", "search", "bracket", "secant" or "final"
     std::string phase;
@@ -138,7 +142,7 @@ namespace rfm
 
   /// The check of one fixed c (used by solve_contact and the verification drivers): the
   /// functionals, P, the three edge intensities, and conditions 1.2 and 1.3 on a grid of
-  /// n_check_points along r = R2 with points graded toward c. The conditions are checked
+  /// n_check_points along r = R2 with points graded toward c (check_die_conditions). The conditions are checked
   /// on the discrete field with its edge term recovered: the n = 1 amplitude of both spaces
   /// replaced by the interaction integral's (the coefficients carry the unresolved edge
   /// field, and the traces' sign at the edge is that amplitude's). Measured at p = 8, nu =
@@ -146,6 +150,20 @@ namespace rfm
   /// both conditions hold at the default method's c (both were violated on the raw traces).
   ContactIterate check_contact(const axisym::Problem &problem, const OutlineModel &model,
                                const ContactOptions &options);
+  /// Conditions 1.2 and 1.3 for a zone with one free end on any straight part: the zone
+  /// model.zones()[0] of its part's die in `body` (the problem's, not the model's split body),
+  /// its centre on the axis or a symmetry edge, c its length. On n_check_points along the
+  /// free side of the part from the centre, with c and points c (1 + 10^-k), k = 2..6, among
+  /// them (and c (1 - 10^-k) when the grid is coarser than c / 1000), the pressure p = -sigma_nn must be >= 0 inside the zone (1.2: a tension above
+  /// violation_tolerance p_peak counts) and the part must not enter the die beyond it:
+  /// (delta - g0(s)) + u . n <= 0, n the outward normal (1.3: above penetration_tolerance
+  /// delta). The traces carry the edge term recovered from k_edge (K [Pa m^1/2]; NaN: as
+  /// solved): the n = 1 amplitude of both spaces replaced by K / sqrt(2 pi). Fills the
+  /// condition fields of `it` (peak_pressure to penetration_end_z, indentation, extent);
+  /// half_width, P, K and the functionals are the caller's. Precondition: model.ok(), one die
+  /// zone with one free end.
+  void check_die_conditions(const OutlineModel &model, const axisym::Body &body, double k_edge,
+                            const ContactOptions &options, ContactIterate &it);
   /// The hollow cylinder's bilateral solve at c: the outline model of the problem's body with
   /// the zone [0, c] on the part `outer` (the legacy die's part).
   std::unique_ptr<OutlineModel> solve_cylinder_zone(const axisym::Problem &problem,

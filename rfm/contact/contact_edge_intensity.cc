@@ -14,10 +14,9 @@ namespace rfm::contact_methods
   void edge_intensity(ZoneTrials &s)
   {
     const DiscretizationOptions &discretization = s.discretization;
-    const axisym::Problem &problem = s.problem;
     const ContactOptions &options = s.options;
     ContactResult &result = s.result;
-    const double a = problem.geometry.half_length();
+    const double a = s.extent;
     ContactIterate it;
     if (discretization.edge_modes < 1)
       {

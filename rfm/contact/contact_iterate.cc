@@ -1,4 +1,4 @@
-// contact.method "iterate" on the hollow cylinder (contact.h): the paper's successive iterations.
+// contact.method "iterate" (contact.h): the paper's successive iterations.
 #include "rfm/contact/contact_methods.h"
 
 #include <algorithm>
@@ -12,10 +12,9 @@ namespace rfm::contact_methods
   // known to be too short (penetration), hi one known too long (tension).
   void iterate(ZoneTrials &s)
   {
-    const axisym::Problem &problem = s.problem;
     const ContactOptions &options = s.options;
     ContactResult &result = s.result;
-    const double a = problem.geometry.half_length();
+    const double a = s.extent;
     ContactIterate it;
     double lo = 0.0, hi = a, c = a;
     bool holds = false, last_too_long = false;
@@ -45,7 +44,7 @@ namespace rfm::contact_methods
           hi = std::min(hi, c), proposal = it.first_tension_z;
         else
           lo = std::max(lo, c), proposal = it.penetration_end_z;
-        if (hi - lo <= options.tolerance * a)
+        if (hi - lo <= options.tolerance * s.length_scale(hi))
           break; // bracketed without a c where both hold: accept the bracket below
         // Keep the fixed-point step if it stays well inside the bracket and the zone
         // has not erred on the same side three times running: near c the fixed point
@@ -58,7 +57,7 @@ namespace rfm::contact_methods
               ? proposal
               : 0.5 * (lo + hi);
       }
-    if (!holds && hi - lo > options.tolerance * a)
+    if (!holds && hi - lo > options.tolerance * s.length_scale(hi))
       {
         result.message = "contact iteration did not converge in " +
                          std::to_string(options.max_iterations) + " solves";
@@ -73,7 +72,7 @@ namespace rfm::contact_methods
     if (holds)
       {
         double bad = hi, good = c; // upper end: good holds 1.2, bad is tensile
-        while (bad - good > options.tolerance * a && n_solves++ < options.max_iterations)
+        while (bad - good > options.tolerance * s.length_scale(good) && n_solves++ < options.max_iterations)
           {
             const double mid = 0.5 * (good + bad);
             if (!s.solve(mid, it, "refinement"))
@@ -82,7 +81,7 @@ namespace rfm::contact_methods
           }
         c_hi = good;
         bad = lo, good = c; // lower end: good holds 1.3, bad penetrates
-        while (good - bad > options.tolerance * a && n_solves++ < options.max_iterations)
+        while (good - bad > options.tolerance * s.length_scale(good) && n_solves++ < options.max_iterations)
           {
             const double mid = 0.5 * (good + bad);
             if (!s.solve(mid, it, "refinement"))

@@ -31,9 +31,11 @@
 // so that the space does not change with the zone (K(c) stays smooth).
 #pragma once
 
+#include "rfm/contact/contact.h"
 #include "rfm/outline_model.h"
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -80,6 +82,21 @@ namespace rfm
   OutlineContactResult solve_outline_contact(const axisym::Problem &problem,
                                              const DiscretizationOptions &discretization,
                                              const OutlineContactOptions &options = {});
+
+  /// contact.method "iterate" or "max-force" (contact.h) for the problem's die on an outline
+  /// part whose zone has one free end (its centre on the axis or a symmetry edge): the same
+  /// methods as the hollow cylinder's, on trial zones of length c from the centre, each
+  /// solved by solve_outline_zone (its own local boxes; under force control delta from the
+  /// linearity) and checked by check_die_conditions with K from the interaction integral.
+  /// The tolerance is options.tolerance times c (the hollow cylinder: times a); max-force
+  /// searches log c in [1e-3 a, a], a the part's length from the centre, and under force
+  /// control minimizes delta(c). ContactIterate::first_tension_z and penetration_end_z are
+  /// distances from the centre. Throws axisym::InputError for a zone with two free ends or a
+  /// flat punch with a sharp edge (its zone is its face). Precondition: one die part.
+  ContactResult solve_outline_contact_by_conditions(const axisym::Problem &problem,
+                                                    const DiscretizationOptions &discretization,
+                                                    const ContactOptions &options = {},
+                                                    const std::function<void(const ContactIterate &)> &on_step = {});
 
   /// The bilateral solve of the problem's die on the zone [s_lo, s_hi] along its part, by
   /// indentation or by force (the linearity above); the local boxes of that zone. The result

@@ -220,3 +220,99 @@ namespace rfm
     EXPECT_LT(error, 0.5 * trace_error);
   }
 } // namespace rfm
+
+namespace rfm
+{
+  // contact.method iterate and max-force on an outline part run the hollow cylinder's methods
+  // (contact_methods.h) on the outline's trial zones: on the paper's die written as an
+  // outline (the same section and die as the legacy form) they find the legacy form's zone
+  // and force. The searches' tolerances differ by design (5e-4 c here, 5e-4 a = 9.6e-4 c
+  // there; max-force here in log c). Measured at p = 8: iterate 7e-11 c apart, max-force
+  // 5.1e-5 c; P 2e-12 and 2e-10; c against the FEM's -3.3e-6 and +1.7e-4.
+  TEST(OutlineContactByConditions, FindTheHollowCylindersZone)
+  {
+    keep_freed_matrices_in_heap(); // as rfm_solve does
+    for (const std::string method : {"iterate", "max-force"})
+      {
+        auto j = paper_die_outline();
+        j["contact"]["method"] = method;
+        const axisym::Problem outline = axisym::parse_problem(j);
+        const ContactResult r = solve_outline_contact_by_conditions(outline, outline.rfm);
+        ASSERT_TRUE(r.success) << method << ": " << r.message;
+        const nlohmann::json legacy_j = {
+          {"geometry", {{"inner_radius", 0.1}, {"outer_radius", 0.2}, {"length", 0.4}}},
+          {"material", {{"youngs_modulus", 2.1e11}, {"poisson_ratio", 0.3}}},
+          {"die", {{"indentation", 1e-6}}},
+          {"contact", {{"method", method}}},
+          {"rfm", {{"degree", 8}}}};
+        const axisym::Problem legacy = axisym::parse_problem(legacy_j);
+        const ContactResult l = solve_contact(legacy, legacy.rfm, ContactOptions{});
+        ASSERT_TRUE(l.success) << method << ": " << l.message;
+        const double c = r.final.half_width;
+        EXPECT_NEAR(c, l.final.half_width, 1e-3 * c) << method;
+        // The legacy body is mirrored about the mid-plane (both halves' force).
+        EXPECT_NEAR(2 * r.final.force, l.final.force, 1e-5 * l.final.force) << method;
+        // The finest FEM's c = 0.1038561 m (Q2, L = 5).
+        EXPECT_NEAR(c, 0.1038561, 1e-3 * 0.1038561) << method;
+        EXPECT_EQ(r.final.extent, 0.2);
+        EXPECT_EQ(r.final.indentation, 1e-6);
+      }
+  }
+
+  // iterate on the end face of a solid cylinder, whose zone [-c, 0] runs against the part's
+  // direction: Hertz's paraboloid R = 0.1 m at the finest FEM's indentation for 2 kN
+  // (7.3681e-6 m). The zone against the FEM's c = 0.866165 mm within 0.1 % (measured
+  // -0.010 %, bracket 5.4e-4 c wide), P against the FEM's 2 kN within 0.3 % (measured
+  // -0.11 %). Before the edge modes took free-face points from the body's side this face
+  // put them across the branch cut: a too-short zone opened a gap instead of penetrating,
+  // and iterate stopped at 0.724 mm.
+  TEST(OutlineContactByConditions, IterateFindsTheHertzZoneOnAnEndFace)
+  {
+#if defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "22 solves with local boxes: over 60 s under the sanitizers; the Release "
+                    "run checks it";
+#endif
+    keep_freed_matrices_in_heap();
+    auto j = axisym::testing::punched_cylinder();
+    j["boundary"]["top"]["die"].erase("force");
+    j["boundary"]["top"]["die"]["indentation"] = 7.3681e-6;
+    j["contact"]["method"] = "iterate";
+    j["rfm"]["degree"] = 8;
+    const axisym::Problem p = axisym::parse_problem(j);
+    const ContactResult r = solve_outline_contact_by_conditions(p, p.rfm);
+    ASSERT_TRUE(r.success) << r.message;
+    const double c = r.final.half_width;
+    EXPECT_NEAR(c, 0.866165e-3, 1e-3 * 0.866165e-3);
+    ASSERT_TRUE(r.half_width_range.has_value());
+    EXPECT_LE(r.half_width_range->first, c);
+    EXPECT_GE(r.half_width_range->second, c);
+    EXPECT_LT(r.half_width_range->second - r.half_width_range->first, 2e-3 * c);
+    EXPECT_NEAR(r.final.force, 2000.0, 3e-3 * 2000.0);
+    ASSERT_TRUE(r.model);
+    EXPECT_EQ(r.model->zones().at(0).s_hi, 0.0);
+  }
+
+  // What the conditions' methods do not search: a zone with two free ends, a flat punch's
+  // sharp edge (its zone is its face). Bad input, named.
+  TEST(OutlineContactByConditions, RefuseTwoFreeEndsAndASharpEdge)
+  {
+    auto two = paper_die_outline();
+    two["boundary"]["outer"]["die"]["center"] = {0.2, 0.1};
+    two["contact"]["method"] = "iterate";
+    const axisym::Problem p2 = axisym::parse_problem(two);
+    try
+      {
+        solve_outline_contact_by_conditions(p2, p2.rfm);
+        ADD_FAILURE() << "two free ends accepted";
+      }
+    catch (const axisym::InputError &e)
+      {
+        EXPECT_NE(std::string(e.what()).find("one free end"), std::string::npos) << e.what();
+      }
+    auto flat = axisym::testing::punched_cylinder();
+    flat["boundary"]["top"]["die"] = {{"indentation", 1e-6}, {"profile", {{"shape", "flat"}, {"radius", 0.002}}}};
+    flat["contact"]["method"] = "max-force";
+    const axisym::Problem pf = axisym::parse_problem(flat);
+    EXPECT_THROW(solve_outline_contact_by_conditions(pf, pf.rfm), axisym::InputError);
+  }
+} // namespace rfm

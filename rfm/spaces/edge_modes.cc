@@ -20,7 +20,11 @@ namespace rfm
     const double dr = r - frame.r, dz = z - frame.z;
     const double x = dr * frame.t[0] + dz * frame.t[1], y = dr * frame.n[0] + dz * frame.n[1];
     const double rho = std::hypot(x, y);
-    const double theta = std::atan2(y, x);
+    // The body is the half plane y >= 0 and its free face theta = pi. On the free face y is a
+    // zero whose sign comes from the frame's components (n = (-0, -1) gives y = -0): atan2
+    // would put such a point at theta = -pi, the other side of the branch cut, where u_y has
+    // the opposite sign. A point on the face is taken from the body's side.
+    const double theta = std::atan2(y == 0.0 ? 0.0 : y, x);
     const double h = 0.5 * n, s = (n % 2 == 0) ? 1.0 : -1.0;
 
     EdgeModeValue v;

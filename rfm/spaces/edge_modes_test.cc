@@ -135,6 +135,36 @@ namespace rfm
     EXPECT_EQ(a.strain, b.strain);
   }
 
+  // On the free face (theta = pi) each mode takes the limit from inside the body, whatever
+  // the sign of the zeros in the frame: the end face as the outline builds it has the normal
+  // n = (-0, -1), which put face points at theta = -pi (across the branch cut) and flipped
+  // u_y there (found when the check of condition 1.3 saw a too-short Hertz zone open a gap).
+  // The n = 1 mode with a positive amplitude (a tensile edge) pulls the free face into the
+  // body: u . n = (kappa + 1) rho^(1/2) / (2 mu).
+  TEST(EdgeModes, FreeFaceIsTheLimitFromTheBody)
+  {
+    const EdgeFrame end_face{0.004, 0.02, {{-1.0, 0.0}}, {{-0.0, -1.0}}};
+    const EdgeFrame end_face_positive_zero{0.004, 0.02, {{-1.0, 0.0}}, {{0.0, -1.0}}};
+    const EdgeFrame bore{0.1, 0.05, {{0.0, -1.0}}, {{1.0, -0.0}}};
+    const double nu = 0.3, mu = 2.1e11 / (2 * (1 + nu)), kappa = 3 - 4 * nu;
+    for (const EdgeFrame &f : {end_face, end_face_positive_zero, bore, EdgeFrame::outer_side(r_e, z_e)})
+      for (const int n : {1, 3})
+        for (const double rho : {1e-5, 2e-3})
+          {
+            const auto face = f.point(-rho, 0.0);
+            const double eps = 1e-9;
+            const auto inside = f.point(-rho * std::cos(eps), rho * std::sin(eps));
+            const EdgeModeValue v = edge_mode(n, face[0], face[1], f, steel);
+            const EdgeModeValue w = edge_mode(n, inside[0], inside[1], f, steel);
+            const double u_scale = std::pow(rho, 0.5 * n) / mu;
+            EXPECT_NEAR(v.u_r, w.u_r, 1e-7 * u_scale) << n << " " << rho;
+            EXPECT_NEAR(v.u_z, w.u_z, 1e-7 * u_scale) << n << " " << rho;
+            if (n == 1)
+              EXPECT_NEAR(v.u_r * f.n[0] + v.u_z * f.n[1], (kappa + 1) * std::sqrt(rho) / (2 * mu),
+                          1e-12 * u_scale);
+          }
+  }
+
   // A support clipped at a traction-free end: the stress columns (every mode and multiplier)
   // carry no traction on the end and stay free on the free face; at the edge they are the
   // unclipped columns.
