@@ -516,19 +516,23 @@ namespace axisym
         body.conditions[part].die = parse_die(top.at("boundary").at(part).at("die"),
                                               "boundary." + part + ".die", body, part);
 
-      // The rigid translation in z must be fixed (a symmetry plane z = const or a
-      // displacement), or neither solver has a unique solution.
+      // The rigid translation in z must be fixed (a symmetry plane z = const, a
+      // displacement, or a die given by its indentation on a part that is not vertical: it
+      // prescribes the normal displacement on its zone), or neither solver has a unique
+      // solution.
       bool fixes_u_z = false;
       for (const OutlineEdge &e : outline.edges())
         {
           const PartCondition &c = body.conditions.at(e.part);
+          const bool not_vertical = std::abs(e.outward_normal_at(0.5).z) > 1e-12;
           fixes_u_z |= c.kind == PartCondition::Kind::displacement ||
-                       (c.kind == PartCondition::Kind::symmetry &&
-                        std::abs(e.outward_normal_at(0.5).z) > 1e-12);
+                       (c.kind == PartCondition::Kind::symmetry && not_vertical) ||
+                       (c.kind == PartCondition::Kind::die && c.die.indentation && not_vertical);
         }
       if (!fixes_u_z)
         throw InputError("problem file: boundary: no part fixes the rigid translation in z "
-                         "(needs a displacement part or a symmetry part that is not vertical)");
+                         "(needs a displacement part, a symmetry part that is not vertical, or a "
+                         "die by indentation on a part that is not vertical)");
       if (top.has("contact"))
         {
           if (body.die_parts().empty())

@@ -308,6 +308,22 @@ namespace axisym
   }
 
   // The bad-input list of DESIGN.md 7.1 for dies: each names the field.
+  // A die by indentation on an end face holds the body in z (it prescribes u_z on its zone):
+  // a cylinder between two dies needs no symmetry plane. Under force alone it would be free
+  // to translate.
+  TEST(ProblemDie, AnIndentationHoldsTheBody)
+  {
+    auto j = testing::cylinder_between_two_dies();
+    const Problem p = parse_problem(j);
+    EXPECT_EQ(p.body->die_parts(), (std::vector<std::string>{"bottom", "top"}));
+    j["boundary"]["top"]["die"].erase("indentation");
+    j["boundary"]["top"]["die"]["force"] = 1e5;
+    EXPECT_NO_THROW(parse_problem(j));
+    j["boundary"]["bottom"]["die"].erase("indentation");
+    j["boundary"]["bottom"]["die"]["force"] = 1e5;
+    expect_error(j, {"boundary", "translation in z"});
+  }
+
   TEST(ProblemDie, RejectsBadDiesNamingTheField)
   {
     auto j = testing::punched_cylinder();

@@ -82,6 +82,27 @@ namespace axisym::testing
       "rfm": {"degree": 8}})");
   }
 
+  /// A solid steel cylinder (radius 20 mm, length 40 mm, no symmetry plane) pressed at both
+  /// end faces by paraboloids R = 0.1 m, each by 0.25 mm: zones of about 5.3 mm (fem_solve at
+  /// its defaults, Q2: 5.28441 mm and P = 456347 N each; its half model with a symmetry plane
+  /// 5.28509 mm). verification/problems/cylinder_between_two_dies.json.
+  inline nlohmann::json cylinder_between_two_dies()
+  {
+    return nlohmann::json::parse(R"({
+      "geometry": {"outline": [
+        {"start": [0.0, -0.02]},
+        {"line_to": [0.02, -0.02], "part": "bottom"},
+        {"line_to": [0.02, 0.02], "part": "side"},
+        {"line_to": [0.0, 0.02], "part": "top"},
+        {"line_to": [0.0, -0.02], "part": "axis"}]},
+      "boundary": {"top": {"die": {"indentation": 2.5e-4,
+                                   "profile": {"shape": "paraboloid", "radius": 0.1}}},
+                   "bottom": {"die": {"indentation": 2.5e-4,
+                                      "profile": {"shape": "paraboloid", "radius": 0.1}}}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3},
+      "rfm": {"degree": 8}})");
+  }
+
   struct CommandOutcome
   {
     int status;      ///< exit status (-1 if the command did not exit normally)

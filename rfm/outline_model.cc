@@ -125,10 +125,12 @@ namespace rfm
               sides.push_back(b.half_size);
           std::sort(sides.begin(), sides.end());
           // From the zone's end along the part and from the part into the body, to the second
-          // box that contains the zone (the first when only one does).
-          if (!sides.empty())
+          // box that contains the zone (the first when only one does). A box whose side is
+          // the zone's end itself leaves no room to fade (the first trial of a search whose
+          // boxes were built about half of it, when no larger box fits the section): no fade.
+          const double end = sides.empty() ? 0.0 : sides[std::min<std::size_t>(1, sides.size() - 1)];
+          if (end > c)
             {
-              const double end = sides[std::min<std::size_t>(1, sides.size() - 1)];
               zone.fade_start = c, zone.fade_end = end;
               zone.fade_normal_start = 0.0, zone.fade_normal_end = end;
             }

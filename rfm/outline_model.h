@@ -154,6 +154,8 @@ namespace rfm
     /// integral (contact.h) on the half disc of radius 0.9 times the end's room. K < 0: the
     /// zone is too short there (compressive singular pressure), K > 0: too long.
     double edge_intensity(std::size_t i) const;
+    /// The die part whose zone ends at zone end i.
+    const std::string &zone_edge_part(std::size_t i) const { return edges_.at(i).zone.part; }
     /// The contact zones of the solve, as given.
     const std::vector<DieZone> &zones() const { return zones_; }
     /// The enrichment at zone end i (its frame, cutoff and columns).

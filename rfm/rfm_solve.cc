@@ -23,6 +23,7 @@
 #include <fmt/core.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <iostream>
 #include <unistd.h>
 
@@ -96,26 +97,30 @@ namespace
       }
     return out;
   }
-  // A die on an outline part (DESIGN.md 7.1) as the RFM solves it so far: the bilateral
-  // problem on a given zone (contact.method "fixed", contact.half_width c: the zone is
-  // [0, c] from a centre at the part's end, [-c, c] otherwise, within the part; default the
-  // whole part; the searches start from it). Throws InputError for what the outline RFM cannot
-  // do yet.
+  // The dies on outline parts (DESIGN.md 7.1), one zone per die part in Body::die_parts()
+  // order: the bilateral problem's zone (contact.method "fixed", contact.half_width c for every
+  // die: the zone is [0, c] from a centre at the part's end, [-c, c] otherwise, within the
+  // part; default the whole part; the searches start from their own estimates). Throws
+  // InputError for what the outline RFM cannot do yet.
   std::vector<rfm::DieZone> die_zones(const axisym::Problem &problem)
   {
     const std::vector<std::string> parts = problem.body->die_parts();
-    if (parts.empty())
-      return {};
-    if (parts.size() > 1)
-      throw axisym::InputError("boundary." + parts[1] +
-                               ".die: the RFM solves one die on an outline section so far "
-                               "(fem_solve solves several)");
-    const axisym::DieFrame f = axisym::die_frame(*problem.body, parts[0]);
-    const axisym::DieCondition &die = problem.body->conditions.at(parts[0]).die;
-    const double c = problem.contact.half_width.value_or(std::max(-f.s_min, f.s_max));
-    // Under force control the zone's delta is found by the solve (outline_contact.h).
-    return {rfm::DieZone{parts[0], std::max(f.s_min, -c), std::min(f.s_max, c),
-                         die.indentation.value_or(0.0)}};
+    if (parts.size() > 1 && (problem.contact.method == "iterate" || problem.contact.method == "max-force"))
+      throw axisym::InputError(
+        "contact.method = \"" + problem.contact.method + "\": it searches one die's zone, and the "
+        "problem has " + std::to_string(parts.size()) + " (boundary." + parts[0] + ".die, boundary." +
+        parts[1] + ".die, ...); use \"edge-intensity\" (the default) or \"fixed\"");
+    std::vector<rfm::DieZone> out;
+    for (const std::string &part : parts)
+      {
+        const axisym::DieFrame f = axisym::die_frame(*problem.body, part);
+        const axisym::DieCondition &die = problem.body->conditions.at(part).die;
+        const double c = problem.contact.half_width.value_or(std::max(-f.s_min, f.s_max));
+        // Under force control the zone's delta is found by the solve (outline_contact.h).
+        out.push_back(rfm::DieZone{part, std::max(f.s_min, -c), std::min(f.s_max, c),
+                                   die.indentation.value_or(0.0)});
+      }
+    return out;
   }
 
   bool zone_has_free_end(const axisym::Problem &problem, const rfm::DieZone &zone)
@@ -125,14 +130,18 @@ namespace
     return zone.s_lo > f.s_min + tol || zone.s_hi < f.s_max - tol;
   }
 
-  // K at each free end of the zone (null without one): one number, or [low end, high end].
-  nlohmann::json edge_intensity_json(const rfm::OutlineModel &m)
+  // K at each free end of a die's zone (null without one): one number, or [low end, high end].
+  nlohmann::json edge_intensity_json(const rfm::OutlineModel &m, const std::string &part)
   {
-    if (m.n_zone_edges() == 0)
+    std::vector<double> k;
+    for (std::size_t i = 0; i < m.n_zone_edges(); ++i)
+      if (m.zone_edge_part(i) == part)
+        k.push_back(m.edge_intensity(i));
+    if (k.empty())
       return nullptr;
-    if (m.n_zone_edges() == 1)
-      return m.edge_intensity(0);
-    return {m.edge_intensity(0), m.edge_intensity(1)};
+    if (k.size() == 1)
+      return k[0];
+    return k;
   }
 
   // The die's record (DESIGN.md 7: `contact` and `dies`), for a bilateral zone: c, the zone
@@ -152,7 +161,7 @@ namespace
                         {"indentation", zone.indentation},
                         {"force", force.domain},
                         {"force_trace", force.trace},
-                        {"edge_intensity", edge_intensity_json(m)},
+                        {"edge_intensity", edge_intensity_json(m, zone.part)},
                         {"iterations",
                          {{{"half_width", half_width},
                            {"force", force.domain},
@@ -201,7 +210,40 @@ namespace
     std::vector<rfm::DieZone> zones = die_zones(problem);
     std::optional<rfm::OutlineContactResult> search;
     std::optional<rfm::ContactResult> checked;
-    if (!zones.empty() && problem.contact.method == "edge-intensity")
+    std::optional<rfm::OutlineDiesResult> several;
+    if (zones.size() > 1)
+      {
+        // Several dies: all zones together (outline_contact.h).
+        const bool search_zones = problem.contact.method == "edge-intensity";
+        fmt::print(stderr, "rfm_solve: outline section, degree p = {}, {} dies ({}): {}\n",
+                   problem.rfm.degree, zones.size(), fmt::join(problem.body->die_parts(), ", "),
+                   search_zones ? "every free end where its edge intensity K vanishes"
+                                : "bilateral zones as given");
+        several = search_zones ? rfm::solve_outline_dies(problem, problem.rfm)
+                               : rfm::solve_outline_dies_on_zones(problem, problem.rfm, zones);
+        for (const rfm::OutlineDiesStep &step : several->history)
+          {
+            std::vector<std::string> z;
+            for (std::size_t d = 0; d < step.zones.size(); ++d)
+              z.push_back(fmt::format("{} [{:.6g}, {:.6g}] m P = {:.6g} N delta = {:.6g} m",
+                                      step.zones[d].part, step.zones[d].s_lo, step.zones[d].s_hi,
+                                      step.forces[d], step.zones[d].indentation));
+            fmt::print(stderr, "rfm_solve:   {}; K = {:.5g} Pa m^1/2 ({})\n", fmt::join(z, "; "),
+                       fmt::join(step.edge_intensities, ", "), step.phase);
+          }
+        if (!several->success || !several->model)
+          {
+            nlohmann::json failed = {{"solver", "rfm"}, {"problem", problem.source},
+                                     {"diagnostics", {{"status", "failed"}, {"message", several->message}}}};
+            if (!output_path.empty())
+              axisym::write_json_atomically(output_path, failed);
+            fmt::print(stderr, "rfm_solve: numerical failure: {}\n", several->message);
+            return 3;
+          }
+        zones = several->zones;
+        model = std::move(several->model);
+      }
+    else if (!zones.empty() && problem.contact.method == "edge-intensity")
       {
         fmt::print(stderr, "rfm_solve: outline section, degree p = {}, die on {}: the zone's end "
                            "where the edge intensity K vanishes\n",
@@ -370,7 +412,35 @@ namespace
               if (m.contains(key))
                 result["contact"][key] = m[key];
           }
-        result["dies"] = nlohmann::json::array({result["contact"]});
+        if (several)
+          {
+            // Every die in the same form; `contact` is the first (DESIGN.md 7).
+            result["contact"]["method"] = problem.contact.method;
+            result["contact"]["message"] = several->message;
+            result["dies"] = nlohmann::json::array({result["contact"]});
+            for (std::size_t d = 1; d < zones.size(); ++d)
+              {
+                nlohmann::json die = outline_die_to_json(problem, *model, zones[d], phi);
+                die["method"] = problem.contact.method;
+                result["dies"].push_back(die);
+              }
+            nlohmann::json history = nlohmann::json::array();
+            for (const rfm::OutlineDiesStep &step : several->history)
+              {
+                nlohmann::json z = nlohmann::json::array();
+                for (std::size_t d = 0; d < step.zones.size(); ++d)
+                  z.push_back({{"part", step.zones[d].part},
+                               {"zone", {step.zones[d].s_lo, step.zones[d].s_hi}},
+                               {"indentation", step.zones[d].indentation},
+                               {"force", step.forces[d]}});
+                history.push_back({{"dies", z}, {"edge_intensities", step.edge_intensities},
+                                   {"phase", step.phase}});
+              }
+            result["contact"]["iterations"] = history;
+            result["dies"][0] = result["contact"];
+          }
+        else
+          result["dies"] = nlohmann::json::array({result["contact"]});
         // An indicator far above the die problems' usual 1e-3: the zone is small against the
         // section and the degree does not resolve it (measured: the rounded flat punch, a zone
         // 1/27 of its face, 14 at p = 8 with P 73 % off the FEM's).
@@ -387,20 +457,23 @@ namespace
           }
         // A zone that ends inside its part without the edge modes (rfm.edge_modes = 0): the
         // edge's singular field is missing, so P(c) is in doubt.
-        if (model->n_zone_edges() == 0 && zone_has_free_end(problem, zones[0]))
+        const auto free_zone = std::find_if(zones.begin(), zones.end(), [&](const rfm::DieZone &z) {
+          return zone_has_free_end(problem, z);
+        });
+        if (model->n_zone_edges() == 0 && free_zone != zones.end())
           {
             result["diagnostics"]["status"] = "warning";
             result["diagnostics"]["message"] =
-              "the zone ends inside part " + zones[0].part +
+              "the zone ends inside part " + free_zone->part +
               " and rfm.edge_modes = 0: the edge's singular field is missing and P(c) is in "
               "doubt (the paper's die at c = 0.45a-0.6a: 0.2-0.7 % off at p = 8-16)";
             fmt::print(stderr, "rfm_solve: warning: {}\n",
                        result["diagnostics"]["message"].get<std::string>());
           }
-        fmt::print(stderr, "rfm_solve: die on {}: c = {:.6g} m, P = {:.6g} N (trace {:.6g} N)\n",
-                   zones[0].part, result["contact"]["half_width"].get<double>(),
-                   result["contact"]["force"].get<double>(),
-                   result["contact"]["force_trace"].get<double>());
+        for (const nlohmann::json &die : result["dies"])
+          fmt::print(stderr, "rfm_solve: die on {}: c = {:.6g} m, P = {:.6g} N (trace {:.6g} N)\n",
+                     die["part"].get<std::string>(), die["half_width"].get<double>(),
+                     die["force"].get<double>(), die["force_trace"].get<double>());
       }
     if (!output_path.empty())
       axisym::write_json_atomically(output_path, result);

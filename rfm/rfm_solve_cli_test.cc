@@ -331,6 +331,45 @@ namespace
     EXPECT_FALSE(fs::exists(out));
   }
 
+  // Several dies: every die in `dies` in the same form, `contact` the first; zones as given
+  // with contact.method fixed (no local boxes: quick); iterate searches one die: bad input.
+  TEST(RfmSolveCli, SeveralDiesAreAllInTheResult)
+  {
+    const fs::path dir = fs::temp_directory_path() / "rfm_cli_dies";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    nlohmann::json j = axisym::testing::cylinder_between_two_dies();
+    j["rfm"]["local_levels"] = 0;
+    j["contact"] = {{"method", "fixed"}, {"half_width", 0.005}};
+    const fs::path in = dir / "problem.json", out = dir / "result.json";
+    std::ofstream(in) << j.dump();
+    Outcome o = run(in.string() + " --output " + out.string());
+    ASSERT_EQ(o.status, 0) << o.err;
+    const nlohmann::json r = nlohmann::json::parse(std::ifstream(out));
+    ASSERT_EQ(r.at("dies").size(), 2u);
+    EXPECT_EQ(r.at("dies")[0].at("part"), "bottom");
+    EXPECT_EQ(r.at("dies")[1].at("part"), "top");
+    EXPECT_EQ(r.at("contact"), r.at("dies")[0]);
+    for (const nlohmann::json &die : r.at("dies"))
+      {
+        EXPECT_EQ(die.at("half_width"), 0.005);
+        EXPECT_EQ(die.at("pressure").size(), 101u);
+        EXPECT_TRUE(die.at("edge_intensity").is_number()); // one free end each
+      }
+    // Mirror images: the same force and K.
+    EXPECT_NEAR(r.at("dies")[1].at("force").get<double>(), r.at("dies")[0].at("force").get<double>(),
+                1e-9 * r.at("dies")[0].at("force").get<double>());
+    EXPECT_NE(o.err.find("die on top"), std::string::npos) << o.err;
+
+    j["contact"] = {{"method", "iterate"}};
+    std::ofstream(in) << j.dump();
+    fs::remove(out);
+    o = run(in.string() + " --output " + out.string());
+    EXPECT_EQ(o.status, 2) << o.err;
+    EXPECT_NE(o.err.find("contact.method"), std::string::npos) << o.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+
   // --vtu DIR creates DIR (and its parents) and writes the fields with the FEM's names and
   // the displacement as one vector; a DIR that is a file is bad input.
   TEST(RfmSolveCli, VtuCreatesTheFolderAndWritesTheFields)

@@ -347,6 +347,411 @@ namespace rfm
     return result;
   }
 
+  namespace
+  {
+    /// A die part of a problem with several: its frame and what is free about its zone.
+    struct DieInfo
+    {
+      std::string part;
+      axisym::DieFrame frame;
+      const axisym::DieCondition *die = nullptr;
+      bool up = false, down = false; ///< the part runs on beyond the centre upward / downward
+      double extent = 0.0;           ///< the part's length from the centre on the free side(s)
+      bool flat = false;             ///< a flat punch with a sharp edge: its face is the zone
+
+      /// The zone of extent c from the centre (one free end) or [-c, c] (two).
+      std::array<double, 2> zone_of(const double c) const
+      {
+        return up && down ? std::array<double, 2>{-c, c}
+                          : (up ? std::array<double, 2>{0.0, c} : std::array<double, 2>{-c, 0.0});
+      }
+    };
+
+    std::vector<DieInfo> die_infos(const axisym::Problem &problem)
+    {
+      std::vector<DieInfo> out;
+      const double tol = 1e-9 * problem.body->outline.size();
+      for (const std::string &part : problem.body->die_parts())
+        {
+          DieInfo d;
+          d.part = part;
+          d.frame = axisym::die_frame(*problem.body, part);
+          d.die = &problem.body->conditions.at(part).die;
+          d.up = d.frame.s_max > tol, d.down = d.frame.s_min < -tol;
+          d.extent = d.up && d.down ? std::min(d.frame.s_max, -d.frame.s_min)
+                                    : (d.up ? d.frame.s_max : -d.frame.s_min);
+          d.flat = d.die->profile.shape == axisym::DieProfile::Shape::flat;
+          out.push_back(d);
+        }
+      return out;
+    }
+
+    /// The bilateral solves of several dies: zones in, P per die, K at every free end and the
+    /// deltas of the force-controlled dies out (solve_outline_dies_on_zones).
+    class DiesSolver
+    {
+    public:
+      DiesSolver(const axisym::Problem &problem, const DiscretizationOptions &discretization,
+                 std::vector<DieInfo> dies, OutlineDiesResult &result)
+        : problem_(problem), options_(discretization), dies_(std::move(dies)), result_(result)
+      {}
+
+      void fix_local_basis(const std::vector<std::array<double, 2>> &estimates)
+      {
+        local_ = die_local_basis(problem_, zones(estimates, std::vector<double>(dies_.size(), 0.0)),
+                                 options_);
+      }
+      bool has_local_boxes() const { return local_ && !local_->empty(); }
+
+      OutlineDiesStep solve(const std::vector<std::array<double, 2>> &z, const std::string &phase)
+      {
+        const std::size_t n = dies_.size();
+        std::vector<double> delta(n, 0.0);
+        std::vector<std::size_t> by_force;
+        for (std::size_t d = 0; d < n; ++d)
+          if (dies_[d].die->indentation)
+            delta[d] = *dies_[d].die->indentation;
+          else
+            by_force.push_back(d);
+        OutlineDiesStep step;
+        step.phase = phase;
+        if (by_force.empty())
+          {
+            auto model = make_model(z, delta);
+            record(*model, step);
+            result_.model = std::move(model);
+          }
+        else
+          {
+            // Affine in the force-controlled deltas: a solve at 0 and one per such die.
+            OutlineDiesStep base;
+            record(*make_model(z, delta), base);
+            const auto n_f = static_cast<Eigen::Index>(by_force.size());
+            const auto n_k = static_cast<Eigen::Index>(base.edge_intensities.size());
+            Eigen::MatrixXd dp(static_cast<Eigen::Index>(n), n_f), dk(n_k, n_f);
+            for (Eigen::Index j = 0; j < n_f; ++j)
+              {
+                const std::size_t d = by_force[static_cast<std::size_t>(j)];
+                const double c = std::max(std::abs(z[d][0]), std::abs(z[d][1]));
+                const double db = std::max(dies_[d].flat ? 1e-6 * problem_.body->outline.size()
+                                                         : dies_[d].die->profile.gap(c),
+                                           1e-6 * problem_.body->outline.size());
+                std::vector<double> dj = delta;
+                dj[d] = db;
+                OutlineDiesStep b;
+                record(*make_model(z, dj), b);
+                for (std::size_t i = 0; i < n; ++i)
+                  dp(static_cast<Eigen::Index>(i), j) = (b.forces[i] - base.forces[i]) / db;
+                for (Eigen::Index i = 0; i < n_k; ++i)
+                  dk(i, j) = (b.edge_intensities[static_cast<std::size_t>(i)] -
+                              base.edge_intensities[static_cast<std::size_t>(i)]) / db;
+              }
+            Eigen::MatrixXd a(n_f, n_f);
+            Eigen::VectorXd rhs(n_f);
+            for (Eigen::Index i = 0; i < n_f; ++i)
+              {
+                const std::size_t d = by_force[static_cast<std::size_t>(i)];
+                rhs[i] = *dies_[d].die->force - base.forces[d];
+                for (Eigen::Index j = 0; j < n_f; ++j)
+                  a(i, j) = dp(static_cast<Eigen::Index>(d), j);
+              }
+            const Eigen::FullPivLU<Eigen::MatrixXd> lu(a);
+            if (lu.rank() < n_f || lu.rcond() < 1e-12)
+              throw std::runtime_error(
+                "the dies' forces do not fix their indentations (rcond " + std::to_string(lu.rcond()) +
+                "): a body held by force-controlled dies alone is free to translate; give one die "
+                "an indentation, or a symmetry edge that holds the body");
+            const Eigen::VectorXd x = lu.solve(rhs);
+            for (Eigen::Index j = 0; j < n_f; ++j)
+              delta[by_force[static_cast<std::size_t>(j)]] = x[j];
+            step.forces = base.forces;
+            for (std::size_t i = 0; i < n; ++i)
+              step.forces[i] += dp.row(static_cast<Eigen::Index>(i)).dot(x);
+            step.edge_intensities = base.edge_intensities;
+            for (Eigen::Index i = 0; i < n_k; ++i)
+              step.edge_intensities[static_cast<std::size_t>(i)] += dk.row(i).dot(x);
+            result_.model.reset();
+          }
+        step.zones = zones(z, delta);
+        result_.zones = step.zones;
+        result_.history.push_back(step);
+        return step;
+      }
+
+      /// The model at the zones of the last solve (force control: one more solve).
+      void finish()
+      {
+        if (result_.model)
+          return;
+        std::vector<std::array<double, 2>> z;
+        std::vector<double> delta;
+        for (const DieZone &zone : result_.zones)
+          z.push_back({zone.s_lo, zone.s_hi}), delta.push_back(zone.indentation);
+        result_.model = make_model(z, delta);
+      }
+
+    private:
+      std::vector<DieZone> zones(const std::vector<std::array<double, 2>> &z,
+                                 const std::vector<double> &delta) const
+      {
+        std::vector<DieZone> out;
+        for (std::size_t d = 0; d < dies_.size(); ++d)
+          out.push_back(DieZone{dies_[d].part, z[d][0], z[d][1], delta[d]});
+        return out;
+      }
+      std::unique_ptr<OutlineModel> make_model(const std::vector<std::array<double, 2>> &z,
+                                               const std::vector<double> &delta) const
+      {
+        auto model = std::make_unique<OutlineModel>(problem_, options_, SolverOptions{},
+                                                    zones(z, delta), local_);
+        if (!model->ok())
+          throw std::runtime_error("the solve of the dies' zones failed: " + model->summary().message);
+        return model;
+      }
+      void record(const OutlineModel &model, OutlineDiesStep &step) const
+      {
+        step.forces.clear();
+        for (const DieInfo &d : dies_)
+          step.forces.push_back(model.die_force(d.part).domain);
+        step.edge_intensities.clear();
+        for (std::size_t i = 0; i < model.n_zone_edges(); ++i)
+          step.edge_intensities.push_back(model.edge_intensity(i));
+      }
+
+      const axisym::Problem &problem_;
+      DiscretizationOptions options_;
+      std::vector<DieInfo> dies_;
+      OutlineDiesResult &result_;
+      std::optional<LocalBasis> local_;
+    };
+  } // namespace
+
+  OutlineDiesResult solve_outline_dies_on_zones(const axisym::Problem &problem,
+                                                const DiscretizationOptions &discretization,
+                                                const std::vector<DieZone> &zones)
+  {
+    OutlineDiesResult result;
+    const std::vector<DieInfo> dies = die_infos(problem);
+    if (zones.size() != dies.size())
+      throw std::invalid_argument("solve_outline_dies_on_zones: one zone per die part");
+    DiesSolver solver(problem, discretization, dies, result);
+    try
+      {
+        std::vector<std::array<double, 2>> z;
+        for (const DieZone &zone : zones)
+          z.push_back({zone.s_lo, zone.s_hi});
+        solver.fix_local_basis(z);
+        solver.solve(z, "fixed");
+        solver.finish();
+        result.success = true;
+        result.message = "the zones as given";
+      }
+    catch (const std::runtime_error &e)
+      {
+        result.success = false;
+        result.message = e.what();
+      }
+    return result;
+  }
+
+  OutlineDiesResult solve_outline_dies(const axisym::Problem &problem,
+                                       const DiscretizationOptions &discretization,
+                                       const OutlineContactOptions &options)
+  {
+    OutlineDiesResult result;
+    const std::vector<DieInfo> dies = die_infos(problem);
+    const std::size_t n = dies.size();
+    const double tol = 1e-9 * problem.body->outline.size();
+    DiesSolver solver(problem, discretization, dies, result);
+    // The unknowns: every free end of every zone but a sharp punch's, in the model's order of
+    // zone ends (zone order, low end first), and which die each belongs to.
+    struct End
+    {
+      std::size_t die;
+      bool upper; ///< the zone's upper end (s_hi), else its lower end
+    };
+    std::vector<End> ends;
+    for (std::size_t d = 0; d < n; ++d)
+      if (!dies[d].flat)
+        {
+          if (dies[d].down)
+            ends.push_back({d, false});
+          if (dies[d].up)
+            ends.push_back({d, true});
+        }
+    const auto n_x = static_cast<Eigen::Index>(ends.size());
+    auto zones_at = [&](const Eigen::VectorXd &x, const std::vector<double> &c_fixed) {
+      std::vector<std::array<double, 2>> z;
+      for (std::size_t d = 0; d < n; ++d)
+        z.push_back(dies[d].zone_of(c_fixed[d]));
+      for (Eigen::Index k = 0; k < n_x; ++k)
+        z[ends[static_cast<std::size_t>(k)].die][ends[static_cast<std::size_t>(k)].upper ? 1 : 0] = x[k];
+      return z;
+    };
+    // The K of the unknown ends among all zone ends of a solve (a sharp punch's are skipped).
+    auto residual = [&](const OutlineDiesStep &step, const std::vector<std::array<double, 2>> &z) {
+      Eigen::VectorXd k(n_x);
+      std::size_t e = 0;
+      Eigen::Index i = 0;
+      for (std::size_t d = 0; d < n; ++d)
+        for (const bool upper : {false, true})
+          {
+            const bool free = upper ? z[d][1] < dies[d].frame.s_max - tol : z[d][0] > dies[d].frame.s_min + tol;
+            if (!free)
+              continue;
+            if (e >= step.edge_intensities.size())
+              throw std::runtime_error("a zone end without its edge intensity");
+            if (!dies[d].flat)
+              k[i++] = step.edge_intensities[e];
+            ++e;
+          }
+      if (i != n_x)
+        throw std::runtime_error("the zones' free ends do not match the unknowns");
+      return k;
+    };
+    try
+      {
+        if (discretization.edge_modes == 0)
+          throw std::runtime_error("the search needs the edge modes (rfm.edge_modes > 0): K "
+                                   "locates the zones' ends");
+        // The sharp punches' faces, and the first estimates of the others (under force
+        // control: delta from zones of a tenth of each part first).
+        std::vector<double> c_fixed(n), c_first(n), delta(n, 0.0);
+        bool any_force = false;
+        for (std::size_t d = 0; d < n; ++d)
+          {
+            c_fixed[d] = dies[d].flat ? dies[d].die->profile.radius : 0.1 * dies[d].extent;
+            if (dies[d].die->indentation)
+              delta[d] = *dies[d].die->indentation;
+            else
+              any_force = true;
+          }
+        if (any_force)
+          {
+            std::vector<std::array<double, 2>> z;
+            for (std::size_t d = 0; d < n; ++d)
+              z.push_back(dies[d].zone_of(c_fixed[d]));
+            solver.fix_local_basis(z);
+            const OutlineDiesStep est = solver.solve(z, "estimate");
+            for (std::size_t d = 0; d < n; ++d)
+              {
+                delta[d] = est.zones[d].indentation;
+                if (!(delta[d] > 0.0))
+                  throw std::runtime_error("the force of the die on part " + dies[d].part +
+                                           " gives no indentation (delta = " + std::to_string(delta[d]) +
+                                           " m) at zones of a tenth of the parts");
+              }
+          }
+        for (std::size_t d = 0; d < n; ++d)
+          c_first[d] = dies[d].flat ? c_fixed[d]
+                                    : std::min(overlap_end(dies[d].die->profile, delta[d], dies[d].extent),
+                                               0.9 * dies[d].extent);
+        for (std::size_t d = 0; d < n; ++d)
+          if (dies[d].flat)
+            c_fixed[d] = c_first[d];
+        auto half_width = [&](const std::size_t d, const std::vector<std::array<double, 2>> &z) {
+          return dies[d].up && dies[d].down ? 0.5 * (z[d][1] - z[d][0]) : std::max(z[d][1], -z[d][0]);
+        };
+        Eigen::VectorXd x(n_x);
+        {
+          std::vector<std::array<double, 2>> z;
+          for (std::size_t d = 0; d < n; ++d)
+            z.push_back(dies[d].zone_of(c_first[d]));
+          for (Eigen::Index k = 0; k < n_x; ++k)
+            x[k] = z[ends[static_cast<std::size_t>(k)].die][ends[static_cast<std::size_t>(k)].upper ? 1 : 0];
+        }
+        auto broyden = [&](Eigen::VectorXd x) -> Eigen::VectorXd {
+          auto z = zones_at(x, c_fixed);
+          Eigen::VectorXd k = residual(solver.solve(z, "broyden"), z);
+          Eigen::MatrixXd jac(n_x, n_x);
+          for (Eigen::Index i = 0; i < n_x; ++i)
+            {
+              const End &e = ends[static_cast<std::size_t>(i)];
+              const double h = 0.05 * half_width(e.die, z) * (e.upper ? 1.0 : -1.0);
+              Eigen::VectorXd xi = x;
+              xi[i] += h;
+              const auto zi = zones_at(xi, c_fixed);
+              jac.col(i) = (residual(solver.solve(zi, "jacobian"), zi) - k) / h;
+            }
+          while (true)
+            {
+              if (static_cast<int>(result.history.size()) >= options.max_solves * static_cast<int>(n))
+                throw std::runtime_error("the zones' ends did not converge in " +
+                                         std::to_string(result.history.size()) + " solves");
+              Eigen::VectorXd dx = jac.fullPivLu().solve(-k);
+              double scale = 1.0;
+              for (Eigen::Index i = 0; i < n_x; ++i)
+                {
+                  const std::size_t d = ends[static_cast<std::size_t>(i)].die;
+                  scale = std::max(scale, std::abs(dx[i]) / (0.25 * (z[d][1] - z[d][0])));
+                }
+              dx /= scale;
+              Eigen::VectorXd x_new = x + dx;
+              for (Eigen::Index i = 0; i < n_x; ++i)
+                {
+                  const DieInfo &d = dies[ends[static_cast<std::size_t>(i)].die];
+                  x_new[i] = std::clamp(x_new[i], d.frame.s_min * (1 - 1e-3), d.frame.s_max * (1 - 1e-3));
+                }
+              dx = x_new - x;
+              const auto z_new = zones_at(x_new, c_fixed);
+              for (std::size_t d = 0; d < n; ++d)
+                if (!(z_new[d][1] - z_new[d][0] > 1e-3 * dies[d].extent))
+                  throw std::runtime_error("the zone on part " + dies[d].part + " vanished (s = " +
+                                           std::to_string(z_new[d][0]) + ", " +
+                                           std::to_string(z_new[d][1]) + " m)");
+              const Eigen::VectorXd k_new = residual(solver.solve(z_new, "broyden"), z_new);
+              if (dx.norm() > 0.0)
+                jac += ((k_new - k) - jac * dx) * dx.transpose() / dx.squaredNorm();
+              x = x_new, k = k_new, z = z_new;
+              bool done = true;
+              for (Eigen::Index i = 0; i < n_x; ++i)
+                done = done && std::abs(dx[i]) < options.root_tolerance *
+                                                   half_width(ends[static_cast<std::size_t>(i)].die, z);
+              if (done)
+                return x;
+            }
+        };
+        // Passes with the local boxes about half the first estimate, then about the zones
+        // found while they are more than 10 % off (as for one die).
+        std::vector<double> c_box(n);
+        for (std::size_t d = 0; d < n; ++d)
+          c_box[d] = dies[d].flat ? c_first[d] : 0.5 * c_first[d];
+        const int max_passes = std::max(1, options.local_passes);
+        for (int pass = 0;; ++pass)
+          {
+            std::vector<std::array<double, 2>> zb;
+            for (std::size_t d = 0; d < n; ++d)
+              zb.push_back(dies[d].zone_of(c_box[d]));
+            solver.fix_local_basis(zb);
+            if (n_x > 0)
+              x = broyden(x);
+            else
+              solver.solve(zones_at(x, c_fixed), "fixed");
+            const auto z = zones_at(x, c_fixed);
+            bool near = true;
+            for (std::size_t d = 0; d < n; ++d)
+              {
+                const double c = half_width(d, z);
+                near = near && std::abs(c - c_box[d]) <= 0.1 * c;
+                c_box[d] = c;
+              }
+            if (!solver.has_local_boxes() || near || pass + 1 == max_passes)
+              break;
+          }
+        solver.finish();
+        result.success = true;
+        result.message = "every free end is a root of its K to " + std::to_string(options.root_tolerance) +
+                         " of its zone's half-width (" + std::to_string(result.history.size()) +
+                         " solves of all dies, Broyden)";
+      }
+    catch (const std::runtime_error &e)
+      {
+        result.success = false;
+        result.message = e.what();
+      }
+    return result;
+  }
+
   ContactResult solve_outline_contact_by_conditions(const axisym::Problem &problem,
                                                     const DiscretizationOptions &discretization,
                                                     const ContactOptions &options,

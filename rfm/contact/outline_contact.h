@@ -83,6 +83,47 @@ namespace rfm
                                              const DiscretizationOptions &discretization,
                                              const OutlineContactOptions &options = {});
 
+  /// One solve of several dies (one zone per die part, in Body::die_parts() order).
+  struct OutlineDiesStep
+  {
+    std::vector<DieZone> zones;          ///< each with its delta [m] (force control: found)
+    std::vector<double> forces;          ///< P [N] per die (domain integral)
+    std::vector<double> edge_intensities; ///< K [Pa m^1/2] at every free end, in zone order, low end first
+    std::string phase;                   ///< "fixed", "estimate", "jacobian", "broyden"
+  };
+
+  struct OutlineDiesResult
+  {
+    bool success = false;
+    std::string message;
+    std::vector<DieZone> zones; ///< the zones found (or given), with their delta
+    std::vector<OutlineDiesStep> history;
+    std::unique_ptr<OutlineModel> model; ///< the solve at `zones`
+  };
+
+  /// Several dies on their given zones (zones[i] on die part i, Body::die_parts() order):
+  /// one bilateral solve, or under force control the linearity of the header's force
+  /// control in every force-controlled die's delta at once (one solve per such die and one
+  /// more: delta solves the small system of their forces), then the solve at those deltas.
+  /// A singular system (the body held by force-controlled dies only: its translation is
+  /// free) is a numerical failure.
+  OutlineDiesResult solve_outline_dies_on_zones(const axisym::Problem &problem,
+                                                const DiscretizationOptions &discretization,
+                                                const std::vector<DieZone> &zones);
+
+  /// Several dies' zones (contact.method "edge-intensity" with more than one die part): every
+  /// free end of every zone is a root of its K, all at once. From each die's first estimate
+  /// (as for one die: the zone where g0 = delta, under force control from zones of a tenth of
+  /// each part first), Broyden's method on the vector of free ends against the vector of
+  /// their K, the Jacobian first from finite differences (one solve per end), each step
+  /// limited to a quarter of every zone's width, until every end moves less than
+  /// root_tolerance times its zone's half-width; local boxes as for one die (built about
+  /// half the first estimate, rebuilt about the zones found while they are 10 % off). A flat
+  /// punch with a sharp edge keeps its face. Every trial solves all dies together.
+  OutlineDiesResult solve_outline_dies(const axisym::Problem &problem,
+                                       const DiscretizationOptions &discretization,
+                                       const OutlineContactOptions &options = {});
+
   /// contact.method "iterate" or "max-force" (contact.h) for the problem's die on an outline
   /// part whose zone has one free end (its centre on the axis or a symmetry edge): the same
   /// methods as the hollow cylinder's, on trial zones of length c from the centre, each
