@@ -1064,7 +1064,7 @@ def dies_section(dies, out_dir):
           "edge modes in the frame of the zone's end, the zone's end where K vanishes, a force by "
           "the linearity in the indentation) runs at its defaults beside the FEM on Hertz (7.1), "
           "the rounded flat punch (7.2), the sharp flat punch (7.3) and the paper's die written as "
-          "an outline (7.5). Its pressure p(s) is the consistent reactions "
+          "an outline (7.5), and searches two dies at once (7.6). Its pressure p(s) is the consistent reactions "
           "(`rfm::consistent_die_pressure`: weak equilibrium against test fields of the zone); the "
           "error columns give max |p - p_FEM| over the FEM's points relative to the FEM's peak, for "
           "p and for the trace -sigma_nn. The ring die's search (two free ends, 6 minutes at the "
@@ -1217,6 +1217,30 @@ def dies_section(dies, out_dir):
                   f"P {o['outline_rfm_vs_fem_force']:.1e}; against the rectangle RFM: P "
                   f"{o['outline_vs_rectangle_rfm_force']:.1e}. The hollow-cylinder search also takes "
                   "the stationary point of P(c) next to the root of K; the outline search stops at the root.")
+        md.append("")
+    t = dies.get("two_dies")
+    if t:
+        md.append(f"### 7.6 Two dies: a cylinder pressed at both end faces (`{t['problem_file']}`)")
+        md.append("")
+        md.append("A solid cylinder 20 mm x 40 mm modelled whole (no symmetry plane), pressed 0.25 mm by "
+                  "paraboloids R = 0.1 m at both end faces: the dies hold the body. The RFM takes every "
+                  "free end of every zone as an unknown (`rfm::solve_outline_dies`, Broyden on their K), "
+                  "the FEM solves both dies' active sets:")
+        md.append("")
+        md.append("| solver | c bottom [mm] | c top [mm] | P bottom [N] | P top [N] | c vs FEM | P vs FEM | solves | time [s] |")
+        md.append("|---|---|---|---|---|---|---|---|---|")
+        for k in sorted((k for k in t["fem"] if k.startswith("L")), key=lambda k: int(k[1:])):
+            f = t["fem"][k]
+            md.append(f"| FEM {k} ({f['dofs']} DoFs) | {f['half_width_bottom'] * 1e3:.6f} | "
+                      f"{f['half_width_top'] * 1e3:.6f} | {f['force_bottom']:.1f} | {f['force_top']:.1f} | | | | "
+                      f"{f['seconds']:.2f} |")
+        for key, label in (("search", "its search"), ("at_fem_zone", "at the FEM's zones")):
+            r = t.get("rfm", {}).get(key)
+            if r:
+                md.append(f"| RFM p = {r['degree']}, {label} | {r['half_width_bottom'] * 1e3:.6f} | "
+                          f"{r['half_width_top'] * 1e3:.6f} | {r['force_bottom']:.1f} | {r['force_top']:.1f} | "
+                          f"{r['half_width_vs_fem']:+.1e} | {r['force_vs_fem']:+.1e} | {r['solves']} | "
+                          f"{r['seconds']:.2f} |")
         md.append("")
     return md
 

@@ -24,6 +24,10 @@
 //      form (its P halved), and the FEM on the outline file and on the hollow-cylinder form
 //      (one geometry path: the same mesh, the same c, twice the force).
 //   6. The tolerance gate (verification/tolerances.json, entry "dies_on_parts").
+//   7. Two dies: a solid cylinder pressed by paraboloids at both end faces, modelled whole (no
+//      symmetry plane): the RFM's search of both zones at once (full mode; quick mode: P at
+//      the FEM's zones) against the FEM's, and each solver's two dies against each other
+//      (mirror images).
 //
 // Sample run:
 //   build/bin/dies_on_parts --mode quick --output-dir build/verification-output
@@ -472,6 +476,55 @@ nlohmann::json run(const verification::DriverContext &context)
     c["fem_outline_vs_rectangle_force"] =
       std::abs(fo.contact->force - 0.5 * fl.contact->force) / (0.5 * fl.contact->force);
     results["paper_die_outline"] = c;
+  }
+
+  // 7. Two dies: a cylinder pressed at both end faces, modelled whole (no symmetry plane).
+  {
+    const std::string file = "cylinder_between_two_dies.json";
+    const axisym::Problem problem = axisym::read_problem_file(context.problem_path(file));
+    nlohmann::json c = {{"problem_file", "verification/problems/" + file}};
+    // The FEM at L = 2, 3 (L = 4 moves c by 1.5e-5 and P by 2e-7 from L = 3: measured).
+    double c_fem = 0.0, p_fem = 0.0;
+    for (const int level : {2, 3})
+      {
+        const fem::FemResult f = solve_fem(problem, level, "two dies (FEM)");
+        if (f.other_dies.size() != 1)
+          throw verification::NumericalFailure("two dies (FEM): " + std::to_string(1 + f.other_dies.size()) +
+                                               " dies in the result");
+        const fem::ContactResult &bottom = *f.contact, &top = f.other_dies[0];
+        c["fem"]["L" + std::to_string(level)] = {
+          {"half_width_bottom", bottom.half_width}, {"half_width_top", top.half_width},
+          {"force_bottom", bottom.force}, {"force_top", top.force},
+          {"dofs", f.n_dofs}, {"seconds", f.total_seconds}};
+        c["fem"]["top_vs_bottom_half_width"] = std::abs(top.half_width - bottom.half_width) / bottom.half_width;
+        c_fem = 0.5 * (bottom.half_width + top.half_width), p_fem = 0.5 * (bottom.force + top.force);
+      }
+    // Quick mode: the RFM on the FEM's zones (one solve); full mode: its own search of both.
+    const auto t0 = std::chrono::steady_clock::now();
+    const rfm::OutlineDiesResult r =
+      full ? rfm::solve_outline_dies(problem, problem.rfm)
+           : rfm::solve_outline_dies_on_zones(problem, problem.rfm,
+                                              {{"bottom", 0.0, c_fem, 0.0}, {"top", -c_fem, 0.0, 0.0}});
+    const double seconds = seconds_since(t0);
+    if (!r.success || !r.model)
+      throw verification::NumericalFailure("two dies (RFM): " + r.message);
+    const double c_bottom = r.zones.at(0).s_hi, c_top = -r.zones.at(1).s_lo;
+    const double p_bottom = r.model->die_force("bottom").domain, p_top = r.model->die_force("top").domain;
+    const std::string key = full ? "search" : "at_fem_zone";
+    c["rfm"][key] = {{"degree", problem.rfm.degree}, {"half_width_bottom", c_bottom},
+                     {"half_width_top", c_top}, {"force_bottom", p_bottom}, {"force_top", p_top},
+                     {"solves", r.history.size()}, {"seconds", seconds},
+                     {"top_vs_bottom_half_width", std::abs(c_top - c_bottom) / c_bottom},
+                     {"top_vs_bottom_force", std::abs(p_top - p_bottom) / p_bottom},
+                     {"half_width_vs_fem", (c_bottom - c_fem) / c_fem},
+                     {"force_vs_fem", (p_bottom - p_fem) / p_fem}};
+    fmt::print("\n== Two dies: a cylinder pressed 0.25 mm at both end faces (R = 0.1 m), whole ==\n");
+    fmt::print("FEM L = 3: c = {:.7e} m, P = {:.7e} N; RFM p = {} ({}): c = {:.7e} / {:.7e} m (bottom "
+               "/ top), P = {:.7e} N, {} solves, {:.1f} s: c {:+.2e}, P {:+.2e} from the FEM\n",
+               c_fem, p_fem, problem.rfm.degree, full ? "its search" : "at the FEM's zones", c_bottom,
+               c_top, p_bottom, r.history.size(), seconds, (c_bottom - c_fem) / c_fem,
+               (p_bottom - p_fem) / p_fem);
+    results["two_dies"] = c;
   }
   return results;
 }
