@@ -88,6 +88,7 @@ namespace rfm
   {
     std::vector<DieZone> zones;          ///< each with its delta [m] (force control: found)
     std::vector<double> forces;          ///< P [N] per die (domain integral)
+    std::vector<double> forces_trace;    ///< P [N] per die (trace integral)
     std::vector<double> edge_intensities; ///< K [Pa m^1/2] at every free end, in zone order, low end first
     std::string phase;                   ///< "fixed", "estimate", "jacobian", "broyden"
   };
