@@ -301,7 +301,9 @@ namespace
 
     // The paper's iterations on the outline path (outline_contact.h): the same zone, the
     // record of every solve with its conditions, the bracket of c where they hold.
+    // p = 6 keeps it short under the sanitizers (measured: c 1.6e-5 from the FEM's, 27 solves).
     j["contact"] = {{"method", "iterate"}};
+    j["rfm"]["degree"] = 6;
     std::ofstream(in) << j.dump();
     fs::remove(out);
     o = run(in.string() + " --output " + out.string());

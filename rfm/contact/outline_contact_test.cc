@@ -227,15 +227,21 @@ namespace rfm
   // (contact_methods.h) on the outline's trial zones: on the paper's die written as an
   // outline (the same section and die as the legacy form) they find the legacy form's zone
   // and force. The searches' tolerances differ by design (5e-4 c here, 5e-4 a = 9.6e-4 c
-  // there; max-force here in log c). Measured at p = 8: iterate 7e-11 c apart, max-force
-  // 5.1e-5 c; P 2e-12 and 2e-10; c against the FEM's -3.3e-6 and +1.7e-4.
+  // there; max-force here in log c). Measured at p = 6: iterate 1.7e-4 c apart, max-force
+  // 1.2e-4 c; P 1.2e-7 and 2.9e-8; c against the FEM's +1.6e-5 and +3.5e-4 (at p = 8:
+  // 7e-11, 5.1e-5; 2e-12, 2e-10; -3.3e-6, +1.7e-4).
   TEST(OutlineContactByConditions, FindTheHollowCylindersZone)
   {
+#if defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "about 100 solves: 67 s under the sanitizers (6.4 s in Release, which checks "
+                    "it; the CLI test runs iterate on the outline under them)";
+#endif
     keep_freed_matrices_in_heap(); // as rfm_solve does
     for (const std::string method : {"iterate", "max-force"})
       {
         auto j = paper_die_outline();
         j["contact"]["method"] = method;
+        j["rfm"]["degree"] = 6; // short under the sanitizers
         const axisym::Problem outline = axisym::parse_problem(j);
         const ContactResult r = solve_outline_contact_by_conditions(outline, outline.rfm);
         ASSERT_TRUE(r.success) << method << ": " << r.message;
@@ -244,7 +250,7 @@ namespace rfm
           {"material", {{"youngs_modulus", 2.1e11}, {"poisson_ratio", 0.3}}},
           {"die", {{"indentation", 1e-6}}},
           {"contact", {{"method", method}}},
-          {"rfm", {{"degree", 8}}}};
+          {"rfm", {{"degree", 6}}}};
         const axisym::Problem legacy = axisym::parse_problem(legacy_j);
         const ContactResult l = solve_contact(legacy, legacy.rfm, ContactOptions{});
         ASSERT_TRUE(l.success) << method << ": " << l.message;
