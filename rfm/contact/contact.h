@@ -142,10 +142,10 @@ namespace rfm
 
   /// The check of one fixed c (used by solve_contact and the verification drivers): the
   /// functionals, P, the three edge intensities, and conditions 1.2 and 1.3 on a grid of
-  /// n_check_points along r = R2 with points graded toward c (check_die_conditions). The conditions are checked
-  /// on the discrete field with its edge term recovered: the n = 1 amplitude of both spaces
-  /// replaced by the interaction integral's (the coefficients carry the unresolved edge
-  /// field, and the traces' sign at the edge is that amplitude's). Measured at p = 8, nu =
+  /// n_check_points along r = R2 with points graded toward c (check_die_conditions). The
+  /// conditions are checked on the discrete field with its edge term recovered: the n = 1
+  /// amplitude of both spaces replaced by the interaction integral's (the coefficients carry
+  /// the unresolved edge field, and the traces' sign at the edge is that amplitude's). Measured at p = 8, nu =
   /// 0.3: `iterate` then finds c 0.14 % from the FEM's (0.80 % on the raw traces), and
   /// both conditions hold at the default method's c (both were violated on the raw traces).
   ContactIterate check_contact(const axisym::Problem &problem, const OutlineModel &model,
@@ -154,8 +154,9 @@ namespace rfm
   /// model.zones()[0] of its part's die in `body` (the problem's, not the model's split body),
   /// its centre on the axis or a symmetry edge, c its length. On n_check_points along the
   /// free side of the part from the centre, with c and points c (1 + 10^-k), k = 2..6, among
-  /// them (and c (1 - 10^-k) when the grid is coarser than c / 1000), the pressure p = -sigma_nn must be >= 0 inside the zone (1.2: a tension above
-  /// violation_tolerance p_peak counts) and the part must not enter the die beyond it:
+  /// them (and c (1 - 10^-k) when the grid is coarser than c / 1000), the pressure
+  /// p = -sigma_nn must be >= 0 inside the zone (1.2: a tension above violation_tolerance
+  /// p_peak counts) and the part must not enter the die beyond it:
   /// (delta - g0(s)) + u . n <= 0, n the outward normal (1.3: above penetration_tolerance
   /// delta). The traces carry the edge term recovered from k_edge (K [Pa m^1/2]; NaN: as
   /// solved): the n = 1 amplitude of both spaces replaced by K / sqrt(2 pi). Fills the

@@ -72,7 +72,8 @@ namespace rfm::contact_methods
     if (holds)
       {
         double bad = hi, good = c; // upper end: good holds 1.2, bad is tensile
-        while (bad - good > options.tolerance * s.length_scale(good) && n_solves++ < options.max_iterations)
+        while (bad - good > options.tolerance * s.length_scale(good) &&
+               n_solves++ < options.max_iterations)
           {
             const double mid = 0.5 * (good + bad);
             if (!s.solve(mid, it, "refinement"))
@@ -81,7 +82,8 @@ namespace rfm::contact_methods
           }
         c_hi = good;
         bad = lo, good = c; // lower end: good holds 1.3, bad penetrates
-        while (good - bad > options.tolerance * s.length_scale(good) && n_solves++ < options.max_iterations)
+        while (good - bad > options.tolerance * s.length_scale(good) &&
+               n_solves++ < options.max_iterations)
           {
             const double mid = 0.5 * (good + bad);
             if (!s.solve(mid, it, "refinement"))

@@ -1,5 +1,5 @@
-// The contact methods of a die with one free end (contact.h, contact.method), one file each behind one
-// interface: a method drives ZoneTrials (a solve at a trial half-width c with the check of
+// The contact methods of a die with one free end (contact.h, contact.method), one file each
+// behind one interface: a method drives ZoneTrials (a solve at a trial half-width c with the check of
 // conditions 1.2 and 1.3) and fills its ContactResult: the hollow cylinder's (contact.cc) and
 // a die on an outline part (outline_contact.cc). `fixed` is a single trial
 // (solve_contact in contact.cc). Internal to rfm/.
