@@ -298,17 +298,25 @@ namespace
     EXPECT_NEAR(r.at("contact").at("half_width").get<double>(), 0.1038561, 1e-3 * 0.1038561);
     EXPECT_NEAR(r.at("contact").at("force").get<double>(), 0.5 * 192617.1, 1e-4 * 96308.6);
     EXPECT_LT(std::abs(r.at("contact").at("edge_intensity").get<double>()), 1e3); // the root of K
+  }
 
-    // The paper's iterations on the outline path (outline_contact.h): the same zone, the
-    // record of every solve with its conditions, the bracket of c where they hold.
+  // The paper's iterations on the outline path (outline_contact.h): the same zone, the
+  // record of every solve with its conditions, the bracket of c where they hold; not for a
+  // zone with two free ends. (Its own test: the sanitizers' run stays short.)
+  TEST(RfmSolveCli, IterateOnAnOutlineDie)
+  {
+    const fs::path dir = fs::temp_directory_path() / "rfm_cli_outline_iterate";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    nlohmann::json j = axisym::testing::paper_die_outline();
+    const fs::path in = dir / "problem.json", out = dir / "result.json";
     // p = 6 keeps it short under the sanitizers (measured: c 1.6e-5 from the FEM's, 27 solves).
     j["contact"] = {{"method", "iterate"}};
     j["rfm"]["degree"] = 6;
     std::ofstream(in) << j.dump();
-    fs::remove(out);
-    o = run(in.string() + " --output " + out.string());
+    Outcome o = run(in.string() + " --output " + out.string());
     ASSERT_EQ(o.status, 0) << o.err;
-    r = nlohmann::json::parse(std::ifstream(out));
+    const nlohmann::json r = nlohmann::json::parse(std::ifstream(out));
     const nlohmann::json &it = r.at("contact");
     EXPECT_EQ(it.at("method"), "iterate");
     EXPECT_EQ(it.at("part"), "outer");
