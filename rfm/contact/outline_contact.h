@@ -29,6 +29,10 @@
 //
 // Local boxes (local_basis.h): every trial zone is solved with the boxes of the first estimate,
 // so that the space does not change with the zone (K(c) stays smooth).
+//
+// One file per task: outline_contact.cc (one die's search and fixed zone), outline_dies.cc
+// (several dies), outline_conditions.cc (iterate, max-force), outline_pressure.cc (the
+// consistent pressure); the bilateral solves they share in outline_trials.h.
 #pragma once
 
 #include "rfm/contact/contact.h"
