@@ -75,11 +75,14 @@ namespace rfm
   // zone and its indentation (the two searches share nothing but the model).
   TEST(OutlineContact, ForceControlGivesBackTheIndentationsZone)
   {
-    const axisym::Problem by_delta = axisym::parse_problem(paper_die_outline());
+    auto j = paper_die_outline();
+#if defined(__SANITIZE_ADDRESS__)
+    j["rfm"]["degree"] = 6; // p = 8 took 22-30 s under the sanitizers beside another test
+#endif
+    const axisym::Problem by_delta = axisym::parse_problem(j);
     const OutlineContactResult a = solve_outline_contact(by_delta, by_delta.rfm);
     ASSERT_TRUE(a.success) << a.message;
     const double force = a.model->die_force("outer").domain;
-    auto j = paper_die_outline();
     j["boundary"]["outer"]["die"].erase("indentation");
     j["boundary"]["outer"]["die"]["force"] = force;
     const axisym::Problem by_force = axisym::parse_problem(j);
