@@ -231,6 +231,4 @@ namespace rfm
       }
     return result;
   }
-
-
 } // namespace rfm

@@ -1,7 +1,6 @@
 // Several dies on outline parts (outline_contact.h): all zones solved and searched together.
 #include "rfm/contact/outline_contact.h"
 
-#include "rfm/contact/illinois.h"
 #include "rfm/contact/outline_trials.h"
 
 #include <Eigen/Dense>
