@@ -283,11 +283,11 @@ namespace rfm
     // <= p - k_z in z (displacement_degree_reduction: no reduction unless u_m is
     // constrained on two parallel lines or on arcs). That space is spanned by the
     // orthonormal basis of those degrees on the same samples, whose coefficients in the
-    // full basis are its inner products with it there (both orthonormal, one space inside
-    // the other): a well-conditioned N x N_m matrix.
+    // full basis are fitted there (SectionPolynomialBasis::coefficients_of: exact for
+    // polynomials, whereas the inner products with the full basis assumed it orthonormal
+    // at the samples, which it is only to 3.6e-3 at p = 20 on issue 24's hub section): a
+    // well-conditioned N x N_m matrix.
     std::array<Eigen::MatrixXd, 2> tu;
-    Quadrature2D samples;     // the full basis's samples, and
-    Eigen::MatrixXd weighted; // its values there times w, once for both components
     for (int m = 0; m < 2; ++m)
       {
         const auto k = structures_.displacement_degree_reduction(m);
@@ -296,19 +296,15 @@ namespace rfm
             tu[m] = orthonormal(gram_u[m]);
             continue;
           }
-        if (weighted.size() == 0)
-          {
-            samples = basis_samples(problem.body->outline, p);
-            weighted = samples.weights.cwiseProduct(samples.r).asDiagonal() *
-                       std::get<SectionPolynomialBasis>(basis_).evaluate(samples.r, samples.z, false).value;
-          }
+        const SectionPolynomialBasis &full = std::get<SectionPolynomialBasis>(basis_);
+        const Quadrature2D samples = basis_samples(problem.body->outline, p);
         const int p_r = std::max(0, p - k[0]), p_z = std::max(0, p - k[1]);
         const SectionPolynomialBasis reduced = basis_of(problem.body->outline, p_r, p_z);
         // The local columns are kept as they are (the omega of u_m multiplies them too).
-        const Eigen::Index n_g = weighted.cols(), n_l = n - n_g, n_r = reduced.n_basis_functions();
+        const Eigen::Index n_g = full.n_basis_functions(), n_l = n - n_g, n_r = reduced.n_basis_functions();
         Eigen::MatrixXd inclusion = Eigen::MatrixXd::Zero(n, n_r + n_l);
         inclusion.topLeftCorner(n_g, n_r) =
-          weighted.transpose() * reduced.evaluate(samples.r, samples.z, false).value;
+          full.coefficients_of(reduced, samples.r, samples.z, samples.weights.cwiseProduct(samples.r));
         inclusion.bottomRightCorner(n_l, n_l).setIdentity();
         tu[m] = inclusion * orthonormal(inclusion.transpose() * gram_u[m] * inclusion);
       }

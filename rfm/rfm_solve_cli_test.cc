@@ -242,6 +242,34 @@ namespace
     EXPECT_TRUE(fs::exists(dir / "vtu" / "rfm_solution.vtu"));
   }
 
+  // A fixed degree whose indicator is above 1e-5 says so (status "warning", exit 0: not a
+  // failure); one below it, or a degree chosen by rfm.tolerance, does not (issue 24 item 6).
+  // The thick sphere: indicator 3.1e-3 at p = 4, 4.0e-8 at p = 10, 8.4e-5 at the p = 6 that
+  // rfm.tolerance 1e-3 chooses (a tolerance run says nothing more: it asked for that).
+  TEST(RfmSolveCli, FixedDegreeWithALargeIndicatorWarns)
+  {
+    const fs::path dir = fs::temp_directory_path() / "rfm_cli_fixed_degree";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path in = dir / "problem.json", out = dir / "result.json";
+    std::ofstream(in) << sphere_with("/samples", {{0.15, 0.0}});
+    for (const auto &[args, status] : {std::pair{"--degree 4", "warning"}, std::pair{"--degree 10", "ok"},
+                                       std::pair{"--tolerance 1e-3", "ok"}})
+      {
+        const Outcome o = run(in.string() + " " + args + " --output " + out.string());
+        EXPECT_EQ(o.status, 0) << o.err;
+        std::ifstream f(out);
+        const nlohmann::json r = nlohmann::json::parse(f);
+        EXPECT_EQ(r.at("diagnostics").at("status"), status) << args;
+        if (std::string(status) == "warning")
+          {
+            EXPECT_NE(r.at("diagnostics").at("message").get<std::string>().find("fixed degree p = 4"),
+                      std::string::npos);
+            EXPECT_NE(o.err.find("warning"), std::string::npos);
+          }
+      }
+  }
+
   // A die on an outline part: the paper's die written as an outline (the half section, not
   // mirrored: its force is half the body's), solved on a given zone; the zone's search is
   // refused (exit 2) until the outline RFM has it.

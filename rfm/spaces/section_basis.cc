@@ -1,5 +1,7 @@
 #include "rfm/spaces/section_basis.h"
 
+#include <Eigen/QR>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -98,6 +100,26 @@ namespace rfm
   // and q_parent (one block below k's) is orthogonal to them, so h_jk vanishes for j more
   // than two blocks before k (measured: at most 3e-16 of the largest h at p = 8-18, the
   // Gram-Schmidt's rounding), and the products run on that band.
+  Eigen::MatrixXd SectionPolynomialBasis::coefficients_of(const SectionPolynomialBasis &sub,
+                                                          const Eigen::Ref<const Eigen::VectorXd> &r,
+                                                          const Eigen::Ref<const Eigen::VectorXd> &z,
+                                                          const Eigen::Ref<const Eigen::VectorXd> &w) const
+  {
+    if (sub.degree_r_ > degree_r_ || sub.degree_z_ > degree_z_)
+      throw std::invalid_argument("SectionPolynomialBasis::coefficients_of: the sub-basis has a higher degree");
+    const Eigen::VectorXd sw = w.cwiseSqrt();
+    const Eigen::MatrixXd a = sw.asDiagonal() * evaluate(r, z, false).value;
+    const Eigen::MatrixXd b = sw.asDiagonal() * sub.evaluate(r, z, false).value;
+    Eigen::MatrixXd c = a.householderQr().solve(b);
+    const double residual = (a * c - b).norm() / b.norm();
+    if (!(residual <= max_inclusion_residual))
+      throw std::runtime_error("the lowered basis (degrees " + std::to_string(sub.degree_r_) + ", " +
+                               std::to_string(sub.degree_z_) + ") is not inside the full one (" +
+                               std::to_string(degree_r_) + ", " + std::to_string(degree_z_) +
+                               ") at the samples: weighted residual " + std::to_string(residual));
+    return c;
+  }
+
   template <typename T>
   BasisValues SectionPolynomialBasis::evaluate_in(const Eigen::Ref<const Eigen::VectorXd> &r,
                                                   const Eigen::Ref<const Eigen::VectorXd> &z,

@@ -87,6 +87,22 @@ namespace rfm
                          const Eigen::Ref<const Eigen::VectorXd> &z, bool derivatives = true,
                          Precision precision = Precision::automatic) const;
 
+    /// The coefficients C (N x N_sub) of the functions of `sub` in this basis,
+    /// sub_j = sum_i C_ij q_i, for a basis `sub` of lower degrees (its polynomials inside
+    /// this one's): the least-squares fit at points (r, z) with weights w >= 0 (the samples).
+    /// Not C = Q^T W S: that formula takes the q as exactly orthonormal at the points, and
+    /// the recurrence's coefficients, computed in double, miss that by orthonormality_error()
+    /// (up to 1e-2 at p = 20 on a section far from its box; long-double evaluation does not
+    /// change the coefficients), which put components of degree above sub's into the
+    /// rebuilt functions. Throws std::runtime_error when the weighted residual of the fit
+    /// exceeds max_inclusion_residual of sub's norm there (sub is not inside this space).
+    Eigen::MatrixXd coefficients_of(const SectionPolynomialBasis &sub,
+                                    const Eigen::Ref<const Eigen::VectorXd> &r,
+                                    const Eigen::Ref<const Eigen::VectorXd> &z,
+                                    const Eigen::Ref<const Eigen::VectorXd> &w) const;
+    /// The self-check of coefficients_of (the evaluation noise is far below it: see the test).
+    static constexpr double max_inclusion_residual = 1e-6;
+
     /// max |G - I| of the double recurrence at the samples (G: their Gram matrix).
     double orthonormality_error() const { return orthonormality_error_; }
     /// Whether evaluate() runs the recurrence in long double.
