@@ -1,0 +1,148 @@
+#include "rfm/spaces/wedge_modes.h"
+
+#include <Eigen/LU>
+#include <Eigen/SVD>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace rfm
+{
+  namespace
+  {
+    constexpr double pi = 3.14159265358979323846;
+    using cd = std::complex<double>;
+
+    /// cos and sin of (lambda + 1) theta and (lambda - 1) theta.
+    struct Trig
+    {
+      cd cp, sp, cm, sm;
+    };
+    Trig trig(const cd lambda, const double theta)
+    {
+      return {std::cos((lambda + 1.0) * theta), std::sin((lambda + 1.0) * theta),
+              std::cos((lambda - 1.0) * theta), std::sin((lambda - 1.0) * theta)};
+    }
+  } // namespace
+
+  Wedge::Wedge(const double angle, const WedgeFace face_minus, const WedgeFace face_plus,
+               const double poisson_ratio)
+    : alpha_(0.5 * angle), kappa_(3.0 - 4.0 * poisson_ratio), minus_(face_minus),
+      plus_(face_plus)
+  {
+    if (!(angle > 0.0 && angle <= 2.0 * pi * (1.0 + 1e-12)) || !(poisson_ratio > -1.0 && poisson_ratio < 0.5))
+      throw std::invalid_argument("Wedge: the angle must be in (0, 2 pi] and nu in (-1, 0.5)");
+  }
+
+  Eigen::Matrix4cd Wedge::matrix(const cd lambda) const
+  {
+    Eigen::Matrix4cd m;
+    int row = 0;
+    for (const auto &[theta, face] : {std::pair{-alpha_, minus_}, std::pair{alpha_, plus_}})
+      {
+        const Trig t = trig(lambda, theta);
+        const cd lp = lambda + 1.0, lm = lambda - 1.0;
+        const Eigen::RowVector4cd f(t.cp, t.sp, t.cm, t.sm);
+        const Eigen::RowVector4cd df(-lp * t.sp, lp * t.cp, -lm * t.sm, lm * t.cm);
+        const Eigen::RowVector4cd u_r(-lp * t.cp, -lp * t.sp, (kappa_ - lambda) * t.cm, (kappa_ - lambda) * t.sm);
+        const Eigen::RowVector4cd u_t(lp * t.sp, -lp * t.cp, (kappa_ + lambda) * t.sm, -(kappa_ + lambda) * t.cm);
+        switch (face)
+          {
+            case WedgeFace::free:
+              m.row(row++) = f, m.row(row++) = df;
+              break;
+            case WedgeFace::clamped:
+              m.row(row++) = u_r, m.row(row++) = u_t;
+              break;
+            case WedgeFace::symmetry:
+              m.row(row++) = u_t, m.row(row++) = df;
+              break;
+          }
+      }
+    return m;
+  }
+
+  cd Wedge::characteristic(const cd lambda) const { return matrix(lambda).determinant(); }
+
+  std::vector<WedgeMode> Wedge::modes(const double max_real_part) const
+  {
+    std::vector<cd> roots;
+    for (double re = 0.05; re <= max_real_part + 0.05; re += 0.1)
+      for (const double im : {0.0, 0.3, 0.8})
+        {
+          cd x(re, im);
+          bool converged = false;
+          for (int it = 0; it < 200; ++it)
+            {
+              const double h = 1e-6 * (1.0 + std::abs(x));
+              const cd d = characteristic(x);
+              const cd dd = (characteristic(x + h) - characteristic(x - h)) / (2.0 * h);
+              if (dd == 0.0)
+                break;
+              const cd step = d / dd;
+              x -= step;
+              if (!(std::abs(x) < 1e6))
+                break;
+              if (std::abs(step) < 1e-14 * (1.0 + std::abs(x)))
+                {
+                  converged = true;
+                  break;
+                }
+            }
+          if (!converged)
+            continue;
+          if (std::abs(x.imag()) < 1e-9 * (1.0 + std::abs(x)))
+            x.imag(0.0);
+          if (x.imag() < 0.0)
+            x = std::conj(x);
+          if (!(x.real() > 1e-6 && x.real() <= max_real_part))
+            continue;
+          if (x.imag() == 0.0 && std::abs(x.real() - std::round(x.real())) < 1e-6)
+            continue; // integer: a polynomial field
+          // A root of det M, not a point where Newton stalled: M is singular there.
+          const Eigen::JacobiSVD<Eigen::Matrix4cd> svd(matrix(x));
+          const auto &s = svd.singularValues();
+          if (!(s[3] <= 1e-7 * s[0]))
+            continue;
+          if (std::none_of(roots.begin(), roots.end(), [&](const cd &r) { return std::abs(r - x) < 1e-6; }))
+            roots.push_back(x);
+        }
+    std::sort(roots.begin(), roots.end(), [](const cd &a, const cd &b) {
+      return a.real() != b.real() ? a.real() < b.real() : a.imag() < b.imag();
+    });
+    std::vector<WedgeMode> out;
+    for (const cd &lambda : roots)
+      {
+        const Eigen::JacobiSVD<Eigen::Matrix4cd> svd(matrix(lambda), Eigen::ComputeFullV);
+        const auto &s = svd.singularValues();
+        for (int k = 3; k >= 0 && s[k] <= 1e-6 * s[0]; --k)
+          {
+            Eigen::Vector4cd a = svd.matrixV().col(k);
+            Eigen::Index big = 0;
+            a.cwiseAbs().maxCoeff(&big);
+            a /= a[big]; // the largest coefficient 1
+            out.push_back({lambda, a});
+          }
+      }
+    return out;
+  }
+
+  WedgeFieldValues Wedge::evaluate(const WedgeMode &mode, const double rho, const double theta) const
+  {
+    const cd l = mode.lambda, lp = l + 1.0, lm = l - 1.0;
+    const Eigen::Vector4cd &a = mode.a;
+    const Trig t = trig(l, theta);
+    const cd f = a[0] * t.cp + a[1] * t.sp + a[2] * t.cm + a[3] * t.sm;
+    const cd df = -lp * (a[0] * t.sp - a[1] * t.cp) - lm * (a[2] * t.sm - a[3] * t.cm);
+    const cd d2f = -lp * lp * (a[0] * t.cp + a[1] * t.sp) - lm * lm * (a[2] * t.cm + a[3] * t.sm);
+    const cd p_s = std::exp(lm * std::log(rho)), p_u = p_s * rho;
+    WedgeFieldValues v;
+    v.s_tt = p_s * l * lp * f;
+    v.s_rt = -p_s * l * df;
+    v.s_rr = p_s * (lp * f + d2f);
+    v.u_r = 0.5 * p_u * (-lp * (a[0] * t.cp + a[1] * t.sp) + (kappa_ - l) * (a[2] * t.cm + a[3] * t.sm));
+    v.u_t = 0.5 * p_u * (lp * (a[0] * t.sp - a[1] * t.cp) + (kappa_ + l) * (a[2] * t.sm - a[3] * t.cm));
+    return v;
+  }
+} // namespace rfm

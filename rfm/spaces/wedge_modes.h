@@ -1,0 +1,87 @@
+// The local fields at a vertex of the section (DESIGN.md 4.5; issue 24 item 2): the
+// plane-strain eigenfunctions of an elastic wedge with a condition on each face.
+//
+// Why. Where the boundary turns inward or its condition changes (shoulders, grooves, clamped
+// ends, the contact edge) the field has terms rho^lambda F(theta) with non-integer, possibly
+// complex lambda; the global polynomials converge slowly there (the hub section of issue 24
+// stalls near 5e-4 in the indicator). This file finds the exponents and the modes; the
+// enrichment (columns, near-vertex rule, intensities) is built on it.
+//
+// The wedge. Polar coordinates (rho, theta) about the vertex, theta = 0 on the bisector, the
+// body in |theta| <= alpha (interior angle 2 alpha in (0, 2 pi]). Williams (1952): the Airy
+// function Phi = rho^(lambda + 1) f(theta),
+//
+//   f = a1 cos((lambda + 1) theta) + a2 sin((lambda + 1) theta)
+//     + a3 cos((lambda - 1) theta) + a4 sin((lambda - 1) theta),
+//
+// gives sigma_thth = rho^(lambda - 1) lambda (lambda + 1) f, sigma_rhoth = -rho^(lambda - 1)
+// lambda f' and sigma_rhorho = rho^(lambda - 1) ((lambda + 1) f + f''), and in plane strain
+// (kappa = 3 - 4 nu)
+//
+//   2 mu u_rho = rho^lambda [-(lambda + 1)(a1 c_+ + a2 s_+) + (kappa - lambda)(a3 c_- + a4 s_-)],
+//   2 mu u_th  = rho^lambda [ (lambda + 1)(a1 s_+ - a2 c_+) + (kappa + lambda)(a3 s_- - a4 c_-)],
+//
+// c_+- = cos((lambda +- 1) theta), s_+- = sin((lambda +- 1) theta). Each face gives two rows:
+// free (or loaded: the homogeneous part) f = f' = 0; clamped u_rho = u_th = 0; symmetry or a
+// die zone (normal displacement given, shear free) u_th = f' = 0. The exponents are the roots
+// of det M(lambda) = 0 for the 4 x 4 matrix M of those rows, found by Newton's method in the
+// complex plane from a grid of starts with 0 < Re lambda <= max_real_part, polished, and
+// counted with the dimension of M's null space (the crack's lambda = 1/2 is double: a
+// symmetric and an antisymmetric mode). Integer exponents are left out: their fields are
+// polynomials, which the coordinate functions carry, and the Airy basis degenerates at
+// lambda = 1 (sin(0 theta)), where det M vanishes whatever the faces.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <complex>
+#include <vector>
+
+namespace rfm
+{
+  enum class WedgeFace
+  {
+    free,     ///< traction free (or a given traction: its homogeneous part)
+    clamped,  ///< u = 0
+    symmetry  ///< u . n = 0 and no shear (a symmetry line, a die zone)
+  };
+
+  /// One mode rho^lambda F(theta): the exponent and the Airy coefficients (a1..a4, complex
+  /// for a complex lambda; the real fields are its real and imaginary parts).
+  struct WedgeMode
+  {
+    std::complex<double> lambda;
+    Eigen::Vector4cd a;
+  };
+
+  /// Stresses (rho rho, theta theta, rho theta) and displacements (rho, theta) of a mode at
+  /// (rho, theta), complex; displacements for the shear modulus mu = 1 (they scale as 1 / mu).
+  struct WedgeFieldValues
+  {
+    std::complex<double> s_rr, s_tt, s_rt, u_r, u_t;
+  };
+
+  class Wedge
+  {
+  public:
+    /// Interior angle 2 alpha [rad] in (0, 2 pi]; the face at theta = -alpha and the one at
+    /// +alpha; Poisson's ratio in (-1, 0.5). Throws std::invalid_argument otherwise.
+    Wedge(double angle, WedgeFace face_minus, WedgeFace face_plus, double poisson_ratio);
+
+    /// The non-integer exponents with 0 < Re lambda <= max_real_part and Im lambda >= 0 (the
+    /// conjugate of a complex one is a root too and gives the same real fields), ascending in
+    /// Re lambda, each with its modes (one per dimension of M's null space).
+    std::vector<WedgeMode> modes(double max_real_part) const;
+
+    /// det M(lambda): the function whose roots are the exponents.
+    std::complex<double> characteristic(std::complex<double> lambda) const;
+    /// The mode's fields at a point.
+    WedgeFieldValues evaluate(const WedgeMode &mode, double rho, double theta) const;
+    double half_angle() const { return alpha_; }
+
+  private:
+    Eigen::Matrix4cd matrix(std::complex<double> lambda) const;
+    double alpha_, kappa_;
+    WedgeFace minus_, plus_;
+  };
+} // namespace rfm
