@@ -18,6 +18,7 @@
 #include "rfm/contact/outline_contact.h"
 #include "rfm/fields/vtu_output.h"
 #include "rfm/outline_model.h"
+#include "rfm/spaces/wedge_modes.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -376,8 +377,42 @@ namespace
                              {"rcond_stress_block", s.rcond_stress},
                              {"rcond_schur_complement", s.rcond_schur},
                              {"inf_sup_indicator", s.inf_sup}};
+    // Vertices where the field is singular (issue 24 item 2): without vertex modes the
+    // stresses near them converge slowly and their values at the vertex are not limits,
+    // whatever the indicator says (it measures energy); a tolerance may not be reached.
+    const std::vector<rfm::SingularVertex> vertices =
+      rfm::singular_vertices(*problem.body, problem.material.poisson_ratio);
+    std::string vertex_warning;
+    if (!vertices.empty())
+      {
+        nlohmann::json list = nlohmann::json::array();
+        for (const rfm::SingularVertex &v : vertices)
+          {
+            nlohmann::json exponents = nlohmann::json::array();
+            for (const rfm::WedgeMode &m : v.modes)
+              exponents.push_back({m.lambda.real(), m.lambda.imag()});
+            list.push_back({{"r", v.at.r},
+                            {"z", v.at.z},
+                            {"angle_degrees", v.angle * 180.0 / 3.14159265358979323846},
+                            {"parts", {v.part_before, v.part_after}},
+                            {"exponents", exponents}});
+          }
+        result["diagnostics"]["singular_vertices"] = list;
+        const rfm::SingularVertex &v = vertices.front();
+        vertex_warning = fmt::format(
+          "the stress is singular at {} {} of the section, the first at (r, z) = ({:.6g}, "
+          "{:.6g}) m between parts {} and {} (interior angle {:.1f} degrees, lambda = {:.4g}{}): the "
+          "RFM has no vertex modes yet, so stresses near it converge slowly and values there are "
+          "not limits (diagnostics.singular_vertices lists all)",
+          vertices.size(), vertices.size() > 1 ? "vertices" : "vertex", v.at.r, v.at.z, v.part_before,
+          v.part_after, v.angle * 180.0 / 3.14159265358979323846, v.modes.front().lambda.real(),
+          v.modes.front().lambda.imag() != 0.0 ? fmt::format(" {:+.4g} i", v.modes.front().lambda.imag()) : "");
+      }
     if (!solved)
       {
+        if (!vertex_warning.empty())
+          result["diagnostics"]["message"] =
+            result["diagnostics"]["message"].get<std::string>() + "; " + vertex_warning;
         if (!output_path.empty())
           axisym::write_json_atomically(output_path, result);
         fmt::print(stderr, "rfm_solve: numerical failure: {}\n",
@@ -398,6 +433,15 @@ namespace
         result["diagnostics"]["status"] = "warning";
         result["diagnostics"]["message"] = fixed_degree_warning(phi.indicator(), p);
         fmt::print(stderr, "rfm_solve: warning: {}\n", result["diagnostics"]["message"].get<std::string>());
+      }
+    if (!vertex_warning.empty())
+      {
+        if (result["diagnostics"]["status"] == "warning")
+          result["diagnostics"]["message"] =
+            result["diagnostics"]["message"].get<std::string>() + "; " + vertex_warning;
+        else
+          result["diagnostics"]["status"] = "warning", result["diagnostics"]["message"] = vertex_warning;
+        fmt::print(stderr, "rfm_solve: warning: {}\n", vertex_warning);
       }
     if (!zones.empty())
       {

@@ -270,6 +270,39 @@ namespace
       }
   }
 
+  // A section with a re-entrant corner (a ring with a rectangular step, 270 degrees, free on
+  // both faces) warns and lists the vertex with Williams' exponents (issue 24 item 6). (Its
+  // indicator is 1.3e-2 at p = 24: rfm.tolerance 1e-3 is not reached, exit 3, and that
+  // message names the vertex too.)
+  TEST(RfmSolveCli, SingularVertexWarns)
+  {
+    const fs::path dir = fs::temp_directory_path() / "rfm_cli_vertex";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path in = dir / "problem.json", out = dir / "result.json";
+    std::ofstream(in) << R"({
+      "geometry": {"outline": [
+        {"start": [0.1, 0.0]}, {"line_to": [0.2, 0.0], "part": "bottom"},
+        {"line_to": [0.2, 0.2], "part": "outer"}, {"line_to": [0.15, 0.2], "part": "top"},
+        {"line_to": [0.15, 0.1], "part": "step_side"}, {"line_to": [0.1, 0.1], "part": "step"},
+        {"line_to": [0.1, 0.0], "part": "inner"}]},
+      "boundary": {"inner": {"pressure": 1.0e7}, "bottom": {"symmetry": true}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})";
+    const Outcome o = run(in.string() + " --degree 6 --output " + out.string());
+    EXPECT_EQ(o.status, 0) << o.err;
+    std::ifstream f(out);
+    const nlohmann::json r = nlohmann::json::parse(f);
+    const nlohmann::json &d = r.at("diagnostics");
+    EXPECT_EQ(d.at("status"), "warning");
+    EXPECT_NE(d.at("message").get<std::string>().find("singular"), std::string::npos);
+    ASSERT_EQ(d.at("singular_vertices").size(), 1u);
+    const nlohmann::json &v = d.at("singular_vertices")[0];
+    EXPECT_NEAR(v.at("r").get<double>(), 0.15, 1e-12);
+    EXPECT_NEAR(v.at("angle_degrees").get<double>(), 270.0, 1e-9);
+    EXPECT_NEAR(v.at("exponents")[0][0].get<double>(), 0.5444837, 1e-7);
+    EXPECT_NEAR(v.at("exponents")[1][0].get<double>(), 0.9085292, 1e-7);
+  }
+
   // A die on an outline part: the paper's die written as an outline (the half section, not
   // mirrored: its force is half the body's), solved on a given zone; the zone's search is
   // refused (exit 2) until the outline RFM has it.

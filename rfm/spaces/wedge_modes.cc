@@ -145,4 +145,46 @@ namespace rfm
     v.u_t = 0.5 * p_u * (lp * (a[0] * t.sp - a[1] * t.cp) + (kappa_ + l) * (a[2] * t.sm - a[3] * t.cm));
     return v;
   }
+
+  WedgeFace wedge_face(const axisym::PartCondition &condition)
+  {
+    using Kind = axisym::PartCondition::Kind;
+    switch (condition.kind)
+      {
+        case Kind::displacement:
+          return WedgeFace::clamped;
+        case Kind::symmetry:
+        case Kind::axis:
+          return WedgeFace::symmetry;
+        default:
+          return WedgeFace::free;
+      }
+  }
+
+  std::vector<SingularVertex> singular_vertices(const axisym::Body &body, const double poisson_ratio)
+  {
+    const std::vector<axisym::OutlineEdge> &edges = body.outline.edges();
+    const double tol = 1e-9 * body.outline.size();
+    std::vector<SingularVertex> out;
+    for (std::size_t i = 0; i < edges.size(); ++i)
+      {
+        const axisym::OutlineEdge &a = edges[i], &b = edges[(i + 1) % edges.size()];
+        const axisym::Point v = a.end;
+        if (v.r <= tol || a.on_axis(tol) || b.on_axis(tol))
+          continue;
+        const axisym::Point ta = a.tangent_at(1.0), tb = b.tangent_at(0.0);
+        // The turn from a to b (+ to the left); outlines run counter-clockwise with the body on
+        // the left (the parser's rule), so the interior angle is pi minus the turn.
+        const double turn = std::atan2(ta.r * tb.z - ta.z * tb.r, ta.r * tb.r + ta.z * tb.z);
+        const double angle = pi - turn;
+        if (!(angle > 1e-9))
+          continue; // a cusp: no wedge
+        const axisym::PartCondition &ca = body.conditions.at(a.part), &cb = body.conditions.at(b.part);
+        const Wedge w(angle, wedge_face(ca), wedge_face(cb), poisson_ratio);
+        std::vector<WedgeMode> modes = w.modes(0.999);
+        if (!modes.empty())
+          out.push_back({v, angle, a.part, b.part, std::move(modes)});
+      }
+    return out;
+  }
 } // namespace rfm

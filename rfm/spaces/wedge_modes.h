@@ -32,9 +32,12 @@
 // lambda = 1 (sin(0 theta)), where det M vanishes whatever the faces.
 #pragma once
 
+#include "problem/problem.h"
+
 #include <Eigen/Core>
 
 #include <complex>
+#include <string>
 #include <vector>
 
 namespace rfm
@@ -84,4 +87,26 @@ namespace rfm
     double alpha_, kappa_;
     WedgeFace minus_, plus_;
   };
+
+  /// A vertex of a section's outline off the axis with the wedge it makes (the interior
+  /// angle, the faces from the two parts' conditions) and its non-integer exponents with
+  /// Re lambda < 1 (the stress is singular there).
+  struct SingularVertex
+  {
+    axisym::Point at;
+    double angle = 0; ///< interior angle [rad]
+    std::string part_before, part_after;
+    std::vector<WedgeMode> modes;
+  };
+
+  /// The face of a part's condition at a vertex (the homogeneous part of the condition):
+  /// free for traction-free, pressure, traction and die parts (a die zone that reaches its
+  /// part's corner is not known before the solve; the zone's own ends are contact edges,
+  /// edge_modes.h), clamped for a prescribed displacement, symmetry for a symmetry line.
+  WedgeFace wedge_face(const axisym::PartCondition &condition);
+
+  /// Every vertex of the body's outline off the axis where the elastic field is singular
+  /// (Re lambda < 1 for some exponent of its wedge), in the outline's order. Where a traction
+  /// jumps at a vertex the particular field has logarithms this does not see (issue 24 item 4).
+  std::vector<SingularVertex> singular_vertices(const axisym::Body &body, double poisson_ratio);
 } // namespace rfm

@@ -2,6 +2,8 @@
 // both face conditions (wedge_modes.h).
 #include "rfm/spaces/wedge_modes.h"
 
+#include "problem/problem.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -187,5 +189,43 @@ namespace rfm
   {
     EXPECT_THROW(Wedge(0.0, WedgeFace::free, WedgeFace::free, nu), std::invalid_argument);
     EXPECT_THROW(Wedge(7.0, WedgeFace::free, WedgeFace::free, nu), std::invalid_argument);
+  }
+
+  // The vertices of outlines: an L-shaped ring section (a rectangular step inward, one 270-
+  // degree free-free corner), and a cylinder clamped
+  // at its end (two clamped-free right angles; the axis' corners are left out).
+  TEST(WedgeModes, FindsTheSingularVerticesOfAnOutline)
+  {
+    const axisym::Problem step = axisym::parse_problem(nlohmann::json::parse(R"({
+      "geometry": {"outline": [
+        {"start": [0.1, 0.0]}, {"line_to": [0.2, 0.0], "part": "bottom"},
+        {"line_to": [0.2, 0.2], "part": "outer"}, {"line_to": [0.15, 0.2], "part": "top"},
+        {"line_to": [0.15, 0.1], "part": "step_side"}, {"line_to": [0.1, 0.1], "part": "step"},
+        {"line_to": [0.1, 0.0], "part": "inner"}]},
+      "boundary": {"inner": {"pressure": 1.0e7}, "bottom": {"symmetry": true}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
+    const std::vector<SingularVertex> v = singular_vertices(*step.body, nu);
+    ASSERT_EQ(v.size(), 1u);
+    EXPECT_NEAR(v[0].at.r, 0.15, 1e-12);
+    EXPECT_NEAR(v[0].at.z, 0.1, 1e-12);
+    EXPECT_NEAR(v[0].angle, 1.5 * pi, 1e-12);
+    EXPECT_EQ(v[0].part_before, "step_side");
+    ASSERT_EQ(v[0].modes.size(), 2u);
+    EXPECT_NEAR(v[0].modes[0].lambda.real(), 0.5444837, 1e-7);
+    const axisym::Problem clamped = axisym::parse_problem(nlohmann::json::parse(R"({
+      "geometry": {"outline": [{"start": [0.0, 0.0]}, {"line_to": [0.05, 0.0], "part": "base"},
+                               {"line_to": [0.05, 0.2], "part": "side"}, {"line_to": [0.0, 0.2], "part": "end"},
+                               {"line_to": [0.0, 0.0], "part": "axis"}]},
+      "boundary": {"base": {"displacement": [0.0, 0.0]}, "end": {"traction": [0.0, 1.0e6]}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
+    const std::vector<SingularVertex> c = singular_vertices(*clamped.body, nu);
+    ASSERT_EQ(c.size(), 1u); // the clamped base meets the free side; the loaded end's corner is smooth
+    EXPECT_NEAR(c[0].at.r, 0.05, 1e-12);
+    EXPECT_NEAR(c[0].at.z, 0.0, 1e-12);
+    EXPECT_NEAR(c[0].angle, 0.5 * pi, 1e-12);
+    const std::vector<WedgeMode> direct = Wedge(0.5 * pi, WedgeFace::clamped, WedgeFace::free, nu).modes(0.999);
+    ASSERT_EQ(c[0].modes.size(), direct.size());
+    EXPECT_EQ(c[0].modes[0].lambda, direct[0].lambda);
+    EXPECT_LT(c[0].modes[0].lambda.real(), 1.0);
   }
 } // namespace rfm
