@@ -233,6 +233,7 @@ namespace axisym
     const Point c = body.conditions.at(part).die.center;
     const double s = f.coordinate(c);
     f.center = c, f.s_min -= s, f.s_max -= s;
+    f.tolerance = 1e-9 * body.outline.size();
     return f;
   }
 

@@ -168,6 +168,15 @@ namespace axisym
   {
     Point center, tangent, normal;
     double s_min = 0, s_max = 0;
+    /// Lengths below this are zero: 1e-9 of the outline's size (die_frame sets it).
+    double tolerance = 0;
+    /// The part runs on beyond the centre toward +s (-s): the centre is not at that end.
+    bool runs_up() const { return s_max > tolerance; }
+    bool runs_down() const { return s_min < -tolerance; }
+    /// A zone's end s_lo (s_hi) is free, a contact edge where the condition changes, when it
+    /// lies inside the part and not at the part's own end (the one rule of every solver).
+    bool free_low_end(double s_lo) const { return s_lo > s_min + tolerance; }
+    bool free_high_end(double s_hi) const { return s_hi < s_max - tolerance; }
     /// The signed distance s of x along the part from the centre [m].
     double coordinate(Point x) const
     {

@@ -733,7 +733,6 @@ namespace rfm
     if (options.local_levels == 0 || zones.empty() || !is_axis_aligned_rectangle(body.outline))
       return {};
     const axisym::BoundingBox box = body.outline.bounding_box();
-    const double tol = 1e-9 * body.outline.size();
     std::vector<LocalPatch> patches;
     for (const DieZone &zone : zones)
       {
@@ -742,7 +741,7 @@ namespace rfm
         if (!(c > 0.0))
           continue;
         // One-sided where the centre is at an end of the part (the section ends there).
-        const bool at_start = f.s_min > -tol, at_end = f.s_max < tol;
+        const bool at_start = !f.runs_down(), at_end = !f.runs_up();
         const double sign = at_end && !at_start ? -1.0 : 1.0;
         // The section's extent along the part: the global polynomials resolve about
         // extent / p there, and the boxes grow until they hand over to them. (The section's
@@ -796,7 +795,7 @@ namespace rfm
         // Each free end of the zone: (s, the direction into the zone along t).
         for (const auto &[s_edge, into] : {std::pair{zone.s_lo, 1.0}, std::pair{zone.s_hi, -1.0}})
           {
-            const bool free = into > 0 ? s_edge > f.s_min + tol : s_edge < f.s_max - tol;
+            const bool free = into > 0 ? f.free_low_end(s_edge) : f.free_high_end(s_edge);
             if (!free)
               continue;
             const axisym::Point p = f.point_at(s_edge);
@@ -806,7 +805,7 @@ namespace rfm
             const double beyond = into > 0 ? s_edge - f.s_min : f.s_max - s_edge;
             // With two free ends each takes half the zone: the near-edge rules add "all minus
             // the polynomial part" on their half discs, which must not overlap.
-            const bool other_free = into > 0 ? zone.s_hi < f.s_max - tol : zone.s_lo > f.s_min + tol;
+            const bool other_free = into > 0 ? f.free_high_end(zone.s_hi) : f.free_low_end(zone.s_lo);
             double room = std::min((other_free ? 0.5 : 1.0) * (zone.s_hi - zone.s_lo), beyond);
             for (const axisym::OutlineEdge &e : problem.body->outline.edges())
               if (e.part != zone.part)
@@ -1122,8 +1121,7 @@ namespace rfm
     for (const std::string &part : body.die_parts())
       {
         const axisym::DieFrame f = axisym::die_frame(body, part);
-        const double tol = 1e-9 * body.outline.size();
-        box_weight += f.s_min > -tol || f.s_max < tol ? 1.0 : 2.0;
+        box_weight += !f.runs_down() || !f.runs_up() ? 1.0 : 2.0;
       }
     auto local_columns = [&](const double d) { return box_weight * n_boxes * (d + 1.0) * (d + 1.0); };
     const double p = options.degree, n = (p + 1) * (p + 1) + local_columns(options.local_degree);

@@ -137,8 +137,7 @@ namespace
   bool zone_has_free_end(const axisym::Problem &problem, const rfm::DieZone &zone)
   {
     const axisym::DieFrame f = axisym::die_frame(*problem.body, zone.part);
-    const double tol = 1e-9 * problem.body->outline.size();
-    return zone.s_lo > f.s_min + tol || zone.s_hi < f.s_max - tol;
+    return f.free_low_end(zone.s_lo) || f.free_high_end(zone.s_hi);
   }
 
   // K at each free end of a die's zone (null without one): one number, or [low end, high end].
@@ -162,8 +161,7 @@ namespace
   {
     const axisym::DieFrame f = axisym::die_frame(*problem.body, zone.part);
     const rfm::OutlineModel::DieForce force = m.die_force(zone.part);
-    const double tol = 1e-9 * problem.body->outline.size();
-    const bool has_up = f.s_max > tol, has_down = f.s_min < -tol;
+    const bool has_up = f.runs_up(), has_down = f.runs_down();
     const double half_width =
       has_up && has_down ? 0.5 * (zone.s_hi - zone.s_lo) : (has_up ? zone.s_hi : -zone.s_lo);
     nlohmann::json c = {{"part", zone.part},

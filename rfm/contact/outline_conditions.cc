@@ -24,8 +24,7 @@ namespace rfm
     const std::string part = problem.body->die_parts().at(0);
     const axisym::DieFrame f = axisym::die_frame(*problem.body, part);
     const axisym::DieCondition &die = problem.body->conditions.at(part).die;
-    const double tol = 1e-9 * problem.body->outline.size();
-    const bool up = f.s_max > tol, down = f.s_min < -tol;
+    const bool up = f.runs_up(), down = f.runs_down();
     const std::string field = "contact.method";
     if (up && down)
       throw axisym::InputError(

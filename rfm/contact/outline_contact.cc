@@ -23,8 +23,7 @@ namespace rfm
     const std::string &part = parts.at(0);
     const axisym::DieFrame f = axisym::die_frame(*problem.body, part);
     const axisym::DieCondition &die = problem.body->conditions.at(part).die;
-    const double tol = 1e-9 * problem.body->outline.size();
-    const bool up = f.s_max > tol, down = f.s_min < -tol, two_ends = up && down;
+    const bool up = f.runs_up(), down = f.runs_down(), two_ends = up && down;
     const axisym::DieProfile &profile = die.profile;
     const bool flat = profile.shape == axisym::DieProfile::Shape::flat;
     // The extent: the part's length from the centre on the free side(s).

@@ -49,7 +49,6 @@ namespace rfm
     OutlineDiesResult result;
     const std::vector<DieInfo> dies = die_infos(problem);
     const std::size_t n = dies.size();
-    const double tol = 1e-9 * problem.body->outline.size();
     DiesSolver solver(problem, discretization, dies, result);
     // The unknowns: every free end of every zone but a sharp punch's, in the model's order of
     // zone ends (zone order, low end first), and which die each belongs to.
@@ -84,7 +83,7 @@ namespace rfm
       for (std::size_t d = 0; d < n; ++d)
         for (const bool upper : {false, true})
           {
-            const bool free = upper ? z[d][1] < dies[d].frame.s_max - tol : z[d][0] > dies[d].frame.s_min + tol;
+            const bool free = upper ? dies[d].frame.free_high_end(z[d][1]) : dies[d].frame.free_low_end(z[d][0]);
             if (!free)
               continue;
             if (e >= step.edge_intensities.size())

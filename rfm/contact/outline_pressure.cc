@@ -21,8 +21,7 @@ namespace rfm
     const axisym::DieFrame frame = axisym::die_frame(*problem.body, zone.part);
     const bool sharp =
       problem.body->conditions.at(zone.part).die.profile.shape == axisym::DieProfile::Shape::flat;
-    const double tol = 1e-9 * problem.body->outline.size();
-    const bool two_ends = frame.s_max > tol && frame.s_min < -tol;
+    const bool two_ends = frame.runs_up() && frame.runs_down();
     // The zone's coordinate x(s): one free end x = |s| / h, two x = (s - mid) / h.
     const double mid = two_ends ? 0.5 * (zone.s_lo + zone.s_hi) : 0.0;
     const double h = two_ends ? 0.5 * (zone.s_hi - zone.s_lo) : std::max(zone.s_hi, -zone.s_lo);
@@ -86,7 +85,7 @@ namespace rfm
     // G_kj = int_zone w X_j phi_k r ds by Gauss-Legendre in theta, x = sin theta: w dx =
     // cos^2 theta d theta (U) or d theta (T), smooth; s = mid + h x (two ends) or on the
     // zone's side of the centre (one).
-    const double side = two_ends || zone.s_hi > tol ? 1.0 : -1.0;
+    const double side = two_ends || zone.s_hi > frame.tolerance ? 1.0 : -1.0;
     const double theta_a = two_ends ? -0.5 * M_PI : 0.0, theta_b = 0.5 * M_PI;
     const GaussRule1D rule = gauss_legendre(2 * m_max + 24);
     Eigen::MatrixXd g = Eigen::MatrixXd::Zero(n_phi, n_phi);

@@ -45,14 +45,13 @@ namespace rfm::outline_trials
     inline std::vector<DieInfo> die_infos(const axisym::Problem &problem)
     {
       std::vector<DieInfo> out;
-      const double tol = 1e-9 * problem.body->outline.size();
       for (const std::string &part : problem.body->die_parts())
         {
           DieInfo d;
           d.part = part;
           d.frame = axisym::die_frame(*problem.body, part);
           d.die = &problem.body->conditions.at(part).die;
-          d.up = d.frame.s_max > tol, d.down = d.frame.s_min < -tol;
+          d.up = d.frame.runs_up(), d.down = d.frame.runs_down();
           d.extent = d.up && d.down ? std::min(d.frame.s_max, -d.frame.s_min)
                                     : (d.up ? d.frame.s_max : -d.frame.s_min);
           d.flat = d.die->profile.shape == axisym::DieProfile::Shape::flat;

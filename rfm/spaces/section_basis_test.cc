@@ -154,7 +154,7 @@ TEST(SectionBasis, LoweredBasisIsRebuiltExactlyFromTheFullOne)
       const rfm::Quadrature2D f = rfm::section_gauss(hub, qo);
       const Eigen::VectorXd w = s.weights.cwiseProduct(s.r);
       const rfm::SectionPolynomialBasis full(p, p, b.r_min, b.r_max, b.z_min, b.z_max, s.r, s.z, w);
-      for (const auto [p_r, p_z] : {std::pair{p, p - 1}, std::pair{p - 1, p}})
+      for (const auto &[p_r, p_z] : {std::pair{p, p - 1}, std::pair{p - 1, p}})
       {
       const rfm::SectionPolynomialBasis low(p_r, p_z, b.r_min, b.r_max, b.z_min, b.z_max, s.r, s.z, w);
       const Eigen::MatrixXd c = full.coefficients_of(low, s.r, s.z, w);
