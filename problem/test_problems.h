@@ -30,6 +30,20 @@ namespace axisym::testing
       "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})");
   }
 
+  // A ring section with a rectangular step inward (the L-shaped section of issue 24): one
+  // free-free vertex of 270 degrees at (0.15, 0.1), pressure inside, symmetry at z = 0.
+  inline nlohmann::json stepped_ring()
+  {
+    return nlohmann::json::parse(R"({
+      "geometry": {"outline": [
+        {"start": [0.1, 0.0]}, {"line_to": [0.2, 0.0], "part": "bottom"},
+        {"line_to": [0.2, 0.2], "part": "outer"}, {"line_to": [0.15, 0.2], "part": "top"},
+        {"line_to": [0.15, 0.1], "part": "step_side"}, {"line_to": [0.1, 0.1], "part": "step"},
+        {"line_to": [0.1, 0.0], "part": "inner"}]},
+      "boundary": {"inner": {"pressure": 1.0e7}, "bottom": {"symmetry": true}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})");
+  }
+
   /// The sector 0 <= polar angle from the equator <= 60 degrees of the same shell: the cone
   /// phi = 60 degrees is an inclined symmetry edge (u.n = 0 with n = (-sin 60, cos 60)),
   /// which a spherically symmetric solution satisfies; inner pressure 10 MPa, steel.

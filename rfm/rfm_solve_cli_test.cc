@@ -280,14 +280,7 @@ namespace
     fs::remove_all(dir);
     fs::create_directories(dir);
     const fs::path in = dir / "problem.json", out = dir / "result.json";
-    std::ofstream(in) << R"({
-      "geometry": {"outline": [
-        {"start": [0.1, 0.0]}, {"line_to": [0.2, 0.0], "part": "bottom"},
-        {"line_to": [0.2, 0.2], "part": "outer"}, {"line_to": [0.15, 0.2], "part": "top"},
-        {"line_to": [0.15, 0.1], "part": "step_side"}, {"line_to": [0.1, 0.1], "part": "step"},
-        {"line_to": [0.1, 0.0], "part": "inner"}]},
-      "boundary": {"inner": {"pressure": 1.0e7}, "bottom": {"symmetry": true}},
-      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})";
+    std::ofstream(in) << axisym::testing::stepped_ring().dump();
     const Outcome o = run(in.string() + " --degree 6 --output " + out.string());
     EXPECT_EQ(o.status, 0) << o.err;
     std::ifstream f(out);

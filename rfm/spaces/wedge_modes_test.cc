@@ -3,6 +3,7 @@
 #include "rfm/spaces/wedge_modes.h"
 
 #include "problem/problem.h"
+#include "problem/test_problems.h"
 
 #include <gtest/gtest.h>
 
@@ -196,14 +197,7 @@ namespace rfm
   // at its end (two clamped-free right angles; the axis' corners are left out).
   TEST(WedgeModes, FindsTheSingularVerticesOfAnOutline)
   {
-    const axisym::Problem step = axisym::parse_problem(nlohmann::json::parse(R"({
-      "geometry": {"outline": [
-        {"start": [0.1, 0.0]}, {"line_to": [0.2, 0.0], "part": "bottom"},
-        {"line_to": [0.2, 0.2], "part": "outer"}, {"line_to": [0.15, 0.2], "part": "top"},
-        {"line_to": [0.15, 0.1], "part": "step_side"}, {"line_to": [0.1, 0.1], "part": "step"},
-        {"line_to": [0.1, 0.0], "part": "inner"}]},
-      "boundary": {"inner": {"pressure": 1.0e7}, "bottom": {"symmetry": true}},
-      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
+    const axisym::Problem step = axisym::parse_problem(axisym::testing::stepped_ring());
     const std::vector<SingularVertex> v = singular_vertices(*step.body, nu);
     ASSERT_EQ(v.size(), 1u);
     EXPECT_NEAR(v[0].at.r, 0.15, 1e-12);
