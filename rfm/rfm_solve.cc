@@ -32,6 +32,17 @@ namespace
 {
   /// Above this indicator a solve at a fixed degree warns (status "warning", exit 0).
   constexpr double fixed_degree_indicator_limit = 1e-5;
+  /// Marks the result as in doubt with `why` (after any warning already there) and says so.
+  void add_warning(nlohmann::json &result, const std::string &why)
+  {
+    nlohmann::json &d = result["diagnostics"];
+    if (d.value("status", "") == "warning")
+      d["message"] = d["message"].get<std::string>() + "; " + why;
+    else
+      d["status"] = "warning", d["message"] = why;
+    fmt::print(stderr, "rfm_solve: warning: {}\n", why);
+  }
+
   std::string fixed_degree_warning(const double indicator, const int p)
   {
     return fmt::format("the indicator |Phi_L - Phi_C| / |Phi_R| is {:.3g} at the fixed degree p = {}, "
@@ -427,20 +438,9 @@ namespace
     // A fixed degree is not a failure, but its doubt is said (issue 24 item 6): above 1e-5 the
     // indicator means about 0.3 % in stress (the Lame calibration of rfm.tolerance).
     if (zones.empty() && !target_indicator && phi.indicator() > fixed_degree_indicator_limit)
-      {
-        result["diagnostics"]["status"] = "warning";
-        result["diagnostics"]["message"] = fixed_degree_warning(phi.indicator(), p);
-        fmt::print(stderr, "rfm_solve: warning: {}\n", result["diagnostics"]["message"].get<std::string>());
-      }
+      add_warning(result, fixed_degree_warning(phi.indicator(), p));
     if (!vertex_warning.empty())
-      {
-        if (result["diagnostics"]["status"] == "warning")
-          result["diagnostics"]["message"] =
-            result["diagnostics"]["message"].get<std::string>() + "; " + vertex_warning;
-        else
-          result["diagnostics"]["status"] = "warning", result["diagnostics"]["message"] = vertex_warning;
-        fmt::print(stderr, "rfm_solve: warning: {}\n", vertex_warning);
-      }
+      add_warning(result, vertex_warning);
     if (!zones.empty())
       {
         result["contact"] = outline_die_to_json(problem, *model, zones[0], phi);
@@ -733,11 +733,7 @@ int main(int argc, char **argv)
         result["contact"]["curve"] = force_curve(problem);
       result["samples"] = fields_to_json(problem, model);
       if (!problem.die && !target_indicator && phi.indicator() > fixed_degree_indicator_limit)
-        {
-          result["diagnostics"]["status"] = "warning";
-          result["diagnostics"]["message"] = fixed_degree_warning(phi.indicator(), p);
-          fmt::print(stderr, "rfm_solve: warning: {}\n", result["diagnostics"]["message"].get<std::string>());
-        }
+        add_warning(result, fixed_degree_warning(phi.indicator(), p));
 
       const bool finite = std::isfinite(phi.lagrange) && std::isfinite(phi.castigliano) &&
                           std::isfinite(phi.reissner);
