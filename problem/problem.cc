@@ -644,7 +644,8 @@ namespace axisym
                               "n_graded_layers", "grading_ratio", "edge_modes", "edge_cutoff",
                               "edge_extra_points", "edge_mode_degree", "local_levels",
                               "local_degree", "local_stress_degree", "local_first_box",
-                              "local_max_box"});
+                              "local_max_box", "vertex_max_exponent", "vertex_mode_degree",
+                              "vertex_cutoff"});
         if (r.has("degree") && r.has("tolerance"))
           fail("rfm", top.at("rfm"), "give rfm.degree (fixed p) or rfm.tolerance (p rises "
                                      "until the indicator is below it), not both");
@@ -686,6 +687,16 @@ namespace axisym
           p.rfm.edge_extra_points = r.integer("edge_extra_points", ranges::rfm_edge_extra_points);
         if (r.has("edge_mode_degree"))
           p.rfm.edge_mode_degree = r.integer("edge_mode_degree", ranges::rfm_edge_mode_degree);
+        if (r.has("vertex_max_exponent"))
+          p.rfm.vertex_max_exponent = r.number(
+            "vertex_max_exponent", "must be in [0, 6] (the largest Re lambda of the vertex modes; 0 is off)",
+            [](double x) { return x >= 0 && x <= 6; });
+        if (r.has("vertex_mode_degree"))
+          p.rfm.vertex_mode_degree = r.integer("vertex_mode_degree", ranges::rfm_vertex_mode_degree);
+        if (r.has("vertex_cutoff"))
+          p.rfm.vertex_cutoff = r.number(
+            "vertex_cutoff", "must be in (0, 1]: the cutoff radius as a fraction of the room around the vertex",
+            [](double x) { return x > 0 && x <= 1; });
         if (r.has("local_levels"))
           p.rfm.local_levels = r.integer("local_levels", ranges::rfm_local_levels);
         if (r.has("local_degree"))

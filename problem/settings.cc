@@ -28,6 +28,13 @@ namespace axisym
     ranges::rfm_edge_modes.check(edge_modes);
     ranges::rfm_edge_extra_points.check(edge_extra_points);
     ranges::rfm_edge_mode_degree.check(edge_mode_degree);
+    ranges::rfm_vertex_mode_degree.check(vertex_mode_degree);
+    if (!(vertex_max_exponent >= 0.0 && vertex_max_exponent <= 6.0))
+      throw InputError("rfm.vertex_max_exponent = " + std::to_string(vertex_max_exponent) +
+                       ": must be in [0, 6] (the largest Re lambda of the vertex modes; 0 is off)");
+    if (!(vertex_cutoff > 0.0 && vertex_cutoff <= 1.0))
+      throw InputError("rfm.vertex_cutoff = " + std::to_string(vertex_cutoff) +
+                       ": must be in (0, 1] (a fraction of the room around the vertex)");
     ranges::rfm_max_degree.check(max_degree);
     ranges::rfm_local_levels.check(local_levels);
     ranges::rfm_local_degree.check(local_degree);

@@ -36,6 +36,8 @@ namespace axisym
     inline constexpr IntRange rfm_edge_extra_points{"rfm.edge_extra_points", 0, 40};
     inline constexpr IntRange rfm_edge_mode_degree{
       "rfm.edge_mode_degree", 0, 6, "each edge mode times the monomials of this total degree"};
+    inline constexpr IntRange rfm_vertex_mode_degree{
+      "rfm.vertex_mode_degree", 0, 6, "each vertex mode times the monomials of this total degree"};
     inline constexpr IntRange rfm_local_levels{
       "rfm.local_levels", -1, 8, "-1: as many as the zone's size asks for; 0: none"};
     inline constexpr IntRange rfm_local_degree{"rfm.local_degree", 0, 12,
@@ -82,6 +84,14 @@ namespace axisym
     /// Each edge mode is multiplied by the monomials of the scaled offsets from the edge up
     /// to this total degree ((d + 1)(d + 2)/2 columns per mode; 0: the modes alone).
     int edge_mode_degree = 2;
+    /// Vertex enrichment (rfm/spaces/vertex_enrichment.h): at every vertex between two
+    /// straight parts where the field is singular (an exponent with Re lambda < 1), the
+    /// wedge's modes with Re lambda < vertex_max_exponent (0: off), each times the monomials
+    /// of the scaled offsets up to vertex_mode_degree, cut off at vertex_cutoff times the
+    /// room around the vertex.
+    double vertex_max_exponent = 2.0;
+    int vertex_mode_degree = 1;
+    double vertex_cutoff = 0.9;
     /// Local resolution near a die's zone (rfm/spaces/local_basis.h): nested boxes of half sizes
     /// local_first_box c, twice that, ... up to local_max_box times the section's extent
     /// along the die's part (c the zone's extent from its centre), each with the tensor

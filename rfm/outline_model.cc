@@ -4,6 +4,7 @@
 #include "rfm/hardware.h"
 #include "rfm/quadrature/section_quadrature.h"
 #include "rfm/solve/symmetric_eigen.h"
+#include "rfm/spaces/wedge_modes.h"
 
 #include <algorithm>
 #include <chrono>
@@ -192,7 +193,8 @@ namespace rfm
         local_.breaks());
     else
       quadrature_ = section_gauss(split, qo);
-    const std::vector<int> graded = make_enrichments(problem, zones, options);
+    std::vector<int> graded = make_enrichments(problem, zones, options);
+    make_vertex_enrichments(problem, options, graded);
     edge_quadrature_ = edge_gauss(structures_.body().outline, qo.n_points, graded);
     // The near-edge rules: the half disc of each enrichment's support, polar with
     // rho = rho_0 s^2 (quadrature.h), placed in its frame.
@@ -210,6 +212,15 @@ namespace rfm
               const auto x = e.frame().point(-q.z[k], -q.r[k]);
               q.r[k] = x[0], q.z[k] = x[1];
             }
+          total += q.weights.size();
+          rules.push_back(std::move(q));
+        }
+      // The vertices' rules are split into panels (radial layers, angular quarters): on each,
+      // a product of a column with a polynomial of degree p has about half that degree.
+      const int n_vertex = n_near / 2 + 2; // the stepped ring: Phi_R within 1e-10 of 40 points
+      for (const VertexEnrichment &v : vertices_)
+        {
+          Quadrature2D q = v.near_rule(n_vertex, n_vertex);
           total += q.weights.size();
           rules.push_back(std::move(q));
         }
@@ -310,7 +321,7 @@ namespace rfm
       }
     // The enrichment's displacement columns (vector fields): their own Gram matrix of values
     // and strains on the near-edge rules (their support).
-    const Eigen::Index n_e = n_edge_columns();
+    const Eigen::Index n_e = n_enrichment_columns();
     const Eigen::MatrixXd te = n_e > 0 ? orthonormal(gram_e_) : Eigen::MatrixXd(0, 0);
     Eigen::MatrixXd u_map =
       Eigen::MatrixXd::Zero(2 * n + n_e, tu[0].cols() + tu[1].cols() + te.cols());
@@ -369,7 +380,7 @@ namespace rfm
     // its worker spinning for about 0.1 s, taking a core from the next assembly's threads.
     const BlasThreadsOff one_blas_thread;
     const Eigen::Index n = n_basis_functions(), n_sb = structures_.n_boundary_columns();
-    const Eigen::Index n_b = n_stress_border(), n_e = n_edge_columns();
+    const Eigen::Index n_b = n_stress_border(), n_e = n_enrichment_columns();
     const Eigen::Index n_s = 4 * n + n_b + n_e, n_u = 2 * n + n_e;
     const Eigen::Matrix4d c = material_.compliance();
     const Quadrature2D &q = quadrature_;
@@ -538,7 +549,7 @@ namespace rfm
         const BasisValues nb = basis_values(nq.r, nq.z);
         const OutlineStressValues ns = stress_values(nq.r, nq.z);
         const DisplacementStructureValues nd = as_structure(structures_.displacement(nq.r, nq.z));
-        const EdgeColumns ec = edge_columns(nq.r, nq.z);
+        const EdgeColumns ec = enrichment_columns(nq.r, nq.z);
         Eigen::VectorXd th;
         Eigen::MatrixXd f;
         if (loads_.thermal())
@@ -571,7 +582,7 @@ namespace rfm
     const EdgeQuadrature &eq = edge_quadrature_;
     const BasisValues bb = basis_values(eq.r, eq.z);
     const OutlineDisplacementValues bd = structures_.displacement(eq.r, eq.z);
-    const EdgeColumns be = n_e > 0 ? edge_columns(eq.r, eq.z) : EdgeColumns{};
+    const EdgeColumns be = n_e > 0 ? enrichment_columns(eq.r, eq.z) : EdgeColumns{};
     for (int m = 0; m < 2; ++m)
       {
         Eigen::VectorXd t(eq.r.size());
@@ -650,25 +661,35 @@ namespace rfm
     f.strain.col(zz) = du_dz.col(1);
     f.strain.col(tt) = f.u.col(0).cwiseQuotient(r);
     f.strain.col(rz) = du_dz.col(0) + du_dr.col(1);
-    const Eigen::Index n_e = n_edge_columns();
+    const Eigen::Index n_e = n_enrichment_columns();
     if (with_enrichment && n_e > 0)
       {
-        const EdgeColumns e = edge_columns(r, z);
+        const EdgeColumns e = enrichment_columns(r, z);
         add_enrichment_fields(e, q_s_.tail(n_e), q_u_.tail(n_e), f);
       }
     return f;
   }
 
-  EdgeColumns OutlineModel::edge_columns(const Eigen::Ref<const Eigen::VectorXd> &r,
+  EdgeColumns OutlineModel::enrichment_columns(const Eigen::Ref<const Eigen::VectorXd> &r,
                                          const Eigen::Ref<const Eigen::VectorXd> &z) const
   {
     EdgeColumns all;
-    const Eigen::Index n_p = r.size(), n_e = n_edge_columns();
+    const Eigen::Index n_p = r.size(), n_e = n_enrichment_columns();
     for (auto *m : {&all.stress[0], &all.stress[1], &all.stress[2], &all.stress[3], &all.u[0],
                     &all.u[1], &all.strain[0], &all.strain[1], &all.strain[2], &all.strain[3]})
       m->resize(n_p, n_e);
     Eigen::Index at = 0;
     for (const EdgeEnrichment &en : enrichments_)
+      {
+        const EdgeColumns e = en.evaluate(r, z);
+        const Eigen::Index w = en.n_columns();
+        for (int k = 0; k < 4; ++k)
+          all.stress[k].middleCols(at, w) = e.stress[k], all.strain[k].middleCols(at, w) = e.strain[k];
+        for (int m = 0; m < 2; ++m)
+          all.u[m].middleCols(at, w) = e.u[m];
+        at += w;
+      }
+    for (const VertexEnrichment &en : vertices_)
       {
         const EdgeColumns e = en.evaluate(r, z);
         const Eigen::Index w = en.n_columns();
@@ -776,6 +797,14 @@ namespace rfm
     return n;
   }
 
+  Eigen::Index OutlineModel::n_vertex_columns() const
+  {
+    Eigen::Index n = 0;
+    for (const VertexEnrichment &e : vertices_)
+      n += e.n_columns();
+    return n;
+  }
+
 
   std::vector<int> OutlineModel::make_enrichments(const axisym::Problem &problem,
                                                   const std::vector<DieZone> &zones,
@@ -859,6 +888,72 @@ namespace rfm
     return graded;
   }
 
+  void OutlineModel::make_vertex_enrichments(const axisym::Problem &problem,
+                                             const DiscretizationOptions &options,
+                                             std::vector<int> &graded)
+  {
+    if (!(options.vertex_max_exponent > 0.0))
+      return;
+    const axisym::Body &body = *problem.body;
+    const axisym::Outline &split = structures_.body().outline;
+    const std::vector<axisym::OutlineEdge> &edges = body.outline.edges();
+    const double tol = 1e-9 * body.outline.size();
+    using Kind = axisym::PartCondition::Kind;
+    const std::vector<SingularVertex> vertices = singular_vertices(body, material_.poisson_ratio);
+    for (const SingularVertex &v : vertices)
+      {
+        // The two parts at v: straight, and no die (a zone's reach is not known before the
+        // solve; its own ends are contact edges).
+        const axisym::OutlineEdge *arriving = nullptr, *leaving = nullptr;
+        for (const axisym::OutlineEdge &e : edges)
+          {
+            if (std::hypot(e.end.r - v.at.r, e.end.z - v.at.z) < tol)
+              arriving = &e;
+            if (std::hypot(e.start.r - v.at.r, e.start.z - v.at.z) < tol)
+              leaving = &e;
+          }
+        if (!arriving || !leaving || arriving->kind != axisym::OutlineEdge::Kind::line ||
+            leaving->kind != axisym::OutlineEdge::Kind::line ||
+            body.conditions.at(arriving->part).kind == Kind::die ||
+            body.conditions.at(leaving->part).kind == Kind::die)
+          continue;
+        // The room: each face (half of it where its other end is a singular vertex too, which
+        // takes the other half), the distance to every other edge, and clear of the contact
+        // edges' supports.
+        auto singular_at = [&](const axisym::Point x) {
+          for (const SingularVertex &w : vertices)
+            if (std::hypot(w.at.r - x.r, w.at.z - x.z) < tol)
+              return true;
+          return false;
+        };
+        double room = std::min(arriving->length() * (singular_at(arriving->start) ? 0.5 : 1.0),
+                               leaving->length() * (singular_at(leaving->end) ? 0.5 : 1.0));
+        for (const axisym::OutlineEdge &e : edges)
+          if (&e != arriving && &e != leaving)
+            room = std::min(room, e.distance_to(v.at));
+        for (const EdgeEnrichment &en : enrichments_)
+          room = std::min(room, std::hypot(en.frame().r - v.at.r, en.frame().z - v.at.z) -
+                                  en.cutoff_radius());
+        if (!(room > tol))
+          continue;
+        const Wedge wedge(v.angle, wedge_face(body.conditions.at(leaving->part)),
+                          wedge_face(body.conditions.at(arriving->part)), material_.poisson_ratio);
+        std::vector<WedgeMode> modes = wedge.modes(options.vertex_max_exponent);
+        const axisym::Point t = leaving->tangent_at(0.0);
+        vertices_.emplace_back(v.at, std::array<double, 2>{t.r, t.z}, wedge, std::move(modes),
+                               options.vertex_cutoff * room, material_, options.vertex_mode_degree);
+        // The traces on the faces integrate graded toward v.
+        for (std::size_t e = 0; e < split.edges().size(); ++e)
+          {
+            const axisym::OutlineEdge &edge = split.edges()[e];
+            if (std::hypot(edge.start.r - v.at.r, edge.start.z - v.at.z) < tol)
+              graded[e] |= 1;
+            if (std::hypot(edge.end.r - v.at.r, edge.end.z - v.at.z) < tol)
+              graded[e] |= 2;
+          }
+      }
+  }
+
   std::array<double, 2> OutlineModel::edge_column_coefficients(const std::size_t i,
                                                                 const Eigen::Index j) const
   {
@@ -867,7 +962,7 @@ namespace rfm
       offset += enrichments_.at(k).n_columns();
     if (j < 0 || j >= enrichments_.at(i).n_columns())
       throw std::out_of_range("OutlineModel::edge_column_coefficients: no column " + std::to_string(j));
-    const Eigen::Index n_e = n_edge_columns();
+    const Eigen::Index n_e = n_enrichment_columns();
     return {q_s_[q_s_.size() - n_e + offset + j], q_u_[q_u_.size() - n_e + offset + j]};
   }
 
@@ -878,7 +973,7 @@ namespace rfm
       return Eigen::VectorXd(values.transpose() * q.weights.cwiseProduct(q.r));
     };
     Eigen::VectorXd sum = weighted(quadrature_, false);
-    if (n_edge_columns() > 0)
+    if (n_enrichment_columns() > 0)
       sum += weighted(near_, true) - weighted(near_, false);
     return sum;
   }
@@ -942,7 +1037,7 @@ namespace rfm
       return out;
     };
     std::array<double, 5> total = sums(quadrature_, evaluate_parts(quadrature_.r, quadrature_.z, false));
-    if (n_edge_columns() > 0)
+    if (n_enrichment_columns() > 0)
       {
         const auto full = sums(near_, evaluate_parts(near_.r, near_.z, true));
         const auto poly = sums(near_, evaluate_parts(near_.r, near_.z, false));
@@ -1024,7 +1119,7 @@ namespace rfm
       return sum;
     };
     double volume = integral(quadrature_, evaluate_parts(quadrature_.r, quadrature_.z, false), true);
-    if (n_edge_columns() > 0)
+    if (n_enrichment_columns() > 0)
       volume += integral(near_, evaluate_parts(near_.r, near_.z, true), false) -
                 integral(near_, evaluate_parts(near_.r, near_.z, false), false);
     const EdgeQuadrature &eq = edge_quadrature_;

@@ -51,6 +51,7 @@
 #include "rfm/spaces/edge_modes.h"
 #include "rfm/spaces/local_basis.h"
 #include "rfm/spaces/section_basis.h"
+#include "rfm/spaces/vertex_enrichment.h"
 #include "rfm/structures/outline_structures.h"
 
 #include <array>
@@ -150,6 +151,15 @@ namespace rfm
     /// (low end first).
     std::size_t n_zone_edges() const { return enrichments_.size(); }
     Eigen::Index n_edge_columns() const;
+    /// Vertex enrichment (vertex_enrichment.h; issue 24 item 3): at every vertex of the
+    /// outline off the axis between two straight parts without a die where the field is
+    /// singular (singular_vertices: Re lambda < 1), the wedge's modes with Re lambda <
+    /// rfm.vertex_max_exponent times the monomials up to rfm.vertex_mode_degree, cut off at
+    /// rfm.vertex_cutoff times the room (half of each face, the distance to every other edge,
+    /// clear of the contact edges' supports), as extra columns of both spaces after the edge
+    /// modes; their products are integrated on the near-vertex rules.
+    const std::vector<VertexEnrichment> &vertex_enrichments() const { return vertices_; }
+    Eigen::Index n_vertex_columns() const;
     /// The edge intensity K = sqrt(2 pi) a_1 [Pa m^1/2] at zone end i by the interaction
     /// integral (contact.h) on the half disc of radius 0.9 times the end's room. K < 0: the
     /// zone is too short there (compressive singular pressure), K > 0: too long.
@@ -202,9 +212,14 @@ namespace rfm
     FieldValues evaluate_block(const Eigen::Ref<const Eigen::VectorXd> &r,
                                const Eigen::Ref<const Eigen::VectorXd> &z, bool with_enrichment) const;
     static constexpr Eigen::Index evaluation_block = 2048;
-    /// The enrichment columns of every zone end side by side.
-    EdgeColumns edge_columns(const Eigen::Ref<const Eigen::VectorXd> &r,
-                             const Eigen::Ref<const Eigen::VectorXd> &z) const;
+    /// The enrichment columns (the tail of q_s and q_u): every zone end's, then every
+    /// vertex's.
+    Eigen::Index n_enrichment_columns() const { return n_edge_columns() + n_vertex_columns(); }
+    EdgeColumns enrichment_columns(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                   const Eigen::Ref<const Eigen::VectorXd> &z) const;
+    /// Builds vertices_ (after enrichments_) and grades the edge rule toward each vertex.
+    void make_vertex_enrichments(const axisym::Problem &problem,
+                                 const DiscretizationOptions &options, std::vector<int> &graded);
     /// Builds enrichments_ and edges_; returns, per edge of the split body, which of its ends
     /// (bit 1 start, bit 2 end) is a zone end (the edge rule is graded there).
     std::vector<int> make_enrichments(const axisym::Problem &problem,
@@ -242,7 +257,8 @@ namespace rfm
       double s = 0, into = 1, room = 0;
     };
     std::vector<ZoneEdge> edges_;
-    Quadrature2D near_;      ///< the near-edge rules of all enrichments
+    std::vector<VertexEnrichment> vertices_;
+    Quadrature2D near_;      ///< the near-edge and near-vertex rules of all enrichments
     Eigen::MatrixXd gram_e_; ///< Gram matrix of the enrichment's displacement columns
   };
 

@@ -25,6 +25,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <unistd.h>
 
@@ -353,7 +354,8 @@ namespace
     const int p = problem.rfm.degree;
     // N per component: the global polynomials' (p + 1)^2 and the local boxes' functions.
     const long n_basis = static_cast<long>(model->n_basis_functions());
-    const long n_edge = static_cast<long>(model->n_edge_columns());
+    const long n_edge = static_cast<long>(model->n_edge_columns()) +
+                        static_cast<long>(model->n_vertex_columns());
     nlohmann::json result;
     result["solver"] = "rfm";
     result["problem"] = problem.source;
@@ -363,7 +365,8 @@ namespace
       {"local_functions", model->n_local_functions()},
       {"local_boxes", model->local_basis().patches().size()},
       {"local_stress_functions", model->n_local_stress_columns()},
-      {"edge_columns", n_edge},
+      {"edge_columns", static_cast<long>(model->n_edge_columns())},
+      {"vertex_columns", static_cast<long>(model->n_vertex_columns())},
       {"unknowns", 6 * n_basis + model->n_boundary_columns() + model->n_local_stress_columns() +
                      2 * n_edge},
       {"stress_unknowns",
@@ -395,27 +398,41 @@ namespace
     if (!vertices.empty())
       {
         nlohmann::json list = nlohmann::json::array();
+        std::size_t n_enriched = 0;
         for (const rfm::SingularVertex &v : vertices)
           {
             nlohmann::json exponents = nlohmann::json::array();
             for (const rfm::WedgeMode &m : v.modes)
               exponents.push_back({m.lambda.real(), m.lambda.imag()});
+            // The enrichment at v, if the model made one (vertex_enrichment.h).
+            nlohmann::json enrichment = nullptr;
+            for (const rfm::VertexEnrichment &e : model->vertex_enrichments())
+              if (std::hypot(e.vertex().r - v.at.r, e.vertex().z - v.at.z) <= 1e-9 * problem.body->outline.size())
+                {
+                  enrichment = {{"columns", e.n_columns()},
+                                {"modes", e.modes().size()},
+                                {"cutoff_radius", e.cutoff_radius()}};
+                  ++n_enriched;
+                }
             list.push_back({{"r", v.at.r},
                             {"z", v.at.z},
                             {"angle_degrees", v.angle * 180.0 / 3.14159265358979323846},
                             {"parts", {v.part_before, v.part_after}},
-                            {"exponents", exponents}});
+                            {"exponents", exponents},
+                            {"enrichment", enrichment}});
           }
         result["diagnostics"]["singular_vertices"] = list;
         const rfm::SingularVertex &v = vertices.front();
         vertex_warning = fmt::format(
           "the stress is singular at {} {} of the section, the first at (r, z) = ({:.6g}, "
-          "{:.6g}) m between parts {} and {} (interior angle {:.1f} degrees, lambda = {:.4g}{}): the "
-          "RFM has no vertex modes yet, so stresses near it converge slowly and values there are "
+          "{:.6g}) m between parts {} and {} (interior angle {:.1f} degrees, lambda = {:.4g}{}): {} "
+          "of them carry the wedge's modes (rfm.vertex_max_exponent; a vertex on an arc or a die's "
+          "part does not yet), but stresses near a vertex still converge slowly and values there are "
           "not limits (diagnostics.singular_vertices lists all)",
           vertices.size(), vertices.size() > 1 ? "vertices" : "vertex", v.at.r, v.at.z, v.part_before,
           v.part_after, v.angle * 180.0 / 3.14159265358979323846, v.modes.front().lambda.real(),
-          v.modes.front().lambda.imag() != 0.0 ? fmt::format(" {:+.4g} i", v.modes.front().lambda.imag()) : "");
+          v.modes.front().lambda.imag() != 0.0 ? fmt::format(" {:+.4g} i", v.modes.front().lambda.imag()) : "",
+          n_enriched);
       }
     if (!solved)
       {

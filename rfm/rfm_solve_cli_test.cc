@@ -124,6 +124,11 @@ namespace
            "rfm.edge_mode_degree"},
       Case{"edge_mode_degree_large", with("/rfm", {{"edge_mode_degree", 7}}),
            "rfm.edge_mode_degree"},
+      Case{"vertex_max_exponent_negative", with("/rfm", {{"vertex_max_exponent", -1.0}}),
+           "rfm.vertex_max_exponent"},
+      Case{"vertex_mode_degree_large", with("/rfm", {{"vertex_mode_degree", 7}}),
+           "rfm.vertex_mode_degree"},
+      Case{"vertex_cutoff_zero", with("/rfm", {{"vertex_cutoff", 0.0}}), "rfm.vertex_cutoff"},
       Case{"local_stress_degree_large", with("/rfm", {{"local_stress_degree", 13}}),
            "rfm.local_stress_degree"},
       Case{"local_stress_degree_low", with("/rfm", {{"local_stress_degree", -2}}),
@@ -294,6 +299,10 @@ namespace
     EXPECT_NEAR(v.at("angle_degrees").get<double>(), 270.0, 1e-9);
     EXPECT_NEAR(v.at("exponents")[0][0].get<double>(), 0.5444837, 1e-7);
     EXPECT_NEAR(v.at("exponents")[1][0].get<double>(), 0.9085292, 1e-7);
+    // The vertex carries its modes (the defaults: Re lambda < 2, times 1, xi, eta).
+    ASSERT_FALSE(v.at("enrichment").is_null());
+    EXPECT_GE(v.at("enrichment").at("modes").get<int>(), 2);
+    EXPECT_GT(v.at("enrichment").at("cutoff_radius").get<double>(), 0.0);
   }
 
   // A die on an outline part: the paper's die written as an outline (the half section, not

@@ -1,0 +1,217 @@
+#include "rfm/spaces/vertex_enrichment.h"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <stdexcept>
+
+namespace rfm
+{
+  namespace
+  {
+    constexpr double pi = 3.14159265358979323846;
+  }
+
+  VertexEnrichment::VertexEnrichment(const axisym::Point at,
+                                     const std::array<double, 2> leaving_direction,
+                                     const Wedge &wedge, std::vector<WedgeMode> modes,
+                                     const double cutoff_radius, const Material &material,
+                                     const int multiplier_degree)
+    : at_(at)
+    , beta_(std::atan2(leaving_direction[1], leaving_direction[0]) + wedge.half_angle())
+    , wedge_(wedge)
+    , modes_(std::move(modes))
+    , cutoff_radius_(cutoff_radius)
+    , material_(material)
+    , multiplier_degree_(multiplier_degree)
+  {
+    if (!(cutoff_radius > 0.0))
+      throw std::invalid_argument("VertexEnrichment: the cutoff radius must be positive");
+    if (multiplier_degree < 0)
+      throw std::invalid_argument("VertexEnrichment: the multiplier degree must be >= 0");
+    if (!(std::hypot(leaving_direction[0], leaving_direction[1]) > 0.0))
+      throw std::invalid_argument("VertexEnrichment: the face direction must not be zero");
+  }
+
+  Eigen::Index VertexEnrichment::n_fields() const
+  {
+    Eigen::Index n = 0;
+    for (const WedgeMode &m : modes_)
+      n += m.lambda.imag() == 0.0 ? 1 : 2;
+    return n;
+  }
+
+  EdgeColumns VertexEnrichment::evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                         const Eigen::Ref<const Eigen::VectorXd> &z) const
+  {
+    const Eigen::Index n = r.size(), m = n_columns(), per = columns_per_field();
+    EdgeColumns out;
+    for (auto &s : out.stress)
+      s.setZero(n, m);
+    for (auto &s : out.strain)
+      s.setZero(n, m);
+    for (auto &u : out.u)
+      u.setZero(n, m);
+    const double nu = material_.poisson_ratio;
+    const double mu = material_.youngs_modulus / (2.0 * (1.0 + nu));
+    const int d = multiplier_degree_;
+    std::vector<double> xi_pow(d + 1), eta_pow(d + 1);
+    // One real field at a point: (sigma_rr, sigma_zz, sigma_tt, sigma_rz), the plane strains
+    // (e_rr, e_zz, gamma_rz) and (u_r, u_z), all per unit amplitude, u already over mu.
+    struct Field
+    {
+      double s[4], e[3], u[2];
+    };
+    std::vector<Field> fields(static_cast<std::size_t>(n_fields()));
+    for (Eigen::Index k = 0; k < n; ++k)
+      {
+        const double dr = r[k] - at_.r, dz = z[k] - at_.z;
+        const double rho = std::hypot(dr, dz);
+        const Cutoff chi = edge_cutoff(rho, cutoff_radius_);
+        if (chi.value == 0.0 && chi.derivative == 0.0)
+          continue;
+        const double phi = std::atan2(dz, dr);
+        double theta = phi - beta_;
+        theta -= 2.0 * pi * std::round(theta / (2.0 * pi)); // into [-pi, pi]
+        const double c = std::cos(phi), s = std::sin(phi);
+        std::size_t f = 0;
+        for (const WedgeMode &mode : modes_)
+          {
+            const bool singular = mode.lambda.real() < 1.0;
+            WedgeFieldValues v{};
+            if (rho > 0.0)
+              v = wedge_.evaluate(mode, rho, theta);
+            for (int part = 0; part < (mode.lambda.imag() == 0.0 ? 1 : 2); ++part, ++f)
+              {
+                auto take = [part](const std::complex<double> x) { return part == 0 ? x.real() : x.imag(); };
+                const double s_pp = take(v.s_rr), s_tt = take(v.s_tt), s_pt = take(v.s_rt);
+                const double u_p = take(v.u_r), u_t = take(v.u_t);
+                Field &fl = fields[f];
+                // Polar to meridian components (phi the direction of the point from v).
+                const double s_rr = s_pp * c * c + s_tt * s * s - 2.0 * s_pt * c * s;
+                const double s_zz = s_pp * s * s + s_tt * c * c + 2.0 * s_pt * c * s;
+                const double s_rz = (s_pp - s_tt) * c * s + s_pt * (c * c - s * s);
+                const bool no_value = rho == 0.0 && singular;
+                fl.s[rr] = no_value ? 0.0 : s_rr;
+                fl.s[zz] = no_value ? 0.0 : s_zz;
+                fl.s[tt] = no_value ? 0.0 : nu * (s_rr + s_zz);
+                fl.s[rz] = no_value ? 0.0 : s_rz;
+                // Plane-strain Hooke's law (the displacement of mu = 1 scaled by 1 / mu).
+                const double tr = nu * (fl.s[rr] + fl.s[zz]);
+                fl.e[0] = (fl.s[rr] - tr) / (2.0 * mu);
+                fl.e[1] = (fl.s[zz] - tr) / (2.0 * mu);
+                fl.e[2] = fl.s[rz] / mu;
+                fl.u[0] = (u_p * c - u_t * s) / mu;
+                fl.u[1] = (u_p * s + u_t * c) / mu;
+              }
+          }
+        // grad chi = chi'(rho) (dr, dz) / rho (chi'(0) = 0).
+        const double chi_r = rho > 0.0 ? chi.derivative * dr / rho : 0.0;
+        const double chi_z = rho > 0.0 ? chi.derivative * dz / rho : 0.0;
+        const double xi = dr / cutoff_radius_, eta = dz / cutoff_radius_;
+        xi_pow[0] = eta_pow[0] = 1.0;
+        for (int i = 1; i <= d; ++i)
+          {
+            xi_pow[i] = xi_pow[i - 1] * xi;
+            eta_pow[i] = eta_pow[i - 1] * eta;
+          }
+        for (std::size_t j = 0; j < fields.size(); ++j)
+          {
+            const Field &fl = fields[j];
+            Eigen::Index col = static_cast<Eigen::Index>(j) * per;
+            for (int deg = 0; deg <= d; ++deg)
+              for (int b = 0; b <= deg; ++b, ++col)
+                {
+                  // g = chi xi^a eta^b (a + b = deg) and its gradient.
+                  const int a = deg - b;
+                  const double mono = xi_pow[a] * eta_pow[b];
+                  const double mono_r = a > 0 ? a * xi_pow[a - 1] * eta_pow[b] / cutoff_radius_ : 0.0;
+                  const double mono_z = b > 0 ? b * xi_pow[a] * eta_pow[b - 1] / cutoff_radius_ : 0.0;
+                  const double g = chi.value * mono;
+                  const double g_r = chi_r * mono + chi.value * mono_r;
+                  const double g_z = chi_z * mono + chi.value * mono_z;
+                  for (int comp = 0; comp < n_stress_components; ++comp)
+                    out.stress[comp](k, col) = g * fl.s[comp];
+                  out.u[0](k, col) = g * fl.u[0];
+                  out.u[1](k, col) = g * fl.u[1];
+                  // e(g u) = g e(u) + sym(grad g (x) u), engineering shear.
+                  out.strain[rr](k, col) = g * fl.e[0] + g_r * fl.u[0];
+                  out.strain[zz](k, col) = g * fl.e[1] + g_z * fl.u[1];
+                  out.strain[tt](k, col) = g * fl.u[0] / r[k];
+                  out.strain[rz](k, col) = g * fl.e[2] + g_z * fl.u[0] + g_r * fl.u[1];
+                }
+          }
+      }
+    return out;
+  }
+
+  Quadrature2D VertexEnrichment::near_rule(const int n_radial, const int n_angular,
+                                           const int n_layers) const
+  {
+    if (n_radial < 1 || n_angular < 1 || n_layers < 0)
+      throw std::invalid_argument("VertexEnrichment::near_rule: point counts must be positive");
+    const double alpha = wedge_.half_angle();
+    // Angular breaks: the faces, and at a reflex vertex the faces' lines continued into the
+    // body (theta = +-(pi - alpha)), where the omegas of the trimmed faces have a kink.
+    std::vector<double> breaks{-alpha, alpha};
+    if (alpha > 0.5 * pi + 1e-12)
+      breaks.push_back(pi - alpha), breaks.push_back(alpha - pi);
+    std::sort(breaks.begin(), breaks.end());
+    std::vector<double> panels;
+    for (std::size_t i = 0; i + 1 < breaks.size(); ++i)
+      {
+        const double a = breaks[i], b = breaks[i + 1];
+        if (!(b - a > 1e-12))
+          continue;
+        const int pieces = static_cast<int>(std::ceil((b - a) / (0.5 * pi) - 1e-9));
+        for (int k = 0; k < pieces; ++k)
+          panels.push_back(a + (b - a) * k / pieces);
+      }
+    panels.push_back(alpha);
+    // Radial layers [0.2^(i+1), 0.2^i] rho_0, the innermost [0, 0.2^L rho_0] with rho = rho_in s^2.
+    std::vector<double> layers{cutoff_radius_};
+    for (int i = 0; i < n_layers; ++i)
+      layers.push_back(layers.back() * 0.2);
+    layers.push_back(0.0);
+    const GaussRule1D gr = gauss_legendre(n_radial), ga = gauss_legendre(n_angular);
+    std::vector<double> rho_nodes, rho_weights; // weights include the Jacobian rho
+    for (std::size_t i = 0; i + 1 < layers.size(); ++i)
+      {
+        const double hi = layers[i], lo = layers[i + 1];
+        for (Eigen::Index k = 0; k < gr.nodes.size(); ++k)
+          {
+            const double s = 0.5 * (gr.nodes[k] + 1.0), ws = 0.5 * gr.weights[k];
+            double rho, drho;
+            if (lo == 0.0)
+              rho = hi * s * s, drho = 2.0 * hi * s;
+            else
+              rho = lo + (hi - lo) * s, drho = hi - lo;
+            rho_nodes.push_back(rho);
+            rho_weights.push_back(ws * drho * rho);
+          }
+      }
+    Quadrature2D q;
+    const Eigen::Index n_points =
+      static_cast<Eigen::Index>(rho_nodes.size()) * (static_cast<Eigen::Index>(panels.size()) - 1) * n_angular;
+    q.r.resize(n_points), q.z.resize(n_points), q.weights.resize(n_points);
+    Eigen::Index at = 0;
+    for (std::size_t p = 0; p + 1 < panels.size(); ++p)
+      {
+        const double a = panels[p], b = panels[p + 1];
+        for (Eigen::Index k = 0; k < ga.nodes.size(); ++k)
+          {
+            const double theta = a + (b - a) * 0.5 * (ga.nodes[k] + 1.0);
+            const double w_theta = (b - a) * 0.5 * ga.weights[k];
+            const double phi = theta + beta_;
+            const double c = std::cos(phi), s = std::sin(phi);
+            for (std::size_t i = 0; i < rho_nodes.size(); ++i, ++at)
+              {
+                q.r[at] = at_.r + rho_nodes[i] * c;
+                q.z[at] = at_.z + rho_nodes[i] * s;
+                q.weights[at] = w_theta * rho_weights[i];
+              }
+          }
+      }
+    return q;
+  }
+} // namespace rfm

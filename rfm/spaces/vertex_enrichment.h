@@ -1,0 +1,85 @@
+// Vertex enrichment (issue 24 item 3): the wedge modes of a singular vertex of the section
+// (wedge_modes.h) times a cutoff, as extra columns of both spaces, in the column form of the
+// contact-edge modes (edge_modes.h: EdgeColumns).
+//
+// At a vertex v where two straight parts meet at the interior angle 2 alpha, polar
+// coordinates (rho, theta) about v with theta = 0 on the bisector and theta = -alpha on the
+// face of the part that leaves v (the outline runs counter-clockwise, the body on its left),
+// theta = +alpha on the face of the part that arrives. Each mode rho^lambda F(theta) gives,
+// for a complex lambda, two real columns (its real and imaginary parts), for a real one one.
+// A column is g(r, z) times the mode's plane-strain field in the meridian components:
+//
+//   stress:       g (sigma_rr, sigma_zz, sigma_tt, sigma_rz), sigma_tt = nu (sigma_rr + sigma_zz)
+//                 (the out-of-plane stress of plane strain, as the edge modes);
+//   displacement: g u / mu, strains e(g u / mu) with e_tt = g u_r / (mu r);
+//
+// g = chi(rho) m(r, z): chi the C2 quintic cutoff of edge_modes.h (1 at v, 0 from rho_0 on)
+// and m one of the monomials xi^i eta^j (i + j <= d) of the scaled offsets xi = (r - r_v) /
+// rho_0, eta = (z - z_v) / rho_0, which carry the hoop terms O(rho / r) and the higher terms
+// of the vertex expansion that the modes alone leave to polynomials times omega. A scalar
+// factor keeps the face conditions of every mode (traction free, clamped, symmetry), so the
+// structures stay boundary-exact when the support, the disc of radius rho_0 about v, meets
+// the boundary only on the two faces (rho_0 below the faces' lengths and the distance to every
+// other edge; OutlineModel chooses it).
+#pragma once
+
+#include "rfm/material.h"
+#include "rfm/quadrature/quadrature.h"
+#include "rfm/spaces/edge_modes.h"
+#include "rfm/spaces/wedge_modes.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace rfm
+{
+  class VertexEnrichment
+  {
+  public:
+    /// The vertex at `at`, the unit direction of the face of the part leaving it (theta =
+    /// -alpha), the wedge (its angle and faces, face_minus that of the leaving part), the
+    /// modes to enrich with (Wedge::modes), the cutoff radius rho_0 > 0 and the multiplier
+    /// degree d >= 0.
+    VertexEnrichment(axisym::Point at, std::array<double, 2> leaving_direction, const Wedge &wedge,
+                     std::vector<WedgeMode> modes, double cutoff_radius, const Material &material,
+                     int multiplier_degree = 0);
+
+    const axisym::Point &vertex() const { return at_; }
+    double cutoff_radius() const { return cutoff_radius_; }
+    const Wedge &wedge() const { return wedge_; }
+    const std::vector<WedgeMode> &modes() const { return modes_; }
+    int multiplier_degree() const { return multiplier_degree_; }
+    /// The real fields: one per real exponent, two per complex one (real, imaginary part).
+    Eigen::Index n_fields() const;
+    Eigen::Index columns_per_field() const
+    {
+      return (multiplier_degree_ + 1) * (multiplier_degree_ + 2) / 2;
+    }
+    /// Columns: for each field (modes in order; real part, then imaginary part) every
+    /// monomial, ordered by i + j, then by j.
+    Eigen::Index n_columns() const { return n_fields() * columns_per_field(); }
+
+    /// The columns at points (zero outside the support). At the vertex itself the singular
+    /// terms have no value: stresses and strains with Re lambda < 1 are returned as 0 there.
+    EdgeColumns evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
+                         const Eigen::Ref<const Eigen::VectorXd> &z) const;
+
+    /// The near-vertex rule: the sector of the support in the body, polar about the vertex,
+    /// in angular panels of at most pi / 2 with n_angular Gauss points each, and radially in
+    /// geometric layers toward the vertex (ratio 0.2, n_layers of them, n_radial points each;
+    /// the innermost layer with rho = rho_in s^2), so that the products of two singular
+    /// columns (rho^(2 Re lambda - 2), integrable) and of a column with the polynomials are
+    /// integrated to the assembly's accuracy. Plain area weights dr dz.
+    Quadrature2D near_rule(int n_radial, int n_angular, int n_layers = 8) const;
+
+  private:
+    axisym::Point at_;
+    double beta_; ///< the bisector's angle in the (r, z) plane
+    Wedge wedge_;
+    std::vector<WedgeMode> modes_;
+    double cutoff_radius_;
+    Material material_;
+    int multiplier_degree_;
+  };
+} // namespace rfm

@@ -1,0 +1,207 @@
+// The vertex enrichment's columns (vertex_enrichment.h): strains the derivatives of the
+// displacement columns, the face conditions of every column on both faces, zero outside the
+// support, and the near-vertex rule exact for the sector's singular integrands.
+#include "rfm/spaces/vertex_enrichment.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace rfm
+{
+  namespace
+  {
+    constexpr double pi = 3.14159265358979323846;
+
+    Material steel()
+    {
+      Material m;
+      m.youngs_modulus = 2.1e11;
+      m.poisson_ratio = 0.3;
+      return m;
+    }
+
+    // The stepped ring's re-entrant vertex (0.15, 0.1): the part "step_side" arrives going
+    // down (-e_z), the part "step" leaves going -e_r; the body's wedge of 270 degrees is
+    // everything but the quadrant r < 0.15, z > 0.1.
+    struct Case
+    {
+      axisym::Point at{0.15, 0.1};
+      std::array<double, 2> leaving{{-1.0, 0.0}}, arriving{{0.0, -1.0}};
+      double angle = 1.5 * pi;
+    };
+
+    VertexEnrichment make(const Case &c, const WedgeFace leaving_face, const WedgeFace arriving_face,
+                          const int degree, const double rho_0 = 0.04)
+    {
+      const Wedge w(c.angle, leaving_face, arriving_face, 0.3);
+      return VertexEnrichment(c.at, c.leaving, w, w.modes(2.5), rho_0, steel(), degree);
+    }
+
+    // Points along a face at the distance t from the vertex, in the face's direction d.
+    Eigen::VectorXd along(const double origin, const double d, const Eigen::VectorXd &t)
+    {
+      return (origin + d * t.array()).matrix();
+    }
+  } // namespace
+
+  TEST(VertexEnrichment, StrainsAreTheDerivativesOfTheDisplacementColumns)
+  {
+    const Case c;
+    const VertexEnrichment v = make(c, WedgeFace::free, WedgeFace::free, 2);
+    ASSERT_GT(v.n_columns(), 0);
+    // Points inside the wedge, at 0.2 to 0.9 rho_0, on both sides of the bisector.
+    const Eigen::VectorXd r = (Eigen::VectorXd(5) << 0.16, 0.13, 0.17, 0.14, 0.12).finished();
+    const Eigen::VectorXd z = (Eigen::VectorXd(5) << 0.11, 0.09, 0.08, 0.07, 0.095).finished();
+    const double h = 1e-7;
+    const Eigen::VectorXd one = Eigen::VectorXd::Ones(r.size());
+    const EdgeColumns e = v.evaluate(r, z);
+    const EdgeColumns rp = v.evaluate(r + h * one, z), rm = v.evaluate(r - h * one, z);
+    const EdgeColumns zp = v.evaluate(r, z + h * one), zm = v.evaluate(r, z - h * one);
+    for (Eigen::Index j = 0; j < v.n_columns(); ++j)
+      for (Eigen::Index k = 0; k < r.size(); ++k)
+        {
+          const double scale = e.strain[0].col(j).cwiseAbs().maxCoeff() +
+                               e.strain[1].col(j).cwiseAbs().maxCoeff() +
+                               e.strain[3].col(j).cwiseAbs().maxCoeff();
+          const double e_rr = (rp.u[0](k, j) - rm.u[0](k, j)) / (2 * h);
+          const double e_zz = (zp.u[1](k, j) - zm.u[1](k, j)) / (2 * h);
+          const double g_rz = (zp.u[0](k, j) - zm.u[0](k, j)) / (2 * h) +
+                              (rp.u[1](k, j) - rm.u[1](k, j)) / (2 * h);
+          EXPECT_NEAR(e.strain[0](k, j), e_rr, 1e-6 * scale) << "column " << j << " point " << k;
+          EXPECT_NEAR(e.strain[1](k, j), e_zz, 1e-6 * scale) << "column " << j << " point " << k;
+          EXPECT_NEAR(e.strain[3](k, j), g_rz, 1e-6 * scale) << "column " << j << " point " << k;
+          EXPECT_NEAR(e.strain[2](k, j), e.u[0](k, j) / r[k], 1e-12 * scale);
+        }
+    // The stresses are the plane-strain stresses of the strains where the cutoff and the
+    // multiplier are constant: at the vertex's neighbourhood, for the constant multiplier.
+    const Material m = steel();
+    const double mu = m.youngs_modulus / (2 * (1 + m.poisson_ratio)), lame = 2 * mu * 0.3 / 0.4;
+    const Eigen::VectorXd r0 = (Eigen::VectorXd(1) << 0.1502).finished();
+    const Eigen::VectorXd z0 = (Eigen::VectorXd(1) << 0.0999).finished();
+    const EdgeColumns n = v.evaluate(r0, z0);
+    for (Eigen::Index j = 0; j < v.n_columns(); j += v.columns_per_field())
+      {
+        const double e_rr = n.strain[0](0, j), e_zz = n.strain[1](0, j), g = n.strain[3](0, j);
+        const double scale = n.stress[0].col(j).cwiseAbs().maxCoeff() + n.stress[1].col(j).cwiseAbs().maxCoeff();
+        // chi'(rho) ~ rho^2 / rho_0^3 is negligible at rho = 2.2e-4.
+        EXPECT_NEAR(n.stress[0](0, j), lame * (e_rr + e_zz) + 2 * mu * e_rr, 1e-5 * scale);
+        EXPECT_NEAR(n.stress[1](0, j), lame * (e_rr + e_zz) + 2 * mu * e_zz, 1e-5 * scale);
+        EXPECT_NEAR(n.stress[3](0, j), mu * g, 1e-5 * scale);
+        EXPECT_NEAR(n.stress[2](0, j), 0.3 * (n.stress[0](0, j) + n.stress[1](0, j)), 1e-12 * scale);
+      }
+  }
+
+  TEST(VertexEnrichment, EveryColumnMeetsBothFaceConditions)
+  {
+    const Case c;
+    const Eigen::VectorXd t = Eigen::VectorXd::LinSpaced(9, 0.002, 0.039);
+    // Face of "step" (leaving, -e_r from v, normal e_z) and of "step_side" (arriving: the
+    // face runs from v toward +e_z, normal -e_r... the face lies at r = 0.15, z > 0.1).
+    const Eigen::VectorXd r_a = along(c.at.r, -1.0, t), z_a = Eigen::VectorXd::Constant(t.size(), c.at.z);
+    const Eigen::VectorXd r_b = Eigen::VectorXd::Constant(t.size(), c.at.r), z_b = along(c.at.z, 1.0, t);
+    struct Faces
+    {
+      WedgeFace leaving, arriving;
+    };
+    for (const Faces f : {Faces{WedgeFace::free, WedgeFace::free}, Faces{WedgeFace::clamped, WedgeFace::free},
+                          Faces{WedgeFace::symmetry, WedgeFace::clamped}, Faces{WedgeFace::free, WedgeFace::symmetry}})
+      {
+        const VertexEnrichment v = make(c, f.leaving, f.arriving, 1);
+        ASSERT_GT(v.n_columns(), 0);
+        const EdgeColumns a = v.evaluate(r_a, z_a), b = v.evaluate(r_b, z_b);
+        const EdgeColumns inside = v.evaluate(Eigen::VectorXd::Constant(1, 0.16), Eigen::VectorXd::Constant(1, 0.09));
+        for (Eigen::Index j = 0; j < v.n_columns(); ++j)
+          {
+            const double s_scale = a.stress[0].col(j).cwiseAbs().maxCoeff() + a.stress[1].col(j).cwiseAbs().maxCoeff() +
+                                   b.stress[0].col(j).cwiseAbs().maxCoeff() + b.stress[1].col(j).cwiseAbs().maxCoeff() +
+                                   std::abs(inside.stress[0](0, j)) + std::abs(inside.stress[1](0, j));
+            const double u_scale = a.u[0].col(j).cwiseAbs().maxCoeff() + a.u[1].col(j).cwiseAbs().maxCoeff() +
+                                   b.u[0].col(j).cwiseAbs().maxCoeff() + b.u[1].col(j).cwiseAbs().maxCoeff() +
+                                   std::abs(inside.u[0](0, j)) + std::abs(inside.u[1](0, j));
+            ASSERT_GT(s_scale, 0.0);
+            ASSERT_GT(u_scale, 0.0);
+            // Leaving face z = 0.1 (normal e_z): traction (sigma_rz, sigma_zz); u_z normal.
+            for (Eigen::Index k = 0; k < t.size(); ++k)
+              {
+                switch (f.leaving)
+                  {
+                    case WedgeFace::free:
+                      EXPECT_LT(std::abs(a.stress[3](k, j)), 1e-10 * s_scale);
+                      EXPECT_LT(std::abs(a.stress[1](k, j)), 1e-10 * s_scale);
+                      break;
+                    case WedgeFace::clamped:
+                      EXPECT_LT(std::abs(a.u[0](k, j)), 1e-10 * u_scale);
+                      EXPECT_LT(std::abs(a.u[1](k, j)), 1e-10 * u_scale);
+                      break;
+                    case WedgeFace::symmetry:
+                      EXPECT_LT(std::abs(a.u[1](k, j)), 1e-10 * u_scale);
+                      EXPECT_LT(std::abs(a.stress[3](k, j)), 1e-10 * s_scale);
+                      break;
+                  }
+                // Arriving face r = 0.15 (normal -e_r): traction (sigma_rr, sigma_rz); u_r normal.
+                switch (f.arriving)
+                  {
+                    case WedgeFace::free:
+                      EXPECT_LT(std::abs(b.stress[0](k, j)), 1e-10 * s_scale);
+                      EXPECT_LT(std::abs(b.stress[3](k, j)), 1e-10 * s_scale);
+                      break;
+                    case WedgeFace::clamped:
+                      EXPECT_LT(std::abs(b.u[0](k, j)), 1e-10 * u_scale);
+                      EXPECT_LT(std::abs(b.u[1](k, j)), 1e-10 * u_scale);
+                      break;
+                    case WedgeFace::symmetry:
+                      EXPECT_LT(std::abs(b.u[0](k, j)), 1e-10 * u_scale);
+                      EXPECT_LT(std::abs(b.stress[3](k, j)), 1e-10 * s_scale);
+                      break;
+                  }
+              }
+          }
+      }
+  }
+
+  TEST(VertexEnrichment, ZeroOutsideTheSupportAndSingularAtTheVertex)
+  {
+    const Case c;
+    const VertexEnrichment v = make(c, WedgeFace::free, WedgeFace::free, 0);
+    // The 270-degree free-free wedge: lambda = 0.5444837 and 0.9085292, then complex ones.
+    ASSERT_GE(v.modes().size(), 2u);
+    EXPECT_NEAR(v.modes()[0].lambda.real(), 0.5444837, 1e-6);
+    const Eigen::VectorXd r = (Eigen::VectorXd(2) << 0.15 + 0.0401, 0.15 + 1e-6).finished();
+    const Eigen::VectorXd z = (Eigen::VectorXd(2) << 0.1, 0.1 - 1e-6).finished();
+    const EdgeColumns e = v.evaluate(r, z);
+    for (int k = 0; k < 4; ++k)
+      EXPECT_EQ(e.stress[k].row(0).cwiseAbs().maxCoeff(), 0.0);
+    // The first column's stress grows like rho^(lambda - 1) toward the vertex.
+    const Eigen::VectorXd r2 = (Eigen::VectorXd(2) << 0.15 + 1e-6, 0.15 + 1e-8).finished();
+    const Eigen::VectorXd z2 = (Eigen::VectorXd(2) << 0.1 - 1e-6, 0.1 - 1e-8).finished();
+    const EdgeColumns s = v.evaluate(r2, z2);
+    const double ratio = std::abs(s.stress[0](1, 0) / s.stress[0](0, 0));
+    EXPECT_NEAR(std::log(ratio) / std::log(100.0), 1.0 - 0.5444837, 1e-6);
+  }
+
+  TEST(VertexEnrichment, NearRuleIntegratesTheSectorsSingularIntegrands)
+  {
+    const Case c;
+    const double rho_0 = 0.04;
+    const VertexEnrichment v = make(c, WedgeFace::free, WedgeFace::free, 0, rho_0);
+    const Quadrature2D q = v.near_rule(12, 12);
+    // Every point in the wedge and in the disc.
+    for (Eigen::Index k = 0; k < q.n_points(); ++k)
+      {
+        const double dr = q.r[k] - c.at.r, dz = q.z[k] - c.at.z;
+        EXPECT_LE(std::hypot(dr, dz), rho_0 * (1 + 1e-12));
+        EXPECT_FALSE(dr < -1e-14 && dz > 1e-14) << "a point in the missing quadrant";
+      }
+    // int rho^a dA over the sector = 1.5 pi rho_0^(a + 2) / (a + 2), for the products of two
+    // singular stresses (a = 2 lambda - 2 = -0.911) and smoother ones.
+    for (const double a : {0.0, 2 * 0.5444837 - 2, 0.5444837 - 1, 3.0})
+      {
+        double sum = 0;
+        for (Eigen::Index k = 0; k < q.n_points(); ++k)
+          sum += q.weights[k] * std::pow(std::hypot(q.r[k] - c.at.r, q.z[k] - c.at.z), a);
+        const double exact = 1.5 * pi * std::pow(rho_0, a + 2) / (a + 2);
+        EXPECT_NEAR(sum / exact, 1.0, 1e-10) << "a = " << a;
+      }
+  }
+} // namespace rfm
