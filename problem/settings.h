@@ -38,6 +38,8 @@ namespace axisym
       "rfm.edge_mode_degree", 0, 6, "each edge mode times the monomials of this total degree"};
     inline constexpr IntRange rfm_vertex_mode_degree{
       "rfm.vertex_mode_degree", 0, 6, "each vertex mode times the monomials of this total degree"};
+    inline constexpr IntRange rfm_vertex_local_degree{
+      "rfm.vertex_local_degree", -1, 12, "the vertex's smooth stress columns; -1: none"};
     inline constexpr IntRange rfm_local_levels{
       "rfm.local_levels", -1, 8, "-1: as many as the zone's size asks for; 0: none"};
     inline constexpr IntRange rfm_local_degree{"rfm.local_degree", 0, 12,
@@ -89,9 +91,12 @@ namespace axisym
     /// wedge's modes with Re lambda < vertex_max_exponent (0: off), each times the monomials
     /// of the scaled offsets up to vertex_mode_degree, cut off at vertex_cutoff times the
     /// room around the vertex.
-    double vertex_max_exponent = 2.0;
+    double vertex_max_exponent = 3.0;
     int vertex_mode_degree = 1;
-    double vertex_cutoff = 0.9;
+    double vertex_cutoff = 1.0;
+    /// The vertex's smooth stress-only columns: the cutoff times the monomials up to this
+    /// degree times the tensors that meet both faces' conditions (-1: none).
+    int vertex_local_degree = 4;
     /// Local resolution near a die's zone (rfm/spaces/local_basis.h): nested boxes of half sizes
     /// local_first_box c, twice that, ... up to local_max_box times the section's extent
     /// along the die's part (c the zone's extent from its centre), each with the tensor

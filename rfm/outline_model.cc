@@ -941,7 +941,8 @@ namespace rfm
         std::vector<WedgeMode> modes = wedge.modes(options.vertex_max_exponent);
         const axisym::Point t = leaving->tangent_at(0.0);
         vertices_.emplace_back(v.at, std::array<double, 2>{t.r, t.z}, wedge, std::move(modes),
-                               options.vertex_cutoff * room, material_, options.vertex_mode_degree);
+                               options.vertex_cutoff * room, material_, options.vertex_mode_degree,
+                               options.vertex_local_degree);
         // The traces on the faces integrate graded toward v.
         for (std::size_t e = 0; e < split.edges().size(); ++e)
           {

@@ -16,7 +16,7 @@ namespace rfm
                                      const std::array<double, 2> leaving_direction,
                                      const Wedge &wedge, std::vector<WedgeMode> modes,
                                      const double cutoff_radius, const Material &material,
-                                     const int multiplier_degree)
+                                     const int multiplier_degree, const int local_degree)
     : at_(at)
     , beta_(std::atan2(leaving_direction[1], leaving_direction[0]) + wedge.half_angle())
     , wedge_(wedge)
@@ -24,6 +24,7 @@ namespace rfm
     , cutoff_radius_(cutoff_radius)
     , material_(material)
     , multiplier_degree_(multiplier_degree)
+    , local_degree_(local_degree)
   {
     if (!(cutoff_radius > 0.0))
       throw std::invalid_argument("VertexEnrichment: the cutoff radius must be positive");
@@ -31,6 +32,53 @@ namespace rfm
       throw std::invalid_argument("VertexEnrichment: the multiplier degree must be >= 0");
     if (!(std::hypot(leaving_direction[0], leaving_direction[1]) > 0.0))
       throw std::invalid_argument("VertexEnrichment: the face direction must not be zero");
+    // The faces: leaving along beta - alpha, arriving along beta + alpha.
+    const double alpha = wedge.half_angle();
+    std::array<double, 2> t[2];
+    for (int f = 0; f < 2; ++f)
+      {
+        const double a = beta_ + (f == 0 ? -alpha : alpha);
+        t[f] = {std::cos(a), std::sin(a)};
+        normal_[f] = {-t[f][1], t[f][0]};
+      }
+    // The smooth stress families that meet both faces' conditions: with l_f the face's line
+    // function (1 for a clamped face, which has none) and A_f the tensors that meet face f's
+    // condition on it (free: t t; symmetry: t t and n n), l_0 l_1 E (E the three unit
+    // tensors), l_1 A_0 and l_0 A_1 (a clamped face's A is E, whose family l_other E the
+    // first one already is), and the hoop stress.
+    const WedgeFace face[2] = {wedge.face_minus(), wedge.face_plus()};
+    auto factor = [&](const int f) { return face[f] == WedgeFace::clamped ? 0 : (1 << f); };
+    auto dyad = [](const std::array<double, 2> &a) {
+      return std::array<double, 3>{a[0] * a[0], a[1] * a[1], a[0] * a[1]};
+    };
+    for (const std::array<double, 3> e : {std::array<double, 3>{1, 0, 0}, std::array<double, 3>{0, 1, 0},
+                                          std::array<double, 3>{0, 0, 1}})
+      families_.push_back({e, factor(0) | factor(1), false});
+    for (int f = 0; f < 2; ++f)
+      {
+        if (face[f] == WedgeFace::clamped)
+          continue;
+        families_.push_back({dyad(t[f]), factor(1 - f), false});
+        if (face[f] == WedgeFace::symmetry)
+          families_.push_back({dyad(normal_[f]), factor(1 - f), false});
+      }
+    families_.push_back({{0, 0, 0}, 0, true});
+    // Displacements: e_r and e_z times l_f of each face where u is constrained (clamped or
+    // symmetry), and on a symmetry face its tangent times the other face's factor.
+    auto constrained = [&](const int f) { return face[f] == WedgeFace::free ? 0 : (1 << f); };
+    vector_families_.push_back({{1, 0}, constrained(0) | constrained(1)});
+    vector_families_.push_back({{0, 1}, constrained(0) | constrained(1)});
+    for (int f = 0; f < 2; ++f)
+      if (face[f] == WedgeFace::symmetry)
+        vector_families_.push_back({t[f], constrained(1 - f)});
+  }
+
+  Eigen::Index VertexEnrichment::n_local_columns() const
+  {
+    if (local_degree_ < 0)
+      return 0;
+    return static_cast<Eigen::Index>(std::max(families_.size(), vector_families_.size())) *
+           (local_degree_ + 1) * (local_degree_ + 2) / 2;
   }
 
   Eigen::Index VertexEnrichment::n_fields() const
@@ -141,6 +189,73 @@ namespace rfm
                   out.strain[rz](k, col) = g * fl.e[2] + g_z * fl.u[0] + g_r * fl.u[1];
                 }
           }
+        // The local stress columns: chi q (l_0 / rho_0)^a (l_1 / rho_0)^b T.
+        Eigen::Index col = n_mode_columns();
+        const double l[2] = {(dr * normal_[0][0] + dz * normal_[0][1]) / cutoff_radius_,
+                             (dr * normal_[1][0] + dz * normal_[1][1]) / cutoff_radius_};
+        for (int deg = 0; deg <= local_degree_; ++deg)
+          for (int b = 0; b <= deg; ++b)
+            {
+              double q = chi.value;
+              for (int i = 0; i < deg - b; ++i)
+                q *= xi;
+              for (int i = 0; i < b; ++i)
+                q *= eta;
+              // q's gradient (chi and the monomial).
+              const int a_pow = deg - b;
+              double mono = 1.0, mono_r = 0.0, mono_z = 0.0;
+              for (int i = 0; i < a_pow; ++i)
+                mono *= xi;
+              for (int i = 0; i < b; ++i)
+                mono *= eta;
+              if (a_pow > 0)
+                mono_r = a_pow * std::pow(xi, a_pow - 1) * std::pow(eta, b) / cutoff_radius_;
+              if (b > 0)
+                mono_z = b * std::pow(xi, a_pow) * std::pow(eta, b - 1) / cutoff_radius_;
+              const Eigen::Index first = col;
+              for (std::size_t v = 0; v < vector_families_.size(); ++v)
+                {
+                  const VectorFamily &fam = vector_families_[v];
+                  // g = chi mono L, L the product of the scaled line functions.
+                  double lf = 1.0, lf_r = 0.0, lf_z = 0.0;
+                  for (int f = 0; f < 2; ++f)
+                    if (fam.factors & (1 << f))
+                      {
+                        const double nr = normal_[f][0] / cutoff_radius_, nz = normal_[f][1] / cutoff_radius_;
+                        lf_r = lf_r * l[f] + lf * nr;
+                        lf_z = lf_z * l[f] + lf * nz;
+                        lf *= l[f];
+                      }
+                  const double g = chi.value * mono * lf;
+                  const double g_r = chi_r * mono * lf + chi.value * (mono_r * lf + mono * lf_r);
+                  const double g_z = chi_z * mono * lf + chi.value * (mono_z * lf + mono * lf_z);
+                  const Eigen::Index c = first + static_cast<Eigen::Index>(v);
+                  out.u[0](k, c) = g * fam.vector[0];
+                  out.u[1](k, c) = g * fam.vector[1];
+                  out.strain[rr](k, c) = g_r * fam.vector[0];
+                  out.strain[zz](k, c) = g_z * fam.vector[1];
+                  out.strain[tt](k, c) = g * fam.vector[0] / r[k];
+                  out.strain[rz](k, c) = g_z * fam.vector[0] + g_r * fam.vector[1];
+                }
+              for (const Family &fam : families_)
+                {
+                  double w = q;
+                  if (fam.factors & 1)
+                    w *= l[0];
+                  if (fam.factors & 2)
+                    w *= l[1];
+                  if (fam.hoop)
+                    out.stress[tt](k, col) = w;
+                  else
+                    {
+                      out.stress[rr](k, col) = w * fam.tensor[0];
+                      out.stress[zz](k, col) = w * fam.tensor[1];
+                      out.stress[rz](k, col) = w * fam.tensor[2];
+                    }
+                  ++col;
+                }
+              col = first + static_cast<Eigen::Index>(std::max(families_.size(), vector_families_.size()));
+            }
       }
     return out;
   }

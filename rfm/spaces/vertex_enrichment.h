@@ -43,7 +43,7 @@ namespace rfm
     /// degree d >= 0.
     VertexEnrichment(axisym::Point at, std::array<double, 2> leaving_direction, const Wedge &wedge,
                      std::vector<WedgeMode> modes, double cutoff_radius, const Material &material,
-                     int multiplier_degree = 0);
+                     int multiplier_degree = 0, int local_degree = -1);
 
     const axisym::Point &vertex() const { return at_; }
     double cutoff_radius() const { return cutoff_radius_; }
@@ -58,7 +58,14 @@ namespace rfm
     }
     /// Columns: for each field (modes in order; real part, then imaginary part) every
     /// monomial, ordered by i + j, then by j.
-    Eigen::Index n_columns() const { return n_fields() * columns_per_field(); }
+    Eigen::Index n_mode_columns() const { return n_fields() * columns_per_field(); }
+    /// The local stress columns after the modes' (local_degree >= 0): chi q T with q a
+    /// monomial xi^i eta^j (i + j <= local_degree) and T one of the smooth tensor families
+    /// that meet both face conditions; the first of them pair with the smooth displacement
+    /// columns chi q V (V a constant vector times the line functions of the faces where the
+    /// displacement is constrained), the others have a zero displacement column.
+    Eigen::Index n_local_columns() const;
+    Eigen::Index n_columns() const { return n_mode_columns() + n_local_columns(); }
 
     /// The columns at points (zero outside the support). At the vertex itself the singular
     /// terms have no value: stresses and strains with Re lambda < 1 are returned as 0 there.
@@ -81,5 +88,23 @@ namespace rfm
     double cutoff_radius_;
     Material material_;
     int multiplier_degree_;
+    int local_degree_;
+    /// A smooth stress family: (rr, zz, rz) tensor constants, the faces whose line function
+    /// multiplies it (bit 1: the leaving face, bit 2: the arriving face), or the hoop stress.
+    struct Family
+    {
+      std::array<double, 3> tensor{{0, 0, 0}};
+      int factors = 0;
+      bool hoop = false;
+    };
+    std::vector<Family> families_;
+    /// A smooth displacement family: a constant vector times the line functions of `factors`.
+    struct VectorFamily
+    {
+      std::array<double, 2> vector{{0, 0}};
+      int factors = 0;
+    };
+    std::vector<VectorFamily> vector_families_;
+    std::array<double, 2> normal_[2]; ///< unit normals of the leaving, arriving face
   };
 } // namespace rfm

@@ -81,6 +81,8 @@ namespace rfm
     /// The mode's fields at a point.
     WedgeFieldValues evaluate(const WedgeMode &mode, double rho, double theta) const;
     double half_angle() const { return alpha_; }
+    WedgeFace face_minus() const { return minus_; }
+    WedgeFace face_plus() const { return plus_; }
 
   private:
     Eigen::Matrix4cd matrix(std::complex<double> lambda) const;
