@@ -398,7 +398,8 @@ namespace
     if (!vertices.empty())
       {
         nlohmann::json list = nlohmann::json::array();
-        std::size_t n_enriched = 0;
+        const rfm::SingularVertex *bare = nullptr; // the first vertex without columns
+        std::size_t n_bare = 0;
         for (const rfm::SingularVertex &v : vertices)
           {
             nlohmann::json exponents = nlohmann::json::array();
@@ -408,12 +409,14 @@ namespace
             nlohmann::json enrichment = nullptr;
             for (const rfm::VertexEnrichment &e : model->vertex_enrichments())
               if (std::hypot(e.vertex().r - v.at.r, e.vertex().z - v.at.z) <= 1e-9 * problem.body->outline.size())
-                {
-                  enrichment = {{"columns", e.n_columns()},
-                                {"modes", e.modes().size()},
-                                {"cutoff_radius", e.cutoff_radius()}};
-                  ++n_enriched;
-                }
+                enrichment = {{"columns", e.n_columns()},
+                              {"modes", e.modes().size()},
+                              {"cutoff_radius", e.cutoff_radius()}};
+            if (enrichment.is_null())
+              {
+                bare = bare ? bare : &v;
+                ++n_bare;
+              }
             list.push_back({{"r", v.at.r},
                             {"z", v.at.z},
                             {"angle_degrees", v.angle * 180.0 / 3.14159265358979323846},
@@ -422,17 +425,19 @@ namespace
                             {"enrichment", enrichment}});
           }
         result["diagnostics"]["singular_vertices"] = list;
-        const rfm::SingularVertex &v = vertices.front();
-        vertex_warning = fmt::format(
-          "the stress is singular at {} {} of the section, the first at (r, z) = ({:.6g}, "
-          "{:.6g}) m between parts {} and {} (interior angle {:.1f} degrees, lambda = {:.4g}{}): {} "
-          "of them carry the wedge's modes (rfm.vertex_max_exponent; a vertex on an arc or a die's "
-          "part does not yet), but stresses near a vertex still converge slowly and values there are "
-          "not limits (diagnostics.singular_vertices lists all)",
-          vertices.size(), vertices.size() > 1 ? "vertices" : "vertex", v.at.r, v.at.z, v.part_before,
-          v.part_after, v.angle * 180.0 / 3.14159265358979323846, v.modes.front().lambda.real(),
-          v.modes.front().lambda.imag() != 0.0 ? fmt::format(" {:+.4g} i", v.modes.front().lambda.imag()) : "",
-          n_enriched);
+        // A vertex with its columns converges like the rest (the indicator sees it); one
+        // without (on an arc, on a die's part, or switched off) does not: say so.
+        if (bare)
+          vertex_warning = fmt::format(
+            "the stress is singular at {} {} of the section without the vertex's columns (on an "
+            "arc or a die's part, or rfm.vertex_max_exponent = 0), the first at (r, z) = ({:.6g}, "
+            "{:.6g}) m between parts {} and {} (interior angle {:.1f} degrees, lambda = {:.4g}{}): "
+            "stresses near it converge slowly and values there are not limits "
+            "(diagnostics.singular_vertices lists all)",
+            n_bare, n_bare > 1 ? "vertices" : "vertex", bare->at.r, bare->at.z, bare->part_before,
+            bare->part_after, bare->angle * 180.0 / 3.14159265358979323846, bare->modes.front().lambda.real(),
+            bare->modes.front().lambda.imag() != 0.0 ? fmt::format(" {:+.4g} i", bare->modes.front().lambda.imag())
+                                                     : "");
       }
     if (!solved)
       {

@@ -279,31 +279,53 @@ namespace
   // both faces) warns and lists the vertex with Williams' exponents (issue 24 item 6). (Its
   // indicator is 1.3e-2 at p = 24: rfm.tolerance 1e-3 is not reached, exit 3, and that
   // message names the vertex too.)
-  TEST(RfmSolveCli, SingularVertexWarns)
+  // The stepped ring's 270-degree vertex carries its columns: listed with them, and no vertex
+  // warning (the fixed degree's indicator, 2.3e-3 at p = 6 here, warns on its own); with the
+  // columns switched off the vertex warns.
+  TEST(RfmSolveCli, SingularVertexWarnsWithoutItsColumns)
   {
     const fs::path dir = fs::temp_directory_path() / "rfm_cli_vertex";
     fs::remove_all(dir);
     fs::create_directories(dir);
     const fs::path in = dir / "problem.json", out = dir / "result.json";
-    std::ofstream(in) << axisym::testing::stepped_ring().dump();
-    const Outcome o = run(in.string() + " --degree 6 --output " + out.string());
-    EXPECT_EQ(o.status, 0) << o.err;
-    std::ifstream f(out);
-    const nlohmann::json r = nlohmann::json::parse(f);
-    const nlohmann::json &d = r.at("diagnostics");
-    EXPECT_EQ(d.at("status"), "warning");
-    EXPECT_NE(d.at("message").get<std::string>().find("singular"), std::string::npos);
-    ASSERT_EQ(d.at("singular_vertices").size(), 1u);
-    const nlohmann::json &v = d.at("singular_vertices")[0];
-    EXPECT_NEAR(v.at("r").get<double>(), 0.15, 1e-12);
-    EXPECT_NEAR(v.at("angle_degrees").get<double>(), 270.0, 1e-9);
-    EXPECT_NEAR(v.at("exponents")[0][0].get<double>(), 0.5444837, 1e-7);
-    EXPECT_NEAR(v.at("exponents")[1][0].get<double>(), 0.9085292, 1e-7);
-    // The vertex carries its modes (the defaults: Re lambda < 2, times 1, xi, eta).
-    ASSERT_FALSE(v.at("enrichment").is_null());
-    EXPECT_GE(v.at("enrichment").at("modes").get<int>(), 2);
-    EXPECT_GT(v.at("enrichment").at("cutoff_radius").get<double>(), 0.0);
+    nlohmann::json problem = axisym::testing::stepped_ring();
+    std::ofstream(in) << problem.dump();
+    {
+      const Outcome o = run(in.string() + " --degree 6 --output " + out.string());
+      EXPECT_EQ(o.status, 0) << o.err;
+      std::ifstream f(out);
+      const nlohmann::json r = nlohmann::json::parse(f);
+      const nlohmann::json &d = r.at("diagnostics");
+      EXPECT_EQ(d.at("status"), "warning");
+      EXPECT_EQ(d.at("message").get<std::string>().find("singular"), std::string::npos);
+      ASSERT_EQ(d.at("singular_vertices").size(), 1u);
+      const nlohmann::json &v = d.at("singular_vertices")[0];
+      EXPECT_NEAR(v.at("r").get<double>(), 0.15, 1e-12);
+      EXPECT_NEAR(v.at("angle_degrees").get<double>(), 270.0, 1e-9);
+      EXPECT_NEAR(v.at("exponents")[0][0].get<double>(), 0.5444837, 1e-7);
+      EXPECT_NEAR(v.at("exponents")[1][0].get<double>(), 0.9085292, 1e-7);
+      // The defaults: the modes with Re lambda < 3 and the local columns.
+      ASSERT_FALSE(v.at("enrichment").is_null());
+      EXPECT_GE(v.at("enrichment").at("modes").get<int>(), 2);
+      EXPECT_GT(v.at("enrichment").at("cutoff_radius").get<double>(), 0.0);
+      EXPECT_EQ(r.at("discretization").at("vertex_columns"), v.at("enrichment").at("columns"));
+    }
+    problem["rfm"] = {{"vertex_max_exponent", 0.0}};
+    std::ofstream(in) << problem.dump();
+    {
+      const Outcome o = run(in.string() + " --degree 6 --output " + out.string());
+      EXPECT_EQ(o.status, 0) << o.err;
+      EXPECT_NE(o.err.find("singular"), std::string::npos) << o.err;
+      std::ifstream f(out);
+      const nlohmann::json r = nlohmann::json::parse(f);
+      const nlohmann::json &d = r.at("diagnostics");
+      EXPECT_EQ(d.at("status"), "warning");
+      EXPECT_NE(d.at("message").get<std::string>().find("singular"), std::string::npos);
+      EXPECT_TRUE(d.at("singular_vertices")[0].at("enrichment").is_null());
+      EXPECT_EQ(r.at("discretization").at("vertex_columns"), 0);
+    }
   }
+
 
   // A die on an outline part: the paper's die written as an outline (the half section, not
   // mirrored: its force is half the body's), solved on a given zone; the zone's search is

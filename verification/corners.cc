@@ -1,0 +1,139 @@
+// corners: RFM and FEM on sections with a singular vertex (issue 24), where the global
+// polynomials alone converge slowly or not at all.
+//
+//   1. The stepped ring (an L-shaped section: a 270-degree re-entrant vertex between two free
+//      faces, lambda = 0.5445) under inner pressure.
+//   2. A solid cylinder clamped on its base and pulled on its end (the 90-degree vertex
+//      between the clamped base and the free surface, lambda = 0.7112).
+//
+// For each: the RFM at the default settings (the vertex's modes and local columns,
+// rfm/spaces/vertex_enrichment.h) and without the vertex's columns, against p; the FEM (Q2 on
+// gmsh meshes, uniform refinement) against the level L with Richardson's estimate of the
+// energy's limit from the last three levels; the RFM's Phi_R against that limit and its
+// sample stresses against the finest FEM level (the samples lie away from the vertex; the
+// values on the axis are left out: issue 24 item 5).
+//
+// Sample run:
+//   build/bin/corners --mode quick --output-dir build/verification-output
+#include "fem_reference/axisymmetric_fem.h"
+#include "problem/problem.h"
+#include "rfm/outline_model.h"
+#include "verification/driver.h"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace
+{
+  nlohmann::json corner_case(const verification::DriverContext &context, const std::string &file,
+                             const std::vector<int> &degrees, const std::vector<int> &levels)
+  {
+    const axisym::Problem problem = axisym::read_problem_file(context.problem_path(file));
+    nlohmann::json c = {{"problem_file", "verification/problems/" + file}};
+    fmt::print("\n== {} ==\n", file);
+
+    // The FEM: energy against L, Richardson from the last three levels.
+    std::vector<double> energies;
+    std::vector<std::array<double, 4>> fem_samples;
+    for (const int level : levels)
+      {
+        fem::FemOptions o = fem::options_from_problem(problem);
+        o.refinements = level;
+        o.progress = false;
+        const fem::FemResult f = fem::solve(problem, o);
+        if (!f.success)
+          throw verification::NumericalFailure(file + " FEM L = " + std::to_string(level) + ": " + f.message);
+        const double phi = f.functionals.reissner;
+        fmt::print("FEM Q2 L = {}: Phi_R = {:.10e} J/rad ({} dofs, {:.1f} s)\n", level, phi, f.n_dofs,
+                   f.total_seconds);
+        nlohmann::json samples = nlohmann::json::array();
+        fem_samples.clear();
+        for (const fem::FieldSample &s : f.samples)
+          {
+            samples.push_back({{"r", s.r}, {"z", s.z}, {"sigma", s.sigma}});
+            fem_samples.push_back(s.sigma);
+          }
+        c["fem"]["L" + std::to_string(level)] = {
+          {"reissner", phi}, {"dofs", f.n_dofs}, {"seconds", f.total_seconds}, {"samples", samples}};
+        energies.push_back(phi);
+      }
+    const std::size_t n = energies.size();
+    const double d1 = energies[n - 2] - energies[n - 3], d2 = energies[n - 1] - energies[n - 2];
+    if (!(d1 != 0.0 && d2 != 0.0 && d1 / d2 > 1.0))
+      throw verification::NumericalFailure(file + ": the FEM's energies do not converge monotonically");
+    const double limit = energies[n - 1] + d2 / (d1 / d2 - 1.0);
+    c["fem"]["observed_order_energy"] = std::log2(d1 / d2);
+    c["fem"]["extrapolated_energy"] = limit;
+    c["fem"]["estimated_error_relative"] = std::abs(energies[n - 1] - limit) / std::abs(limit);
+    fmt::print("FEM extrapolated Phi = {:.10e} J/rad (observed order {:.2f} in energy, finest level "
+               "{:.2e} from it)\n",
+               limit, std::log2(d1 / d2), std::abs(energies[n - 1] - limit) / std::abs(limit));
+    // The samples' scale: the largest stress component at any sample of the finest level.
+    double scale = 0.0;
+    for (const auto &s : fem_samples)
+      for (const double x : s)
+        scale = std::max(scale, std::abs(x));
+
+    Eigen::VectorXd r(static_cast<Eigen::Index>(problem.samples.size())), z(r.size());
+    for (std::size_t k = 0; k < problem.samples.size(); ++k)
+      r[static_cast<Eigen::Index>(k)] = problem.samples[k][0], z[static_cast<Eigen::Index>(k)] = problem.samples[k][1];
+    for (const bool enriched : {true, false})
+      {
+        const std::string key = enriched ? "rfm" : "rfm_without_vertex_columns";
+        for (const int p : degrees)
+          {
+            rfm::DiscretizationOptions o = problem.rfm;
+            o.degree = p;
+            o.tolerance.reset();
+            if (!enriched)
+              o.vertex_max_exponent = 0.0;
+            const rfm::OutlineModel m(problem, o);
+            if (!m.ok())
+              throw verification::NumericalFailure(file + ", p = " + std::to_string(p) + ": " +
+                                                   m.summary().message);
+            const rfm::Functionals f = m.functionals();
+            const rfm::FieldValues v = m.evaluate(r, z);
+            double sample_error = 0.0;
+            for (Eigen::Index k = 0; k < r.size(); ++k)
+              for (int comp = 0; comp < 4; ++comp)
+                sample_error = std::max(sample_error,
+                                        std::abs(v.sigma(k, comp) - fem_samples[static_cast<std::size_t>(k)][comp]));
+            sample_error /= scale;
+            const double seconds = m.assembly_seconds() + m.solve_seconds();
+            const double energy_error = std::abs(f.reissner - limit) / std::abs(limit);
+            fmt::print("RFM{} p = {:>2}: Phi_R {:.10e} ({:.2e} from the FEM's limit), indicator {:.2e}, "
+                       "samples {:.2e} of max |sigma| from the FEM's, {} vertex columns ({:.1f} s)\n",
+                       enriched ? "" : " without vertex columns", p, f.reissner, energy_error,
+                       f.indicator(), sample_error, m.n_vertex_columns(), seconds);
+            c[key]["p" + std::to_string(p)] = {{"reissner", f.reissner},
+                                               {"lagrange", f.lagrange},
+                                               {"castigliano", f.castigliano},
+                                               {"indicator", f.indicator()},
+                                               {"energy_error_relative", energy_error},
+                                               {"sample_error_relative", sample_error},
+                                               {"vertex_columns", m.n_vertex_columns()},
+                                               {"seconds", seconds}};
+          }
+      }
+    return c;
+  }
+} // namespace
+
+nlohmann::json run(const verification::DriverContext &context)
+{
+  nlohmann::json results = {{"driver", "corners"}, {"mode", context.mode}};
+  const bool full = context.full();
+  const std::vector<int> degrees = full ? std::vector<int>{8, 12, 16} : std::vector<int>{8, 12};
+  results["stepped_ring"] = corner_case(context, "stepped_ring_pressure.json", degrees, {2, 3, 4});
+  results["clamped_cylinder"] = corner_case(context, "clamped_cylinder_tension.json", degrees, {2, 3, 4});
+  return results;
+}
+
+int main(int argc, char **argv)
+{
+  return verification::run_driver(argc, argv, "corners",
+                                  "RFM and FEM on sections with a singular vertex", run);
+}
