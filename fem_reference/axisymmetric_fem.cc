@@ -172,6 +172,7 @@ namespace fem
               result.n_base_cells = n_base_cells_;
               result.base_mesh_subdivided = base_mesh_subdivided_;
               result.base_mesh_flat_corners = base_mesh_flat_corners_;
+              result.graded_vertices = vertex_grading_;
               std::ostringstream line;
               line.precision(6);
               line << (body_.mirrored ? "half section (mirrored)" : "outline section")

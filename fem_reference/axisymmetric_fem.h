@@ -89,7 +89,9 @@
 //      controlled die), and the deltas that give the asked forces follow from a small linear
 //      system at every active-set step: no outer iteration.
 //    force_trace = -2 pi int (n.s_h n) r ds over the part in both modes.
-//    Mesh: after the L global refinements, the cells within half the zone's length of the
+//    Mesh (every problem): after the L global refinements, the cells at each singular
+//    vertex of the outline are graded toward it (FemOptions::grade_toward_vertices).
+//    Mesh (dies): after the L global refinements, the cells within half the zone's length of the
 //    zone are refined until they are die_zone_cells * 2^L across the zone (unless the global
 //    mesh already has at least half that density there), then the cells at each free end of
 //    the zone die_edge_refinements times more (hanging nodes constrained). Unilateral: pass 0
@@ -131,6 +133,14 @@ namespace fem
     /// halvings of the cells at each free end of the zone (axisymmetric_fem.h, "Dies").
     int die_zone_cells = 4;
     int die_edge_refinements = 3;
+    /// Geometric grading toward every singular vertex of the outline (axisym::singular_vertices:
+    /// an exponent with Re lambda < 1; problem/wedge_modes.h): after the global refinements the
+    /// cells at the vertex are halved k more times, each halving of the cells within two
+    /// diameters of it, with k such that the smallest cell h_min meets
+    /// (h_min / l)^lambda = (h_L / l)^p (l the outline's size, h_L the level's nominal size,
+    /// p the degree): the singular term's share of the energy error then falls as fast as
+    /// the smooth part's (h^2p), at the cost of a few cells per halving. false: uniform.
+    bool grade_toward_vertices = true;
     /// Cells along the shortest outline edge in the base mesh (h0 = its length / this;
     /// outline_mesh.h).
     double outline_cells_on_shortest_edge = 4;
@@ -238,6 +248,9 @@ namespace fem
     /// 180 degree corner on the boundary, a singular Jacobian there) that remain after the
     /// generator's retries with more cells (fem_reference/README.md). 0 is the normal case.
     unsigned int base_mesh_flat_corners = 0;
+    /// FemOptions::grade_toward_vertices: each singular vertex graded toward, as (r, z,
+    /// lambda, extra halvings).
+    std::vector<std::array<double, 4>> graded_vertices;
     Functionals functionals;
     std::optional<ContactResult> contact; ///< the first die
     std::vector<ContactResult> other_dies; ///< the second and later dies (outline parts)

@@ -2,6 +2,8 @@
 // hollow-cylinder form's half section is one), and the refinement toward dies.
 #include "fem_reference/axisymmetric_solver.h"
 
+#include "problem/wedge_modes.h"
+
 namespace fem::internal
 {
   // 1. Mesh: the gmsh base mesh of the outline, the manifold of its edge on every boundary
@@ -116,6 +118,7 @@ namespace fem::internal
       triangulation_.set_manifold(cell_manifold, FlatManifold<2>());
     triangulation_.refine_global(level_);
     refine_toward_dies();
+    refine_toward_vertices();
     snap_zone_ends();
 
     // MappingQ(p) represents the arcs; on a polygon (the hollow cylinder's rectangle, most
@@ -235,6 +238,38 @@ namespace fem::internal
                 });
               }
           }
+      }
+  }
+
+  void AxisymmetricSolver::refine_toward_vertices()
+  {
+    vertex_grading_.clear();
+    if (!options_.grade_toward_vertices)
+      return;
+    const double l = body_.outline.size(), h = base_mesh_size_ / std::pow(2.0, level_);
+    for (const axisym::SingularVertex &v :
+         axisym::singular_vertices(body_, problem_.material.poisson_ratio))
+      {
+        const double lambda = v.modes.front().lambda.real();
+        // (h_min / l)^lambda = (h / l)^p: log2(h / h_min) = (p / lambda - 1) log2(l / h).
+        const double halvings = (options_.degree / lambda - 1.0) * std::log2(l / h);
+        const int k = std::clamp(static_cast<int>(std::ceil(halvings)), 0, 40);
+        const Point<2> x(v.at.r, v.at.z);
+        for (int j = 1; j <= k; ++j)
+          {
+            const double hj = h / std::pow(2.0, j);
+            for (int round = 0; round < 8; ++round)
+              {
+                bool any = false;
+                for (const auto &cell : triangulation_.active_cell_iterators())
+                  if (cell->diameter() / std::sqrt(2.0) > 1.01 * hj && cell->center().distance(x) < 2.0 * cell->diameter())
+                    cell->set_refine_flag(), any = true;
+                if (!any)
+                  break;
+                triangulation_.execute_coarsening_and_refinement();
+              }
+          }
+        vertex_grading_.push_back({v.at.r, v.at.z, lambda, static_cast<double>(k)});
       }
   }
 

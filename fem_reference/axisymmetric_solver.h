@@ -354,6 +354,8 @@ namespace fem::internal
     void fix_die_zones();
     /// Refines toward the dies' zones after the global refinements.
     void refine_toward_dies();
+    /// FemOptions::grade_toward_vertices; the vertices and their halvings in vertex_grading_.
+    void refine_toward_vertices();
     enum class Mode
     {
       none,
@@ -436,6 +438,8 @@ namespace fem::internal
     // Declared after the triangulation: the cache listens to its signals.
     std::unique_ptr<Mapping<2>> mapping_;
     double base_mesh_size_ = 0;
+    /// The singular vertices graded toward: (r, z, lambda, halvings).
+    std::vector<std::array<double, 4>> vertex_grading_;
     unsigned long n_base_cells_ = 0;
     bool base_mesh_subdivided_ = false;
     unsigned int base_mesh_flat_corners_ = 0;

@@ -35,7 +35,8 @@ namespace fem
       {"cells", r.n_cells},
       {"mesh", r.mesh_generator},
       {"refinement_rule", "L global refinements of the gmsh base mesh, new vertices on the "
-                          "arcs (manifolds), MappingQ(degree); refined toward the dies' zones"},
+                          "arcs (manifolds), MappingQ(degree); refined toward the dies' zones "
+                          "and graded toward the singular vertices (graded_vertices)"},
       {"base_cells", r.n_base_cells},
       {"base_mesh_size", r.base_mesh_size},
       {"base_cells_on_shortest_edge", options.outline_cells_on_shortest_edge},
@@ -47,6 +48,10 @@ namespace fem
                     ? "upper half z in [0, length/2] as an outline, mirrored in z = 0 (the "
                       "functionals, forces and norms are the whole body's)"
                     : "the outline as given (geometry.outline), no mirroring"}};
+    j["discretization"]["graded_vertices"] = nlohmann::json::array();
+    for (const auto &g : r.graded_vertices)
+      j["discretization"]["graded_vertices"].push_back(
+        {{"r", g[0]}, {"z", g[1]}, {"lambda", g[2]}, {"halvings", static_cast<int>(g[3])}});
     j["diagnostics"] = {{"status", r.success ? "ok" : "failed"}, {"message", r.message}};
     if (r.stress_l2_error)
       {

@@ -1250,11 +1250,13 @@ def corners_section(corners, out_dir):
     vertex's columns against the FEM's Richardson limit of the energy."""
     md = ["## 9. Sections with a singular vertex (`corners`)", "",
           "Where the boundary turns inward or its condition changes, the elastic field has terms "
-          "rho^lambda F(theta) with Re lambda < 1 (`rfm/spaces/wedge_modes.h`). At every such vertex between "
+          "rho^lambda F(theta) with Re lambda < 1 (`problem/wedge_modes.h`). At every such vertex between "
           "two straight parts the RFM adds the wedge's modes times a cutoff and smooth local columns "
           "that meet both faces' conditions (`rfm/spaces/vertex_enrichment.h`; `rfm.vertex_*`). The "
-          "FEM refines uniformly, so its energy converges at 2 lambda; its limit is Richardson's "
-          "estimate from the last three levels. Samples lie away from the vertex (and off the axis, "
+          "FEM grades its mesh toward the same vertices (`FemOptions::grade_toward_vertices`: "
+          "(p / lambda - 1) log2(l / h) extra halvings at the vertex, so that the singular term's "
+          "share of the error falls like the smooth part's); its energy limit is Richardson's "
+          "estimate from the last three levels, at the observed order given with it. Samples lie away from the vertex (and off the axis, "
           "where values are not yet controlled: issue 24 item 5); their error is the largest "
           "component's difference from the FEM's finest level over the largest sample stress.", ""]
     cases = [("stepped_ring", "9.1 The stepped ring: a 270-degree re-entrant vertex between two free faces"),

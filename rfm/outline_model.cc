@@ -4,7 +4,7 @@
 #include "rfm/hardware.h"
 #include "rfm/quadrature/section_quadrature.h"
 #include "rfm/solve/symmetric_eigen.h"
-#include "rfm/spaces/wedge_modes.h"
+#include "problem/wedge_modes.h"
 
 #include <algorithm>
 #include <chrono>

@@ -18,7 +18,7 @@
 #include "rfm/contact/outline_contact.h"
 #include "rfm/fields/vtu_output.h"
 #include "rfm/outline_model.h"
-#include "rfm/spaces/wedge_modes.h"
+#include "problem/wedge_modes.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>

@@ -8,8 +8,8 @@
 //
 // For each: the RFM at the default settings (the vertex's modes and local columns,
 // rfm/spaces/vertex_enrichment.h) and without the vertex's columns, against p; the FEM (Q2 on
-// gmsh meshes, uniform refinement) against the level L with Richardson's estimate of the
-// energy's limit from the last three levels; the RFM's Phi_R against that limit and its
+// gmsh meshes graded toward the vertex, FemOptions::grade_toward_vertices) against the level
+// L with Richardson's estimate of the energy's limit from the last three levels; the RFM's Phi_R against that limit and its
 // sample stresses against the finest FEM level (the samples lie away from the vertex; the
 // values on the axis are left out: issue 24 item 5).
 //

@@ -26,7 +26,7 @@
 #include "rfm/material.h"
 #include "rfm/quadrature/quadrature.h"
 #include "rfm/spaces/edge_modes.h"
-#include "rfm/spaces/wedge_modes.h"
+#include "problem/wedge_modes.h"
 
 #include <Eigen/Core>
 
@@ -34,6 +34,16 @@
 
 namespace rfm
 {
+  // The wedge analysis lives in the problem layer (both solvers read it: the FEM grades its
+  // mesh toward the same vertices).
+  using axisym::singular_vertices;
+  using axisym::SingularVertex;
+  using axisym::Wedge;
+  using axisym::WedgeFace;
+  using axisym::wedge_face;
+  using axisym::WedgeFieldValues;
+  using axisym::WedgeMode;
+
   class VertexEnrichment
   {
   public:

@@ -40,7 +40,7 @@
 #include <string>
 #include <vector>
 
-namespace rfm
+namespace axisym
 {
   enum class WedgeFace
   {
@@ -85,6 +85,8 @@ namespace rfm
     WedgeFace face_plus() const { return plus_; }
 
   private:
+    /// modes() without the memo.
+    std::vector<WedgeMode> find_modes(double max_real_part) const;
     Eigen::Matrix4cd matrix(std::complex<double> lambda) const;
     double alpha_, kappa_;
     WedgeFace minus_, plus_;
@@ -95,7 +97,7 @@ namespace rfm
   /// Re lambda < 1 (the stress is singular there).
   struct SingularVertex
   {
-    axisym::Point at;
+    Point at;
     double angle = 0; ///< interior angle [rad]
     std::string part_before, part_after;
     std::vector<WedgeMode> modes;
@@ -105,10 +107,10 @@ namespace rfm
   /// free for traction-free, pressure, traction and die parts (a die zone that reaches its
   /// part's corner is not known before the solve; the zone's own ends are contact edges,
   /// edge_modes.h), clamped for a prescribed displacement, symmetry for a symmetry line.
-  WedgeFace wedge_face(const axisym::PartCondition &condition);
+  WedgeFace wedge_face(const PartCondition &condition);
 
   /// Every vertex of the body's outline off the axis where the elastic field is singular
   /// (Re lambda < 1 for some exponent of its wedge), in the outline's order. Where a traction
   /// jumps at a vertex the particular field has logarithms this does not see (issue 24 item 4).
-  std::vector<SingularVertex> singular_vertices(const axisym::Body &body, double poisson_ratio);
-} // namespace rfm
+  std::vector<SingularVertex> singular_vertices(const Body &body, double poisson_ratio);
+} // namespace axisym

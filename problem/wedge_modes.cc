@@ -1,13 +1,16 @@
-#include "rfm/spaces/wedge_modes.h"
+#include "problem/wedge_modes.h"
 
 #include <Eigen/LU>
 #include <Eigen/SVD>
 
 #include <algorithm>
+#include <map>
+#include <mutex>
+#include <tuple>
 #include <cmath>
 #include <stdexcept>
 
-namespace rfm
+namespace axisym
 {
   namespace
   {
@@ -66,6 +69,27 @@ namespace rfm
   cd Wedge::characteristic(const cd lambda) const { return matrix(lambda).determinant(); }
 
   std::vector<WedgeMode> Wedge::modes(const double max_real_part) const
+  {
+    // Remembered per wedge: every model of a contact search asks for the same vertices again
+    // (6 ms per rectangle without the memo; the search converges to the same roots).
+    using Key = std::tuple<double, double, int, int, double>;
+    static std::map<Key, std::vector<WedgeMode>> memo;
+    static std::mutex memo_mutex;
+    const Key key{alpha_, kappa_, static_cast<int>(minus_), static_cast<int>(plus_), max_real_part};
+    {
+      const std::lock_guard<std::mutex> lock(memo_mutex);
+      const auto it = memo.find(key);
+      if (it != memo.end())
+        return it->second;
+    }
+    std::vector<WedgeMode> out = find_modes(max_real_part);
+    const std::lock_guard<std::mutex> lock(memo_mutex);
+    if (memo.size() < 4096)
+      memo.emplace(key, out);
+    return out;
+  }
+
+  std::vector<WedgeMode> Wedge::find_modes(const double max_real_part) const
   {
     std::vector<cd> roots;
     for (double re = 0.05; re <= max_real_part + 0.05; re += 0.1)
@@ -146,9 +170,9 @@ namespace rfm
     return v;
   }
 
-  WedgeFace wedge_face(const axisym::PartCondition &condition)
+  WedgeFace wedge_face(const PartCondition &condition)
   {
-    using Kind = axisym::PartCondition::Kind;
+    using Kind = PartCondition::Kind;
     switch (condition.kind)
       {
         case Kind::displacement:
@@ -161,25 +185,25 @@ namespace rfm
       }
   }
 
-  std::vector<SingularVertex> singular_vertices(const axisym::Body &body, const double poisson_ratio)
+  std::vector<SingularVertex> singular_vertices(const Body &body, const double poisson_ratio)
   {
-    const std::vector<axisym::OutlineEdge> &edges = body.outline.edges();
+    const std::vector<OutlineEdge> &edges = body.outline.edges();
     const double tol = 1e-9 * body.outline.size();
     std::vector<SingularVertex> out;
     for (std::size_t i = 0; i < edges.size(); ++i)
       {
-        const axisym::OutlineEdge &a = edges[i], &b = edges[(i + 1) % edges.size()];
-        const axisym::Point v = a.end;
+        const OutlineEdge &a = edges[i], &b = edges[(i + 1) % edges.size()];
+        const Point v = a.end;
         if (v.r <= tol || a.on_axis(tol) || b.on_axis(tol))
           continue;
-        const axisym::Point ta = a.tangent_at(1.0), tb = b.tangent_at(0.0);
+        const Point ta = a.tangent_at(1.0), tb = b.tangent_at(0.0);
         // The turn from a to b (+ to the left); outlines run counter-clockwise with the body on
         // the left (the parser's rule), so the interior angle is pi minus the turn.
         const double turn = std::atan2(ta.r * tb.z - ta.z * tb.r, ta.r * tb.r + ta.z * tb.z);
         const double angle = pi - turn;
         if (!(angle > 1e-9))
           continue; // a cusp: no wedge
-        const axisym::PartCondition &ca = body.conditions.at(a.part), &cb = body.conditions.at(b.part);
+        const PartCondition &ca = body.conditions.at(a.part), &cb = body.conditions.at(b.part);
         const Wedge w(angle, wedge_face(ca), wedge_face(cb), poisson_ratio);
         std::vector<WedgeMode> modes = w.modes(0.999);
         if (!modes.empty())
@@ -187,4 +211,4 @@ namespace rfm
       }
     return out;
   }
-} // namespace rfm
+} // namespace axisym

@@ -1,6 +1,6 @@
 // The wedge's exponents against published values, and every mode an elastic field that meets
 // both face conditions (wedge_modes.h).
-#include "rfm/spaces/wedge_modes.h"
+#include "problem/wedge_modes.h"
 
 #include "problem/problem.h"
 #include "problem/test_problems.h"
@@ -12,7 +12,7 @@
 #include <complex>
 #include <vector>
 
-namespace rfm
+namespace axisym
 {
   namespace
   {
@@ -197,7 +197,7 @@ namespace rfm
   // at its end (two clamped-free right angles; the axis' corners are left out).
   TEST(WedgeModes, FindsTheSingularVerticesOfAnOutline)
   {
-    const axisym::Problem step = axisym::parse_problem(axisym::testing::stepped_ring());
+    const Problem step = parse_problem(testing::stepped_ring());
     const std::vector<SingularVertex> v = singular_vertices(*step.body, nu);
     ASSERT_EQ(v.size(), 1u);
     EXPECT_NEAR(v[0].at.r, 0.15, 1e-12);
@@ -206,7 +206,7 @@ namespace rfm
     EXPECT_EQ(v[0].part_before, "step_side");
     ASSERT_EQ(v[0].modes.size(), 2u);
     EXPECT_NEAR(v[0].modes[0].lambda.real(), 0.5444837, 1e-7);
-    const axisym::Problem clamped = axisym::parse_problem(nlohmann::json::parse(R"({
+    const Problem clamped = parse_problem(nlohmann::json::parse(R"({
       "geometry": {"outline": [{"start": [0.0, 0.0]}, {"line_to": [0.05, 0.0], "part": "base"},
                                {"line_to": [0.05, 0.2], "part": "side"}, {"line_to": [0.0, 0.2], "part": "end"},
                                {"line_to": [0.0, 0.0], "part": "axis"}]},
@@ -222,4 +222,4 @@ namespace rfm
     EXPECT_EQ(c[0].modes[0].lambda, direct[0].lambda);
     EXPECT_LT(c[0].modes[0].lambda.real(), 1.0);
   }
-} // namespace rfm
+} // namespace axisym
