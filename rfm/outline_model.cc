@@ -673,32 +673,12 @@ namespace rfm
   EdgeColumns OutlineModel::enrichment_columns(const Eigen::Ref<const Eigen::VectorXd> &r,
                                          const Eigen::Ref<const Eigen::VectorXd> &z) const
   {
-    EdgeColumns all;
-    const Eigen::Index n_p = r.size(), n_e = n_enrichment_columns();
-    for (auto *m : {&all.stress[0], &all.stress[1], &all.stress[2], &all.stress[3], &all.u[0],
-                    &all.u[1], &all.strain[0], &all.strain[1], &all.strain[2], &all.strain[3]})
-      m->resize(n_p, n_e);
+    EdgeColumns all = EdgeColumns::zero(r.size(), n_enrichment_columns());
     Eigen::Index at = 0;
     for (const EdgeEnrichment &en : enrichments_)
-      {
-        const EdgeColumns e = en.evaluate(r, z);
-        const Eigen::Index w = en.n_columns();
-        for (int k = 0; k < 4; ++k)
-          all.stress[k].middleCols(at, w) = e.stress[k], all.strain[k].middleCols(at, w) = e.strain[k];
-        for (int m = 0; m < 2; ++m)
-          all.u[m].middleCols(at, w) = e.u[m];
-        at += w;
-      }
+      all.set_columns(at, en.evaluate(r, z)), at += en.n_columns();
     for (const VertexEnrichment &en : vertices_)
-      {
-        const EdgeColumns e = en.evaluate(r, z);
-        const Eigen::Index w = en.n_columns();
-        for (int k = 0; k < 4; ++k)
-          all.stress[k].middleCols(at, w) = e.stress[k], all.strain[k].middleCols(at, w) = e.strain[k];
-        for (int m = 0; m < 2; ++m)
-          all.u[m].middleCols(at, w) = e.u[m];
-        at += w;
-      }
+      all.set_columns(at, en.evaluate(r, z)), at += en.n_columns();
     return all;
   }
 

@@ -127,14 +127,8 @@ namespace rfm
   EdgeColumns EdgeEnrichment::evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
                                        const Eigen::Ref<const Eigen::VectorXd> &z) const
   {
-    const Eigen::Index n = r.size(), m = n_columns();
-    EdgeColumns out;
-    for (auto &s : out.stress)
-      s.setZero(n, m);
-    for (auto &s : out.strain)
-      s.setZero(n, m);
-    for (auto &u : out.u)
-      u.setZero(n, m);
+    const Eigen::Index n = r.size();
+    EdgeColumns out = EdgeColumns::zero(n, n_columns());
     const int d = multiplier_degree_;
     std::vector<double> xi_pow(d + 1), eta_pow(d + 1);
     std::vector<EdgeModeValue> v(modes_.size());

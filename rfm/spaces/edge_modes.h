@@ -99,6 +99,25 @@ namespace rfm
   struct EdgeColumns
   {
     Eigen::MatrixXd stress[4], u[2], strain[4];
+
+    /// n_points x n_columns zeros in every block.
+    static EdgeColumns zero(Eigen::Index n_points, Eigen::Index n_columns)
+    {
+      EdgeColumns c;
+      for (auto *m : {&c.stress[0], &c.stress[1], &c.stress[2], &c.stress[3], &c.u[0], &c.u[1],
+                      &c.strain[0], &c.strain[1], &c.strain[2], &c.strain[3]})
+        m->setZero(n_points, n_columns);
+      return c;
+    }
+    /// Copies `part` into the columns [at, at + part's columns).
+    void set_columns(Eigen::Index at, const EdgeColumns &part)
+    {
+      const Eigen::Index w = part.u[0].cols();
+      for (int k = 0; k < 4; ++k)
+        stress[k].middleCols(at, w) = part.stress[k], strain[k].middleCols(at, w) = part.strain[k];
+      for (int m = 0; m < 2; ++m)
+        u[m].middleCols(at, w) = part.u[m];
+    }
   };
 
   /// The modes at one contact edge, cut off at rho_0.

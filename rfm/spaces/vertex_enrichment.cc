@@ -92,14 +92,8 @@ namespace rfm
   EdgeColumns VertexEnrichment::evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
                                          const Eigen::Ref<const Eigen::VectorXd> &z) const
   {
-    const Eigen::Index n = r.size(), m = n_columns(), per = columns_per_field();
-    EdgeColumns out;
-    for (auto &s : out.stress)
-      s.setZero(n, m);
-    for (auto &s : out.strain)
-      s.setZero(n, m);
-    for (auto &u : out.u)
-      u.setZero(n, m);
+    const Eigen::Index n = r.size(), per = columns_per_field();
+    EdgeColumns out = EdgeColumns::zero(n, n_columns());
     const double nu = material_.poisson_ratio;
     const double mu = material_.youngs_modulus / (2.0 * (1.0 + nu));
     const int d = multiplier_degree_;
