@@ -1292,7 +1292,7 @@ def corners_section(corners, out_dir):
                 ax.semilogy([int(k[1:]) for k in ps], [rows[k]["indicator"] for k in ps],
                             "^:" if rk == "rfm" else "v:", label=label + " (indicator)")
         md.append("")
-        decorate(ax, "degree p", "relative to the FEM's energy limit", key.replace("_", " "))
+        decorate(ax, "degree p", "Phi_R against the FEM's limit (relative); indicator", key.replace("_", " "))
     md.append(f"![energy error and indicator against p]({save(fig, out_dir, 'corners_convergence.png')})")
     md.append("")
     return md
