@@ -154,10 +154,12 @@ namespace rfm
     /// Vertex enrichment (vertex_enrichment.h; issue 24 item 3): at every vertex of the
     /// outline off the axis between two straight parts without a die where the field is
     /// singular (singular_vertices: Re lambda < 1), the wedge's modes with Re lambda <
-    /// rfm.vertex_max_exponent times the monomials up to rfm.vertex_mode_degree, cut off at
-    /// rfm.vertex_cutoff times the room (half of each face, the distance to every other edge,
-    /// clear of the contact edges' supports), as extra columns of both spaces after the edge
-    /// modes; their products are integrated on the near-vertex rules.
+    /// rfm.vertex_max_exponent times the monomials up to rfm.vertex_mode_degree, and the
+    /// smooth local columns of degree rfm.vertex_local_degree, cut off at rfm.vertex_cutoff
+    /// times the room (each face, half of it where its other end is singular too; the
+    /// distance to every other edge; clear of the contact edges' supports), as extra columns
+    /// of both spaces after the edge modes; their products are integrated on the near-vertex
+    /// rules (VertexEnrichment::near_rule).
     const std::vector<VertexEnrichment> &vertex_enrichments() const { return vertices_; }
     Eigen::Index n_vertex_columns() const;
     /// The edge intensity K = sqrt(2 pi) a_1 [Pa m^1/2] at zone end i by the interaction
