@@ -187,18 +187,7 @@ namespace fem::internal
                          : 0.0;
       return x.distance(a + t * ab);
     };
-    auto refine_while = [&](const auto &wants) {
-      for (int round = 0; round < 40; ++round)
-        {
-          bool any = false;
-          for (const auto &cell : triangulation_.active_cell_iterators())
-            if (wants(cell))
-              cell->set_refine_flag(), any = true;
-          if (!any)
-            return;
-          triangulation_.execute_coarsening_and_refinement();
-        }
-    };
+    auto refine_while = [&](const auto &wants) { refine_cells_while(wants, 40); };
     const double tol = 1e-9 * body_.outline.size();
     for (const OutlineDie &d : dies_)
       {
@@ -241,6 +230,22 @@ namespace fem::internal
       }
   }
 
+  void AxisymmetricSolver::refine_cells_while(
+    const std::function<bool(const Triangulation<2>::active_cell_iterator &)> &wants,
+    const int max_rounds)
+  {
+    for (int round = 0; round < max_rounds; ++round)
+      {
+        bool any = false;
+        for (const auto &cell : triangulation_.active_cell_iterators())
+          if (wants(cell))
+            cell->set_refine_flag(), any = true;
+        if (!any)
+          return;
+        triangulation_.execute_coarsening_and_refinement();
+      }
+  }
+
   void AxisymmetricSolver::refine_toward_vertices()
   {
     vertex_grading_.clear();
@@ -258,16 +263,12 @@ namespace fem::internal
         for (int j = 1; j <= k; ++j)
           {
             const double hj = h / std::pow(2.0, j);
-            for (int round = 0; round < 8; ++round)
-              {
-                bool any = false;
-                for (const auto &cell : triangulation_.active_cell_iterators())
-                  if (cell->diameter() / std::sqrt(2.0) > 1.01 * hj && cell->center().distance(x) < 2.0 * cell->diameter())
-                    cell->set_refine_flag(), any = true;
-                if (!any)
-                  break;
-                triangulation_.execute_coarsening_and_refinement();
-              }
+            refine_cells_while(
+              [&](const auto &cell) {
+                return cell->diameter() / std::sqrt(2.0) > 1.01 * hj &&
+                       cell->center().distance(x) < 2.0 * cell->diameter();
+              },
+              8);
           }
         vertex_grading_.push_back({v.at.r, v.at.z, lambda, static_cast<double>(k)});
       }

@@ -47,6 +47,7 @@
 #include <deal.II/numerics/data_postprocessor.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <functional>
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -356,6 +357,11 @@ namespace fem::internal
     void refine_toward_dies();
     /// FemOptions::grade_toward_vertices; the vertices and their halvings in vertex_grading_.
     void refine_toward_vertices();
+    /// Refines the cells `wants` flags, again on the refined mesh, until none is flagged or
+    /// after max_rounds rounds (the dies' and the vertices' grading).
+    void refine_cells_while(
+      const std::function<bool(const Triangulation<2>::active_cell_iterator &)> &wants,
+      int max_rounds);
     enum class Mode
     {
       none,
