@@ -137,17 +137,23 @@ namespace axisym
     });
     std::vector<WedgeMode> out;
     for (const cd &lambda : roots)
+      for (WedgeMode &m : modes_at(lambda))
+        out.push_back(std::move(m));
+    return out;
+  }
+
+  std::vector<WedgeMode> Wedge::modes_at(const cd lambda) const
+  {
+    const Eigen::JacobiSVD<Eigen::Matrix4cd> svd(matrix(lambda), Eigen::ComputeFullV);
+    const auto &s = svd.singularValues();
+    std::vector<WedgeMode> out;
+    for (int k = 3; k >= 0 && s[k] <= 1e-6 * s[0]; --k)
       {
-        const Eigen::JacobiSVD<Eigen::Matrix4cd> svd(matrix(lambda), Eigen::ComputeFullV);
-        const auto &s = svd.singularValues();
-        for (int k = 3; k >= 0 && s[k] <= 1e-6 * s[0]; --k)
-          {
-            Eigen::Vector4cd a = svd.matrixV().col(k);
-            Eigen::Index big = 0;
-            a.cwiseAbs().maxCoeff(&big);
-            a /= a[big]; // the largest coefficient 1
-            out.push_back({lambda, a});
-          }
+        Eigen::Vector4cd a = svd.matrixV().col(k);
+        Eigen::Index big = 0;
+        a.cwiseAbs().maxCoeff(&big);
+        a /= a[big]; // the largest coefficient 1
+        out.push_back({lambda, a});
       }
     return out;
   }

@@ -78,6 +78,12 @@ namespace axisym
 
     /// det M(lambda): the function whose roots are the exponents.
     std::complex<double> characteristic(std::complex<double> lambda) const;
+    /// The modes at a given root lambda of det M, any sign of Re lambda (one per dimension of
+    /// M's null space, the largest Airy coefficient 1); empty where M is not singular. The
+    /// exponents come in pairs lambda, -lambda (det M is even in lambda): the mode at -lambda
+    /// is the dual of the mode at lambda in the interaction integral of the vertex
+    /// intensities (rfm/fields/vertex_intensity.h).
+    std::vector<WedgeMode> modes_at(std::complex<double> lambda) const;
     /// The mode's fields at a point.
     WedgeFieldValues evaluate(const WedgeMode &mode, double rho, double theta) const;
     double half_angle() const { return alpha_; }

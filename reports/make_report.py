@@ -1258,7 +1258,12 @@ def corners_section(corners, out_dir):
           "share of the error falls like the smooth part's); its energy limit is Richardson's "
           "estimate from the last three levels, at the observed order given with it. Samples lie away from the vertex (and off the axis, "
           "where values are not yet controlled: issue 24 item 5); their error is the largest "
-          "component's difference from the FEM's finest level over the largest sample stress.", ""]
+          "component's difference from the FEM's finest level over the largest sample stress. "
+          "K_1 is the generalized stress intensity of the leading mode (Pa m^(1 - lambda), the notch "
+          "normalization sqrt(2 pi) rho^(1 - lambda) sigma_thth(rho, 0) -> K on the bisector), from the "
+          "interaction integral with the dual modes on each solver's field (`rfm/fields/vertex_intensity.h`) "
+          "over the sector of the enrichment's radius; 'K vs FEM' is the largest relative difference of all "
+          "the vertex's K_i (Re lambda_i < 1) from the FEM's finest level.", ""]
     cases = [("stepped_ring", "9.1 The stepped ring: a 270-degree re-entrant vertex between two free faces"),
              ("clamped_cylinder", "9.2 A cylinder clamped on its base: the 90-degree clamped-free vertex")]
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
@@ -1273,19 +1278,26 @@ def corners_section(corners, out_dir):
                   f"(observed order {f['observed_order_energy']:.2f} in energy; the finest level "
                   f"{f['estimated_error_relative']:.1e} from it).")
         md.append("")
-        md.append("| solver | Phi_R [J/rad] | vs FEM limit | indicator | samples vs FEM | time [s] |")
-        md.append("|---|---|---|---|---|---|")
+        def k_1(row):
+            k = row.get("intensities")
+            return f"{k[0]['K'][0]:.6e}" if k else ""
+
+        md.append("| solver | Phi_R [J/rad] | vs FEM limit | indicator | samples vs FEM | K_1 | K vs FEM | time [s] |")
+        md.append("|---|---|---|---|---|---|---|---|")
         for lk in sorted((k for k in f if k.startswith("L")), key=lambda k: int(k[1:])):
             row = f[lk]
             rel = abs(row["reissner"] - f["extrapolated_energy"]) / abs(f["extrapolated_energy"])
-            md.append(f"| FEM Q2 {lk} ({row['dofs']} DoFs) | {row['reissner']:.10e} | {rel:.1e} | | | {row['seconds']:.2f} |")
+            md.append(f"| FEM Q2 {lk} ({row['dofs']} DoFs) | {row['reissner']:.10e} | {rel:.1e} | | | "
+                      f"{k_1(row)} | | {row['seconds']:.2f} |")
         for rk, label in (("rfm", "RFM"), ("rfm_without_vertex_columns", "RFM without vertex columns")):
             rows = c.get(rk, {})
             ps = sorted(rows, key=lambda k: int(k[1:]))
             for pk in ps:
                 r = rows[pk]
+                k_err = r.get("intensity_error_relative")
                 md.append(f"| {label} p = {pk[1:]} | {r['reissner']:.10e} | {r['energy_error_relative']:.1e} | "
-                          f"{r['indicator']:.1e} | {r['sample_error_relative']:.1e} | {r['seconds']:.2f} |")
+                          f"{r['indicator']:.1e} | {r['sample_error_relative']:.1e} | {k_1(r)} | "
+                          f"{'' if k_err is None else f'{k_err:.1e}'} | {r['seconds']:.2f} |")
             if ps:
                 ax.semilogy([int(k[1:]) for k in ps], [rows[k]["energy_error_relative"] for k in ps],
                             "o-" if rk == "rfm" else "s--", label=label + " (Phi_R)")

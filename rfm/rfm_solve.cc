@@ -13,12 +13,13 @@
 // Exit status: 0 success, 2 bad input (nothing written), 3 numerical failure.
 #include "problem/json_io.h"
 #include "problem/problem.h"
+#include "problem/wedge_modes.h"
 #include "rfm/allocator.h"
 #include "rfm/contact/contact.h"
 #include "rfm/contact/outline_contact.h"
+#include "rfm/fields/vertex_intensity.h"
 #include "rfm/fields/vtu_output.h"
 #include "rfm/outline_model.h"
-#include "problem/wedge_modes.h"
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -409,9 +410,33 @@ namespace
             nlohmann::json enrichment = nullptr;
             for (const rfm::VertexEnrichment &e : model->vertex_enrichments())
               if (std::hypot(e.vertex().r - v.at.r, e.vertex().z - v.at.z) <= 1e-9 * problem.body->outline.size())
-                enrichment = {{"columns", e.n_columns()},
-                              {"modes", e.modes().size()},
-                              {"cutoff_radius", e.cutoff_radius()}};
+                {
+                  enrichment = {{"columns", e.n_columns()},
+                                {"modes", e.modes().size()},
+                                {"cutoff_radius", e.cutoff_radius()}};
+                  // The generalized stress intensities (vertex_intensity.h) over the support.
+                  if (model->ok())
+                    {
+                      nlohmann::json k = nlohmann::json::array();
+                      for (const rfm::VertexIntensity &x : rfm::vertex_intensities(
+                             [&](const Eigen::Ref<const Eigen::VectorXd> &r, const Eigen::Ref<const Eigen::VectorXd> &z) {
+                               return model->evaluate(r, z);
+                             },
+                             e, problem, e.cutoff_radius()))
+                        {
+                          k.push_back({{"lambda", {x.lambda.real(), x.lambda.imag()}},
+                                       {"K", {x.value.real(), x.value.imag()}}});
+                          fmt::print(stderr, "rfm_solve: vertex ({:.6g}, {:.6g}) m: K = {:.6e}{} Pa m^{:.4g} "
+                                             "(lambda = {:.6g})\n",
+                                     v.at.r, v.at.z, x.value.real(),
+                                     x.value.imag() != 0.0 ? fmt::format(" {:+.6e} i", x.value.imag()) : "",
+                                     1.0 - x.lambda.real(), x.lambda.real());
+                        }
+                      enrichment["intensities"] = k;
+                      enrichment["intensity_units"] = "Pa m^(1 - lambda); K of the notch normalization "
+                                                      "sqrt(2 pi) rho^(1 - lambda) sigma_thth(rho, 0) -> K";
+                    }
+                }
             if (enrichment.is_null())
               {
                 bare = bare ? bare : &v;

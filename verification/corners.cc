@@ -17,8 +17,10 @@
 //   build/bin/corners --mode quick --output-dir build/verification-output
 #include "fem_reference/axisymmetric_fem.h"
 #include "problem/problem.h"
+#include "rfm/fields/vertex_intensity.h"
 #include "rfm/outline_model.h"
 #include "verification/driver.h"
+#include "verification/fem_samples.h"
 
 #include <fmt/core.h>
 
@@ -35,29 +37,58 @@ namespace
     nlohmann::json c = {{"problem_file", "verification/problems/" + file}};
     fmt::print("\n== {} ==\n", file);
 
-    // The FEM: energy against L, Richardson from the last three levels.
+    // The vertex's frame and the intensities' sector (vertex_intensity.h): the enrichment's
+    // support, the same for every degree (a model at p = 2 gives it).
+    rfm::DiscretizationOptions frame_options = problem.rfm;
+    frame_options.degree = 2;
+    frame_options.tolerance.reset();
+    const rfm::OutlineModel frame_model(problem, frame_options);
+    if (frame_model.vertex_enrichments().size() != 1)
+      throw verification::NumericalFailure(file + ": expected one enriched vertex");
+    const rfm::VertexEnrichment frame = frame_model.vertex_enrichments().front();
+    const double rho_1 = frame.cutoff_radius();
+    auto intensities_json = [](const std::vector<rfm::VertexIntensity> &k) {
+      nlohmann::json j = nlohmann::json::array();
+      for (const rfm::VertexIntensity &x : k)
+        j.push_back({{"lambda", {x.lambda.real(), x.lambda.imag()}}, {"K", {x.value.real(), x.value.imag()}}});
+      return j;
+    };
+    c["intensity_sector_radius"] = rho_1;
+
+    // The FEM: energy against L, Richardson from the last three levels; the intensities from
+    // its fields at the sector rule's points (samples after the problem's own).
     std::vector<double> energies;
     std::vector<std::array<double, 4>> fem_samples;
+    std::vector<rfm::VertexIntensity> fem_k;
+    axisym::Problem sampled = problem;
+    verification::add_interaction_samples(sampled.samples, rfm::vertex_interaction_quadrature(frame, rho_1),
+                                          frame.vertex().r, frame.vertex().z);
     for (const int level : levels)
       {
-        fem::FemOptions o = fem::options_from_problem(problem);
+        fem::FemOptions o = fem::options_from_problem(sampled);
         o.refinements = level;
         o.progress = false;
-        const fem::FemResult f = fem::solve(problem, o);
+        const fem::FemResult f = fem::solve(sampled, o);
         if (!f.success)
           throw verification::NumericalFailure(file + " FEM L = " + std::to_string(level) + ": " + f.message);
         const double phi = f.functionals.reissner;
-        fmt::print("FEM Q2 L = {}: Phi_R = {:.10e} J/rad ({} dofs, {:.1f} s)\n", level, phi, f.n_dofs,
-                   f.total_seconds);
+        fem_k = rfm::vertex_intensities(verification::sampled_interaction_field(f, problem.samples.size()),
+                                        frame, problem, rho_1);
+        fmt::print("FEM Q2 L = {}: Phi_R = {:.10e} J/rad, K_1 = {:.8e} ({} dofs, {:.1f} s)\n", level, phi,
+                   fem_k.front().value.real(), f.n_dofs, f.total_seconds);
         nlohmann::json samples = nlohmann::json::array();
         fem_samples.clear();
-        for (const fem::FieldSample &s : f.samples)
+        for (std::size_t k = 0; k < problem.samples.size(); ++k)
           {
+            const fem::FieldSample &s = f.samples[k];
             samples.push_back({{"r", s.r}, {"z", s.z}, {"sigma", s.sigma}});
             fem_samples.push_back(s.sigma);
           }
-        c["fem"]["L" + std::to_string(level)] = {
-          {"reissner", phi}, {"dofs", f.n_dofs}, {"seconds", f.total_seconds}, {"samples", samples}};
+        c["fem"]["L" + std::to_string(level)] = {{"reissner", phi},
+                                                 {"dofs", f.n_dofs},
+                                                 {"seconds", f.total_seconds},
+                                                 {"samples", samples},
+                                                 {"intensities", intensities_json(fem_k)}};
         energies.push_back(phi);
       }
     const std::size_t n = energies.size();
@@ -104,11 +135,23 @@ namespace
             sample_error /= scale;
             const double seconds = m.assembly_seconds() + m.solve_seconds();
             const double energy_error = std::abs(f.reissner - limit) / std::abs(limit);
+            // The intensities against the finest FEM level's, each relative to its own K.
+            const std::vector<rfm::VertexIntensity> k = rfm::vertex_intensities(
+              [&m](const Eigen::Ref<const Eigen::VectorXd> &rr, const Eigen::Ref<const Eigen::VectorXd> &zz) {
+                return m.evaluate(rr, zz);
+              },
+              frame, problem, rho_1);
+            double k_error = 0.0;
+            for (std::size_t i = 0; i < k.size(); ++i)
+              k_error = std::max(k_error, std::abs(k[i].value - fem_k[i].value) / std::abs(fem_k[i].value));
             fmt::print("RFM{} p = {:>2}: Phi_R {:.10e} ({:.2e} from the FEM's limit), indicator {:.2e}, "
-                       "samples {:.2e} of max |sigma| from the FEM's, {} vertex columns ({:.1f} s)\n",
+                       "samples {:.2e} of max |sigma| from the FEM's, K {:.2e} from the FEM's, {} vertex "
+                       "columns ({:.1f} s)\n",
                        enriched ? "" : " without vertex columns", p, f.reissner, energy_error,
-                       f.indicator(), sample_error, m.n_vertex_columns(), seconds);
-            c[key]["p" + std::to_string(p)] = {{"reissner", f.reissner},
+                       f.indicator(), sample_error, k_error, m.n_vertex_columns(), seconds);
+            c[key]["p" + std::to_string(p)] = {{"intensities", intensities_json(k)},
+                                               {"intensity_error_relative", k_error},
+                                               {"reissner", f.reissner},
                                                {"lagrange", f.lagrange},
                                                {"castigliano", f.castigliano},
                                                {"indicator", f.indicator()},

@@ -74,6 +74,9 @@ namespace rfm
     const axisym::Point &vertex() const { return at_; }
     double cutoff_radius() const { return cutoff_radius_; }
     const Wedge &wedge() const { return wedge_; }
+    /// The direction of the wedge's bisector in the (r, z) plane [rad] (theta = 0).
+    double bisector_angle() const { return beta_; }
+    const Material &material() const { return material_; }
     const std::vector<WedgeMode> &modes() const { return modes_; }
     int multiplier_degree() const { return multiplier_degree_; }
     /// The real fields: one per real exponent, two per complex one (real, imaginary part).

@@ -1,0 +1,149 @@
+#include "rfm/fields/vertex_intensity.h"
+
+#include "problem/test_problems.h"
+#include "rfm/outline_model.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace
+{
+  using namespace rfm;
+  constexpr double pi = 3.14159265358979323846;
+
+  /// The stepped ring moved out to r ~ 1e4 m (its size 0.1 m), where the axisymmetric terms of
+  /// the integral are 1e-5 of the rest: a plane-strain wedge field is then a field of the
+  /// problem near its 270-degree vertex (0.15 + shift, 0.1), both of whose faces carry the
+  /// pressure p.
+  axisym::Problem far_stepped_ring(const double shift, const double p)
+  {
+    nlohmann::json j = axisym::testing::stepped_ring();
+    for (auto &e : j["geometry"]["outline"])
+      for (const char *key : {"start", "line_to"})
+        if (e.contains(key))
+          e[key][0] = e[key][0].get<double>() + shift;
+    j["boundary"]["step"] = {{"pressure", p}};
+    j["boundary"]["step_side"] = {{"pressure", p}};
+    return axisym::parse_problem(j);
+  }
+
+  // The intensities of a field made of the wedge's modes: the singular ones' coefficients come
+  // back, whatever the translation, the smoother mode (lambda = 1.63) and a uniform pressure
+  // field (which the faces' term must cancel) added to them.
+  TEST(VertexIntensity, GivesBackTheSingularModesOfAWedgeField)
+  {
+    const double shift = 1e4, p = 3e6;
+    const axisym::Problem problem = far_stepped_ring(shift, p);
+    const Material &m = problem.material;
+    const double nu = m.poisson_ratio, mu = m.youngs_modulus / (2.0 * (1.0 + nu));
+    const Wedge wedge(1.5 * pi, WedgeFace::free, WedgeFace::free, nu);
+    const std::vector<WedgeMode> modes = wedge.modes(2.0);
+    ASSERT_EQ(modes.size(), 3u); // 0.5445, 0.9085, 1.6293
+    const axisym::Point at{0.15 + shift, 0.1};
+    const VertexEnrichment frame(at, {-1.0, 0.0}, wedge, modes, 0.04, m);
+    const double beta = frame.bisector_angle();
+
+    // The field: u0 + sum_i c_i Re(s_i F_i) - p I (plane strain), with s_i the notch scaling.
+    const std::array<double, 3> amplitude{{2.0e6, -7.0e5, 4.0e7}};
+    std::array<std::complex<double>, 3> scale;
+    for (std::size_t i = 0; i < 3; ++i)
+      {
+        const WedgeFieldValues b = wedge.evaluate(modes[i], 1.0, 0.0);
+        scale[i] = 1.0 / (std::sqrt(2.0 * pi) * (std::abs(b.s_tt) >= std::abs(b.s_rt) ? b.s_tt : b.s_rt));
+      }
+    const double u0_r = 3e-5, u0_z = -2e-5;
+    const double e_p = -p * (1.0 + nu) * (1.0 - 2.0 * nu) / m.youngs_modulus;
+    const FieldEvaluator field = [&](const Eigen::Ref<const Eigen::VectorXd> &r,
+                                     const Eigen::Ref<const Eigen::VectorXd> &z) {
+      FieldValues f;
+      f.u.setZero(r.size(), 2), f.sigma.setZero(r.size(), 4), f.strain.setZero(r.size(), 4);
+      for (Eigen::Index k = 0; k < r.size(); ++k)
+        {
+          const double dr = r[k] - at.r, dz = z[k] - at.z, rho = std::hypot(dr, dz);
+          f.u(k, 0) = u0_r + e_p * dr, f.u(k, 1) = u0_z + e_p * dz;
+          f.sigma(k, rr) = f.sigma(k, zz) = -p, f.sigma(k, tt) = -2.0 * nu * p;
+          if (rho == 0.0)
+            continue;
+          const double phi = std::atan2(dz, dr), c = std::cos(phi), s = std::sin(phi);
+          double theta = phi - beta;
+          theta -= 2.0 * pi * std::round(theta / (2.0 * pi));
+          for (std::size_t i = 0; i < 3; ++i)
+            {
+              const WedgeFieldValues v = wedge.evaluate(modes[i], rho, theta);
+              const double a = amplitude[i];
+              const double s_pp = a * (scale[i] * v.s_rr).real(), s_qq = a * (scale[i] * v.s_tt).real();
+              const double s_pq = a * (scale[i] * v.s_rt).real();
+              const double u_p = a * (scale[i] * v.u_r).real() / mu, u_q = a * (scale[i] * v.u_t).real() / mu;
+              const double s_rr = s_pp * c * c + s_qq * s * s - 2.0 * s_pq * c * s;
+              const double s_zz = s_pp * s * s + s_qq * c * c + 2.0 * s_pq * c * s;
+              f.sigma(k, rr) += s_rr, f.sigma(k, zz) += s_zz, f.sigma(k, tt) += nu * (s_rr + s_zz);
+              f.sigma(k, rz) += (s_pp - s_qq) * c * s + s_pq * (c * c - s * s);
+              f.u(k, 0) += u_p * c - u_q * s, f.u(k, 1) += u_p * s + u_q * c;
+            }
+        }
+      return f;
+    };
+    for (const double rho_1 : {0.04, 0.01})
+      {
+        const std::vector<VertexIntensity> k = vertex_intensities(field, frame, problem, rho_1);
+        ASSERT_EQ(k.size(), 2u) << "the modes with Re lambda < 1";
+        for (std::size_t i = 0; i < 2; ++i)
+          {
+            EXPECT_NEAR(k[i].lambda.real(), modes[i].lambda.real(), 1e-14);
+            EXPECT_NEAR(k[i].value.real() / amplitude[i], 1.0, 1e-4) << "mode " << i << ", rho_1 " << rho_1;
+            EXPECT_EQ(k[i].value.imag(), 0.0);
+          }
+      }
+  }
+
+  // Each dual exists at -lambda, pairs with its own mode and with no other (the bi-orthogonality
+  // the intensities rest on), for the wedges of issue 24: the 270-degree free-free corner, the
+  // clamped-free right angle, the bonded punch edge (complex lambda).
+  TEST(VertexIntensity, DualModesAreRootsAtMinusLambda)
+  {
+    struct Case
+    {
+      double angle;
+      WedgeFace a, b;
+    };
+    for (const Case &c : {Case{1.5 * pi, WedgeFace::free, WedgeFace::free},
+                          Case{0.5 * pi, WedgeFace::clamped, WedgeFace::free},
+                          Case{pi, WedgeFace::clamped, WedgeFace::free}})
+      {
+        const Wedge w(c.angle, c.a, c.b, 0.3);
+        for (const WedgeMode &mode : w.modes(0.999))
+          {
+            const std::vector<WedgeMode> d = w.modes_at(-mode.lambda);
+            ASSERT_FALSE(d.empty()) << "no dual at " << -mode.lambda;
+            EXPECT_LT(std::abs(w.characteristic(-mode.lambda)), 1e-10 * std::abs(w.characteristic(mode.lambda + 0.5)));
+          }
+        EXPECT_TRUE(w.modes_at(std::complex<double>(0.3, 0.0)).empty()) << "0.3 is not a root";
+      }
+  }
+
+  // The RFM's stepped ring: the intensity does not depend on the sector's radius (Betti's
+  // theorem holds for the discrete field up to its error), and the mode columns' own
+  // coefficient at the vertex agrees with it.
+  TEST(VertexIntensity, StepRingIntensityIsPathIndependent)
+  {
+    const axisym::Problem problem = axisym::parse_problem(axisym::testing::stepped_ring());
+    DiscretizationOptions o = problem.rfm;
+    o.degree = 10;
+    const OutlineModel model(problem, o);
+    ASSERT_TRUE(model.ok());
+    ASSERT_EQ(model.vertex_enrichments().size(), 1u);
+    const VertexEnrichment &v = model.vertex_enrichments().front();
+    const FieldEvaluator field = [&](const Eigen::Ref<const Eigen::VectorXd> &r,
+                                     const Eigen::Ref<const Eigen::VectorXd> &z) { return model.evaluate(r, z); };
+    const std::vector<VertexIntensity> k1 = vertex_intensities(field, v, problem, v.cutoff_radius());
+    const std::vector<VertexIntensity> k2 = vertex_intensities(field, v, problem, 0.5 * v.cutoff_radius());
+    ASSERT_EQ(k1.size(), 2u);
+    for (std::size_t i = 0; i < 2; ++i)
+      {
+        std::printf("K_%zu = %.8e (rho_1 = %g), %.8e (rho_1 = %g)\n", i + 1, k1[i].value.real(),
+                    v.cutoff_radius(), k2[i].value.real(), 0.5 * v.cutoff_radius());
+        EXPECT_NEAR(k2[i].value.real() / k1[i].value.real(), 1.0, 1e-2);
+      }
+  }
+} // namespace
