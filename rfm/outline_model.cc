@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <utility>
 
 namespace rfm
 {
@@ -276,7 +277,8 @@ namespace rfm
     const std::array<Eigen::MatrixXd, 2> gram_u = displacement_grams();
     // V L^-1/2 of the Jacobi-scaled Gram matrix D G D (D = diag(G)^-1/2), the directions
     // with l > 1e-14 max l kept: T = D V L^-1/2, so that T^T G T = I.
-    auto orthonormal = [](const Eigen::MatrixXd &gram) {
+    Eigen::Index dropped = 0;
+    auto orthonormal = [&dropped](const Eigen::MatrixXd &gram) {
       const Eigen::VectorXd d = gram.diagonal().cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
       const SymmetricEigen eig = symmetric_eigen(d.asDiagonal() * gram * d.asDiagonal(), true);
       const Eigen::VectorXd &l = eig.values; // ascending
@@ -284,12 +286,14 @@ namespace rfm
       while (first < l.size() && !(l[first] > 1e-14 * l[l.size() - 1]))
         ++first;
       const Eigen::Index kept = l.size() - first;
+      dropped += first;
       return Eigen::MatrixXd(d.asDiagonal() * eig.vectors.rightCols(kept) *
                              l.tail(kept).cwiseSqrt().cwiseInverse().asDiagonal());
     };
     // Stresses: all columns at once (R11 couples the components and the boundary columns
     // through C, and a boundary column can come close to the polynomial ones inside).
     const Eigen::MatrixXd s_map = orthonormal(-sys.r11);
+    n_dropped_[0] = std::exchange(dropped, 0);
     // Displacements per component, on the polynomials of degree <= p - k_r in r and
     // <= p - k_z in z (displacement_degree_reduction: no reduction unless u_m is
     // constrained on two parallel lines or on arcs). That space is spanned by the
@@ -330,6 +334,7 @@ namespace rfm
     if (n_e > 0)
       u_map.bottomRightCorner(n_e, te.cols()) = te;
     n_kept_ = {s_map.cols(), u_map.cols()};
+    n_dropped_[1] = dropped;
 
     ReissnerSystem reduced;
     reduced.r11 = s_map.transpose() * sys.r11 * s_map;

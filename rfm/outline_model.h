@@ -101,6 +101,11 @@ namespace rfm
     Eigen::Index n_quadrature_points() const { return quadrature_.n_points(); }
     /// Unknowns after the orthonormalization (stress, displacement).
     std::array<Eigen::Index, 2> n_kept_unknowns() const { return n_kept_; }
+    /// The directions the orthonormalizing transform dropped as dependent (eigenvalue of the
+    /// Jacobi-scaled Gram matrix below 1e-14 of its largest), stresses and displacements:
+    /// {0, 0} on the raw path. Not the same as unknowns - n_kept_unknowns(), which counts
+    /// the lowered displacement degrees too.
+    std::array<Eigen::Index, 2> n_dropped_directions() const { return n_dropped_; }
 
     /// Fields at points of the section, and of its image z < 0 when the body is mirrored
     /// (axisym::Body::mirrored: the legacy hollow cylinder's half section). Precondition: ok().
@@ -250,6 +255,7 @@ namespace rfm
     SolveSummary summary_;
     double assembly_s_ = 0.0, solve_s_ = 0.0;
     std::array<Eigen::Index, 2> n_kept_{0, 0};
+    std::array<Eigen::Index, 2> n_dropped_{0, 0};
     std::vector<EdgeEnrichment> enrichments_;
     /// Per enrichment: its zone, the end's s along the part, the direction into the zone
     /// (+1: increasing s) and the room around the end [m].

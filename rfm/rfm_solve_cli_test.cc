@@ -275,6 +275,52 @@ namespace
       }
   }
 
+  // A fixed degree is checked against p - 2 where its indicator is above 1e-8 (issue 24 item
+  // 6): the cylinder clamped on its base converges to p = 14 and then rounding wins (indicator
+  // 1.3e-7 at p = 14, 5.6e-7 at p = 16, with 9 more dependent stress directions dropped), so
+  // p = 16 warns that it grows and why; p = 12 (5.3e-8, 27 times below p = 10's) does not.
+  TEST(RfmSolveCli, FixedDegreeWithAGrowingIndicatorWarns)
+  {
+    const fs::path dir = fs::temp_directory_path() / "rfm_cli_growing";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path in = dir / "problem.json", out = dir / "result.json";
+    // verification/problems/clamped_cylinder_tension.json without its samples.
+    std::ofstream(in) << R"({
+      "geometry": {"outline": [
+        {"start": [0.0, 0.0]}, {"line_to": [0.05, 0.0], "part": "base"},
+        {"line_to": [0.05, 0.1], "part": "surface"}, {"line_to": [0.0, 0.1], "part": "end"},
+        {"line_to": [0.0, 0.0], "part": "axis"}]},
+      "boundary": {"base": {"displacement": [0.0, 0.0]}, "end": {"traction": [0.0, 1.0e7]}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})";
+    for (const int p : {12, 16})
+      {
+        const Outcome o = run(in.string() + " --degree " + std::to_string(p) + " --output " + out.string());
+        EXPECT_EQ(o.status, 0) << o.err;
+        std::ifstream f(out);
+        const nlohmann::json r = nlohmann::json::parse(f);
+        const nlohmann::json &d = r.at("diagnostics");
+        const nlohmann::json &check = d.at("check_at_lower_degree");
+        EXPECT_EQ(check.at("degree"), p - 2);
+        const double before = check.at("indicator").get<double>();
+        const double now = r.at("functionals").at("indicator").get<double>();
+        if (p == 12)
+          {
+            EXPECT_LT(now, 0.1 * before);
+            EXPECT_EQ(d.at("status"), "ok") << d.at("message");
+          }
+        else
+          {
+            EXPECT_GT(now, before);
+            EXPECT_EQ(d.at("status"), "warning");
+            const std::string message = d.at("message").get<std::string>();
+            EXPECT_NE(message.find("the indicator grows"), std::string::npos) << message;
+            EXPECT_NE(message.find("more dependent directions"), std::string::npos) << message;
+            EXPECT_NE(o.err.find("grows"), std::string::npos);
+          }
+      }
+  }
+
   // A section with a re-entrant corner (a ring with a rectangular step, 270 degrees, free on
   // both faces) warns and lists the vertex with Williams' exponents (issue 24 item 6). (Its
   // indicator is 1.3e-2 at p = 24: rfm.tolerance 1e-3 is not reached, exit 3, and that
