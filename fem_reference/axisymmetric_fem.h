@@ -141,6 +141,23 @@ namespace fem
     /// p the degree): the singular term's share of the energy error then falls as fast as
     /// the smooth part's (h^2p), at the cost of a few cells per halving. false: uniform.
     bool grade_toward_vertices = true;
+    /// Adaptive refinement (issue 25 item 1; problem file "fem.refinement", fem_solve
+    /// --adaptive): after the solve on the mesh of level `refinements` (without the grading
+    /// toward vertices: the estimator finds them), cycles of: the Kelly estimate of each cell
+    /// (the jumps of the displacement gradient across its faces, times sqrt(r) of its centre
+    /// for the r-weighted energy), refinement of the cells that carry adaptive_fraction of the
+    /// estimate's square (Doerfler marking), solve. It stops when the square of the estimate
+    /// relative to the r-weighted gradient norm (a relative energy error) and the energy's
+    /// relative change since the mesh had half the DoFs are both below adaptive_tolerance
+    /// (Kelly's constant is not known: on the stepped ring the energy's error is 3 times the
+    /// estimate's square, the change overestimates it 10 times), or when the next cycle would
+    /// pass adaptive_max_dofs, or after adaptive_max_cycles. A die's zone is carried over from
+    /// cycle to cycle (its active-set loop starts from it).
+    bool adaptive = false;
+    double adaptive_tolerance = 1e-6;
+    long adaptive_max_dofs = 1000000;
+    double adaptive_fraction = 0.5;
+    int adaptive_max_cycles = 100;
     /// Cells along the shortest outline edge in the base mesh (h0 = its length / this;
     /// outline_mesh.h).
     double outline_cells_on_shortest_edge = 4;
@@ -251,6 +268,18 @@ namespace fem
     /// FemOptions::grade_toward_vertices: each singular vertex graded toward, as (r, z,
     /// lambda, extra halvings).
     std::vector<std::array<double, 4>> graded_vertices;
+    /// FemOptions::adaptive: one record per solved mesh, the first on the starting mesh.
+    struct AdaptiveCycle
+    {
+      unsigned long n_dofs = 0, n_cells = 0;
+      double estimate = 0;        ///< Kelly, relative to the r-weighted gradient norm
+      double reissner = 0;        ///< Phi_R [J/rad]
+      double change = 0;          ///< |Phi_R - Phi_R at half the DoFs| / |Phi_R| (inf before)
+      double force = 0;           ///< the first die's P [N] (0 without a die)
+      double seconds = 0;         ///< wall time of the cycle (refinement, assembly, solve)
+    };
+    std::vector<AdaptiveCycle> adaptive_cycles;
+    std::string adaptive_stop; ///< why the cycles stopped
     Functionals functionals;
     std::optional<ContactResult> contact; ///< the first die
     std::vector<ContactResult> other_dies; ///< the second and later dies (outline parts)

@@ -120,7 +120,13 @@ namespace fem::internal
     refine_toward_dies();
     refine_toward_vertices();
     snap_zone_ends();
+    make_mapping();
+  }
 
+  void AxisymmetricSolver::make_mapping()
+  {
+    const std::vector<axisym::OutlineEdge> &edges = body_.outline.edges();
+    using Geometry = FemOptions::OutlineGeometry;
     // MappingQ(p) represents the arcs; on a polygon (the hollow cylinder's rectangle, most
     // die problems) every cell is the bilinear image of its vertices (transfinite
     // interpolation of straight edges keeps them straight), which MappingQ1 is, at less
@@ -249,8 +255,8 @@ namespace fem::internal
   void AxisymmetricSolver::refine_toward_vertices()
   {
     vertex_grading_.clear();
-    if (!options_.grade_toward_vertices)
-      return;
+    if (!options_.grade_toward_vertices || options_.adaptive)
+      return; // adaptive: the estimator finds the vertices
     const double l = body_.outline.size(), h = base_mesh_size_ / std::pow(2.0, level_);
     for (const axisym::SingularVertex &v :
          axisym::singular_vertices(body_, problem_.material.poisson_ratio))

@@ -45,6 +45,7 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
+#include <deal.II/numerics/error_estimator.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <functional>
@@ -370,6 +371,19 @@ namespace fem::internal
     };
 
     void make_mesh();
+    /// The mapping of the current mesh (MappingQ(p) cached where the outline has arcs, else
+    /// MappingQ1), after make_mesh and after every adaptive refinement.
+    void make_mapping();
+    /// FemOptions::adaptive: the cycles after the passes (axisymmetric_fem.cc), with the
+    /// passes' solve and zone update.
+    template <typename Solve, typename Zones>
+    void adaptive_cycles(FemResult &result, int first_pass, const Solve &solve_on_mesh,
+                         const Zones &zones_from_result);
+    /// Kelly's estimate of each active cell (the jumps of grad u across its interior faces),
+    /// times sqrt(r) of the cell's centre: the r-weighted energy's share.
+    Vector<float> cell_estimates() const;
+    /// sqrt(int |grad u|^2 r dr dz) of the solution: the estimate's scale.
+    double gradient_norm() const;
     /// Bilateral: moves the boundary vertex nearest to each free end of a prescribed zone onto
     /// that end.
     void snap_zone_ends();

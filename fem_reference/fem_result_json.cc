@@ -48,6 +48,30 @@ namespace fem
                     ? "upper half z in [0, length/2] as an outline, mirrored in z = 0 (the "
                       "functionals, forces and norms are the whole body's)"
                     : "the outline as given (geometry.outline), no mirroring"}};
+    j["discretization"]["refinement_strategy"] = options.adaptive ? "adaptive" : "uniform";
+    if (options.adaptive)
+      {
+        j["discretization"]["refinement_rule"] =
+          "L global refinements of the gmsh base mesh (refined toward the dies' zones), then "
+          "adaptive cycles: Kelly's estimate times sqrt(r) per cell, the cells carrying "
+          "adaptive_fraction of its square refined (hanging nodes constrained), new vertices on "
+          "the arcs, MappingQ(degree)";
+        j["discretization"]["adaptive"] = {{"tolerance", options.adaptive_tolerance},
+                                           {"max_dofs", options.adaptive_max_dofs},
+                                           {"fraction", options.adaptive_fraction},
+                                           {"stopped", r.adaptive_stop},
+                                           {"cycles", nlohmann::json::array()}};
+        for (const FemResult::AdaptiveCycle &c : r.adaptive_cycles)
+          j["discretization"]["adaptive"]["cycles"].push_back({{"dofs", c.n_dofs},
+                                                               {"cells", c.n_cells},
+                                                               {"estimate", c.estimate},
+                                                               {"reissner", c.reissner},
+                                                               {"change", std::isfinite(c.change)
+                                                                            ? nlohmann::json(c.change)
+                                                                            : nlohmann::json(nullptr)},
+                                                               {"force", c.force},
+                                                               {"seconds", c.seconds}});
+      }
     j["discretization"]["graded_vertices"] = nlohmann::json::array();
     for (const auto &g : r.graded_vertices)
       j["discretization"]["graded_vertices"].push_back(

@@ -38,10 +38,20 @@ int main(int argc, char **argv)
       CLI::App app{"deal.II FEM reference (axisymmetric elasticity, die contact)"};
       std::string problem_path, output_path, vtu_directory, solver = "direct";
       int refinements = -1, edge_fitting_passes = -1, max_iterations = -1;
-      double penalty_factor = -1;
+      double penalty_factor = -1, adaptive_tolerance = -1, max_dofs = -1;
+      bool adaptive = false;
       app.add_option("problem", problem_path, "problem file (JSON, SI units)")->required();
       app.add_option("--refinements", refinements,
                      "mesh level L: cells per line x 2^L (nested graded meshes)");
+      app.add_flag("--adaptive", adaptive,
+                   "adaptive refinement from the mesh of level L (fem.refinement.strategy = "
+                   "\"adaptive\"): Kelly's estimate, cells carrying half its square refined, "
+                   "until the estimate or the energy's change is below the tolerance");
+      app.add_option("--adaptive-tolerance", adaptive_tolerance,
+                     "adaptive: the relative estimate or energy change to stop at (default "
+                     "fem.refinement.tolerance, 1e-6)");
+      app.add_option("--max-dofs", max_dofs,
+                     "adaptive: no cycle beyond this many dofs (default fem.refinement.max_dofs, 1e6)");
       app.add_option("--output", output_path, "result file (JSON); default: stdout");
       app.add_option("--vtu", vtu_directory,
                      "write DIR/fem_solution.vtu (u_r, u_z, stresses, the vector displacement); "
@@ -74,6 +84,12 @@ int main(int argc, char **argv)
           axisym::ranges::fem_refinements.check(refinements, "--refinements");
           options.refinements = refinements;
         }
+      if (adaptive)
+        options.adaptive = true;
+      if (adaptive_tolerance != -1)
+        options.adaptive_tolerance = adaptive_tolerance;
+      if (max_dofs != -1)
+        options.adaptive_max_dofs = static_cast<long>(max_dofs);
       if (edge_fitting_passes != -1)
         options.edge_fitting_passes = edge_fitting_passes;
       if (max_iterations != -1)
@@ -96,8 +112,12 @@ int main(int argc, char **argv)
                                      ": must be a directory or creatable as one" +
                                      (ec ? " (" + ec.message() + ")" : std::string()));
         }
-      fmt::print(stderr, "fem_solve: Q{} elements, level L = {}, gmsh mesh, {} solver{}{}\n",
-                 options.degree, options.refinements, solver,
+      fmt::print(stderr, "fem_solve: Q{} elements, level L = {}{}, gmsh mesh, {} solver{}{}\n",
+                 options.degree, options.refinements,
+                 options.adaptive ? fmt::format(" then adaptive (tolerance {:g}, at most {} dofs)",
+                                                options.adaptive_tolerance, options.adaptive_max_dofs)
+                                  : "",
+                 solver,
                  problem.body->die_parts().empty()
                    ? ""
                    : ", contact.method = " + problem.contact.method,

@@ -229,6 +229,56 @@ namespace
     fs::remove_all(dir);
   }
 
+  // Adaptive refinement from the command line (issue 25 item 1): the cycles in the result;
+  // a bad fem.refinement is exit 2 naming the field, and so is a bad --adaptive-tolerance.
+  TEST(FemSolveCli, AdaptiveRefinementWritesItsCyclesAndRejectsBadSettings)
+  {
+    const fs::path dir = scratch("adaptive");
+    const fs::path in = dir / "rotating.json", out = dir / "result.json";
+    std::ofstream(in) << rotating_cylinder().dump();
+    {
+      const Outcome o = run(in.string() + " --refinements 0 --adaptive --adaptive-tolerance 1e-4 --output " +
+                            out.string());
+      ASSERT_EQ(o.status, 0) << o.err;
+      std::ifstream f(out);
+      const nlohmann::json r = nlohmann::json::parse(f);
+      const nlohmann::json &d = r.at("discretization");
+      EXPECT_EQ(d.at("refinement_strategy"), "adaptive");
+      const nlohmann::json &cycles = d.at("adaptive").at("cycles");
+      ASSERT_GE(cycles.size(), 2u);
+      EXPECT_EQ(cycles.back().at("dofs"), d.at("dofs"));
+      for (std::size_t k = 1; k < cycles.size(); ++k)
+        EXPECT_GT(cycles[k].at("dofs").get<long>(), cycles[k - 1].at("dofs").get<long>());
+      EXPECT_NE(d.at("adaptive").at("stopped").get<std::string>().find("tolerance"), std::string::npos);
+    }
+    fs::remove(out);
+    struct Case
+    {
+      nlohmann::json refinement;
+      std::string field;
+    };
+    for (const Case &c : {Case{{{"strategy", "kelly"}}, "fem.refinement.strategy"},
+                          Case{{{"tolerance", 1e-6}}, "fem.refinement.strategy"},
+                          Case{{{"strategy", "adaptive"}, {"tolerance", 0.0}}, "fem.refinement.tolerance"},
+                          Case{{{"strategy", "adaptive"}, {"max_dofs", 10}}, "fem.refinement.max_dofs"},
+                          Case{{{"strategy", "adaptive"}, {"cells", 10}}, "fem.refinement.cells"}})
+      {
+        nlohmann::json j = rotating_cylinder();
+        j["fem"] = {{"refinement", c.refinement}};
+        std::ofstream(in) << j.dump();
+        const Outcome o = run(in.string() + " --output " + out.string());
+        EXPECT_EQ(o.status, 2) << c.field << ": " << o.err;
+        EXPECT_NE(o.err.find(c.field), std::string::npos) << o.err;
+        EXPECT_FALSE(fs::exists(out));
+      }
+    std::ofstream(in) << rotating_cylinder().dump();
+    const Outcome o = run(in.string() + " --adaptive --adaptive-tolerance 2 --output " + out.string());
+    EXPECT_EQ(o.status, 2) << o.err;
+    EXPECT_NE(o.err.find("--adaptive-tolerance"), std::string::npos) << o.err;
+    EXPECT_FALSE(fs::exists(out));
+    fs::remove_all(dir);
+  }
+
   // The hollow-cylinder form's die with an outer pressure: the outer side is the die's part.
   TEST(FemSolveCli, HollowCylinderDieWithAnOuterPressureExitsWith2)
   {

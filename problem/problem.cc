@@ -714,11 +714,27 @@ namespace axisym
       }
     if (top.has("fem"))
       {
-        const ObjectReader f(top.at("fem"), "fem", {"degree", "refinements"});
+        const ObjectReader f(top.at("fem"), "fem", {"degree", "refinements", "refinement"});
         if (f.has("degree"))
           p.fem.degree = f.integer("degree", ranges::fem_degree);
         if (f.has("refinements"))
           p.fem.refinements = f.integer("refinements", ranges::fem_refinements);
+        if (f.has("refinement"))
+          {
+            const ObjectReader a(top.at("fem").at("refinement"), "fem.refinement",
+                                 {"strategy", "tolerance", "max_dofs"});
+            if (!a.has("strategy"))
+              throw InputError("problem file: missing field fem.refinement.strategy (must be "
+                               "one of \"adaptive\", \"uniform\")");
+            p.fem.adaptive = a.string("strategy", {"uniform", "adaptive"}) == "adaptive";
+            if (a.has("tolerance"))
+              p.fem.adaptive_tolerance = a.number("tolerance", "must be in [1e-12, 1e-1]",
+                                                  [](double x) { return x >= 1e-12 && x <= 1e-1; });
+            if (a.has("max_dofs"))
+              p.fem.adaptive_max_dofs = static_cast<long>(a.number(
+                "max_dofs", "must be a whole number in [100, 1e8]",
+                [](double x) { return x >= 100 && x <= 1e8 && x == std::floor(x); }));
+          }
       }
   }
   } // namespace

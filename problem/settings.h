@@ -121,6 +121,13 @@ namespace axisym
   {
     int degree = 2;
     int refinements = 4;
+    /// "fem.refinement": {"strategy": "adaptive", "tolerance": t, "max_dofs": n} (issue 25):
+    /// from the mesh of level `refinements`, cycles of Kelly-estimated refinement until the
+    /// estimate or the energy's change between cycles is below t (relative) or the next
+    /// cycle would pass n DoFs. "uniform" (the default): the L global refinements alone.
+    bool adaptive = false;
+    double adaptive_tolerance = 1e-6;
+    long adaptive_max_dofs = 1000000;
   };
 
   /// The "contact" object of a die problem.
