@@ -1263,7 +1263,10 @@ def corners_section(corners, out_dir):
           "normalization sqrt(2 pi) rho^(1 - lambda) sigma_thth(rho, 0) -> K on the bisector), from the "
           "interaction integral with the dual modes on each solver's field (`rfm/fields/vertex_intensity.h`) "
           "over the sector of the enrichment's radius; 'K vs FEM' is the largest relative difference of all "
-          "the vertex's K_i (Re lambda_i < 1) from the FEM's finest level.", ""]
+          "the vertex's K_i (Re lambda_i < 1) from the FEM's finest level. The FEM's adaptive row starts "
+          "from the base mesh without the grading and refines by Kelly's estimate (`fem_solve --adaptive`, "
+          "`fem_reference/README.md`) until its estimate's square and the energy's change since half the "
+          "DoFs are below the tolerance; its energy is compared with the graded levels' limit.", ""]
     cases = [("stepped_ring", "9.1 The stepped ring: a 270-degree re-entrant vertex between two free faces"),
              ("clamped_cylinder", "9.2 A cylinder clamped on its base: the 90-degree clamped-free vertex")]
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
@@ -1289,6 +1292,11 @@ def corners_section(corners, out_dir):
             rel = abs(row["reissner"] - f["extrapolated_energy"]) / abs(f["extrapolated_energy"])
             md.append(f"| FEM Q2 {lk} ({row['dofs']} DoFs) | {row['reissner']:.10e} | {rel:.1e} | | | "
                       f"{k_1(row)} | | {row['seconds']:.2f} |")
+        fa = c.get("fem_adaptive")
+        if fa:
+            md.append(f"| FEM Q2 adaptive, tolerance {fa['tolerance']:g} ({fa['dofs']} DoFs, "
+                      f"{len(fa['cycles'])} cycles) | {fa['reissner']:.10e} | {fa['energy_error_relative']:.1e} | | | "
+                      f"{k_1(fa)} | | {fa['seconds']:.2f} |")
         for rk, label in (("rfm", "RFM"), ("rfm_without_vertex_columns", "RFM without vertex columns")):
             rows = c.get(rk, {})
             ps = sorted(rows, key=lambda k: int(k[1:]))

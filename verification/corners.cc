@@ -9,7 +9,8 @@
 // For each: the RFM at the default settings (the vertex's modes and local columns,
 // rfm/spaces/vertex_enrichment.h) and without the vertex's columns, against p; the FEM (Q2 on
 // gmsh meshes graded toward the vertex, FemOptions::grade_toward_vertices) against the level
-// L with Richardson's estimate of the energy's limit from the last three levels; the RFM's Phi_R against that limit and its
+// L with Richardson's estimate of the energy's limit from the last three levels, and with
+// adaptive refinement (Kelly) from the base mesh; the RFM's Phi_R against that limit and its
 // sample stresses against the finest FEM level (the samples lie away from the vertex; the
 // values on the axis are left out: issue 24 item 5).
 //
@@ -96,6 +97,38 @@ namespace
     if (!(d1 != 0.0 && d2 != 0.0 && d1 / d2 > 1.0))
       throw verification::NumericalFailure(file + ": the FEM's energies do not converge monotonically");
     const double limit = energies[n - 1] + d2 / (d1 / d2 - 1.0);
+
+    // The FEM with adaptive refinement from the base mesh (issue 25 item 1: Kelly's estimate,
+    // no a-priori grading) at the tolerance 1e-7, against the graded levels' limit.
+    {
+      fem::FemOptions o = fem::options_from_problem(sampled);
+      o.refinements = 0;
+      o.adaptive = true;
+      o.adaptive_tolerance = 1e-7;
+      o.progress = false;
+      const fem::FemResult f = fem::solve(sampled, o);
+      if (!f.success)
+        throw verification::NumericalFailure(file + " FEM adaptive: " + f.message);
+      const std::vector<rfm::VertexIntensity> k = rfm::vertex_intensities(
+        verification::sampled_interaction_field(f, problem.samples.size()), frame, problem, rho_1);
+      const double error = std::abs(f.functionals.reissner - limit) / std::abs(limit);
+      const unsigned long finest = c["fem"]["L" + std::to_string(levels.back())]["dofs"].get<unsigned long>();
+      fmt::print("FEM Q2 adaptive: Phi_R = {:.10e} J/rad ({:.2e} from the graded levels' limit), K_1 = "
+                 "{:.8e} ({} dofs after {} cycles, {:.1f} times fewer than L = {}; {:.1f} s)\n",
+                 f.functionals.reissner, error, k.front().value.real(), f.n_dofs, f.adaptive_cycles.size(),
+                 static_cast<double>(finest) / static_cast<double>(f.n_dofs), levels.back(), f.total_seconds);
+      nlohmann::json cycles = nlohmann::json::array();
+      for (const fem::FemResult::AdaptiveCycle &cy : f.adaptive_cycles)
+        cycles.push_back({{"dofs", cy.n_dofs}, {"reissner", cy.reissner}, {"estimate", cy.estimate}});
+      c["fem_adaptive"] = {{"tolerance", o.adaptive_tolerance},
+                           {"reissner", f.functionals.reissner},
+                           {"energy_error_relative", error},
+                           {"dofs", f.n_dofs},
+                           {"dofs_ratio_finest_level", static_cast<double>(finest) / static_cast<double>(f.n_dofs)},
+                           {"seconds", f.total_seconds},
+                           {"intensities", intensities_json(k)},
+                           {"cycles", cycles}};
+    }
     c["fem"]["observed_order_energy"] = std::log2(d1 / d2);
     c["fem"]["extrapolated_energy"] = limit;
     c["fem"]["estimated_error_relative"] = std::abs(energies[n - 1] - limit) / std::abs(limit);
