@@ -202,7 +202,8 @@ namespace fem
           {
             result.contact->penalty = kappa_;
             result.contact->penalty_factor = options_.penalty_factor;
-            result.contact->edge_fitting_passes = pass;
+            // An adaptive cycle counts as a pass in the steps' history, not here.
+            result.contact->edge_fitting_passes = std::min(pass, options_.edge_fitting_passes);
             result.success = false;
             active_set_loop(result, pass, finish);
           }

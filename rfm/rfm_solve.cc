@@ -92,9 +92,9 @@ namespace
                                       "fixed degree p = {}: rounding or an unresolved singularity "
                                       "wins; the answer is in doubt",
                                       before, p - 2, phi.indicator(), p));
-    // More dropped directions alone are no doubt while the indicator still falls fast (the
-    // clamped cylinder at p = 12: 4 more than at p = 10, the indicator 27 times smaller, Phi_R
-    // 2.4e-8 from the FEM's limit); with a stalling indicator they say why it stalls.
+    // More dropped directions alone are no doubt while the indicator still falls (the clamped
+    // cylinder at p = 12: 4 more than at p = 10, the indicator 2.6 times smaller, Phi_R 2.3e-8
+    // from the FEM's limit); with a stalling indicator they say why it stalls.
     const Eigen::Index more = d[0] + d[1] - d_lower[0] - d_lower[1];
     if (more > 0 && phi.indicator() > 0.5 * before)
       add_warning(result, fmt::format("the orthonormalization drops {} more dependent directions at "
