@@ -84,6 +84,8 @@ namespace fem
     o.adaptive = problem.fem.adaptive;
     o.adaptive_tolerance = problem.fem.adaptive_tolerance;
     o.adaptive_max_dofs = problem.fem.adaptive_max_dofs;
+    o.adaptive_goal = problem.fem.adaptive_goal_samples ? FemOptions::AdaptiveGoal::samples
+                                                        : FemOptions::AdaptiveGoal::energy;
     return o;
   }
 
@@ -263,21 +265,44 @@ namespace fem
     {
       auto t_cycle = Clock::now();
       std::vector<FemResult::AdaptiveCycle> &cycles = result.adaptive_cycles;
+      const bool goal = options_.adaptive_goal == FemOptions::AdaptiveGoal::samples && !problem_.samples.empty();
+      std::vector<std::vector<FieldSample>> sampled; // per cycle (goal: samples)
       for (int cycle = 0;; ++cycle)
         {
-          Vector<float> eta = cell_estimates();
+          Vector<float> eta = cell_estimates(solution_);
           FemResult::AdaptiveCycle rec;
           rec.n_dofs = result.n_dofs, rec.n_cells = result.n_cells;
           const double scale = gradient_norm();
           rec.estimate = scale > 0 ? eta.l2_norm() / scale : 0.0;
           rec.reissner = result.functionals.reissner;
           // The change since the mesh had half the dofs (a cycle refines few cells where a
-          // singularity dominates: the change from the previous cycle alone would stop early).
+          // singularity dominates: the change from the previous cycle alone would stop early):
+          // of the energy, or of the sample stresses over the largest of them (goal).
+          if (goal)
+            {
+              sampled.push_back(samples());
+              const Vector<double> z = dual_of_samples(sampled.back());
+              const Vector<float> eta_z = cell_estimates(z);
+              for (unsigned int i = 0; i < eta.size(); ++i)
+                eta[i] *= eta_z[i];
+            }
           rec.change = std::numeric_limits<double>::infinity();
-          for (auto c = cycles.rbegin(); c != cycles.rend(); ++c)
-            if (2 * c->n_dofs <= rec.n_dofs)
+          for (std::size_t c = cycles.size(); c-- > 0;)
+            if (2 * cycles[c].n_dofs <= rec.n_dofs)
               {
-                rec.change = std::abs(rec.reissner - c->reissner) / std::abs(rec.reissner);
+                if (!goal)
+                  rec.change = std::abs(rec.reissner - cycles[c].reissner) / std::abs(rec.reissner);
+                else
+                  {
+                    double largest = 0, change = 0;
+                    for (std::size_t k = 0; k < sampled.back().size(); ++k)
+                      for (int m = 0; m < 4; ++m)
+                        {
+                          largest = std::max(largest, std::abs(sampled.back()[k].sigma[m]));
+                          change = std::max(change, std::abs(sampled.back()[k].sigma[m] - sampled[c][k].sigma[m]));
+                        }
+                    rec.change = largest > 0 ? change / largest : 0.0;
+                  }
                 break;
               }
           rec.force = result.contact ? result.contact->force : 0.0;
@@ -294,7 +319,13 @@ namespace fem
           // times the estimate's square), the change since half the dofs overestimates (10
           // times there).
           const double tol = options_.adaptive_tolerance;
-          if (rec.estimate * rec.estimate < tol && rec.change < tol)
+          if (goal && rec.change < tol)
+            {
+              result.adaptive_stop = "the sample stresses' change since half the dofs is below "
+                                     "the tolerance";
+              return;
+            }
+          if (!goal && rec.estimate * rec.estimate < tol && rec.change < tol)
             {
               result.adaptive_stop = "the estimate squared and the energy's change since half "
                                      "the dofs are below the tolerance";
@@ -334,12 +365,69 @@ namespace fem
         }
     }
 
-    Vector<float> AxisymmetricSolver::cell_estimates() const
+    Vector<double> AxisymmetricSolver::dual_of_samples(const std::vector<FieldSample> &now)
+    {
+      double largest = 0;
+      for (const FieldSample &s : now)
+        for (int m = 0; m < 4; ++m)
+          largest = std::max(largest, std::abs(s.sigma[m]));
+      Vector<double> rhs(dof_handler_.n_dofs());
+      if (!(largest > 0))
+        return rhs;
+      FEValues<2> fv(mapping(), fe_, cell_quadrature_,
+                     update_values | update_gradients | update_quadrature_points | update_JxW_values);
+      const unsigned int n = fe_.n_dofs_per_cell();
+      Vector<double> local(n);
+      std::vector<types::global_dof_index> dofs(n);
+      for (const FieldSample &s : now)
+        {
+          // The cell around the sample (a mirrored body's image point in z > 0).
+          const Point<2> x(s.r, std::abs(s.z));
+          DoFHandler<2>::active_cell_iterator cell;
+          try
+            {
+              cell = GridTools::find_active_cell_around_point(mapping(), dof_handler_, x).first;
+            }
+          catch (const std::exception &)
+            {
+              continue;
+            }
+          if (cell.state() != IteratorState::valid)
+            continue;
+          std::array<double, 4> weight{};
+          for (int m = 0; m < 4; ++m)
+            weight[m] = std::abs(s.sigma[m]) > 1e-3 * largest ? (s.sigma[m] > 0 ? 1.0 : -1.0) / largest : 0.0;
+          fv.reinit(cell);
+          double area = 0;
+          for (const unsigned int q : fv.quadrature_point_indices())
+            area += fv.JxW(q);
+          local = 0;
+          for (const unsigned int q : fv.quadrature_point_indices())
+            {
+              const double r = fv.quadrature_point(q)[0];
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const unsigned int c = fe_.system_to_component_index(i).first;
+                  const Stress st =
+                    d_ * shape_strain(c, r, fv.shape_value_component(i, q, c), fv.shape_grad_component(i, q, c));
+                  double j = 0;
+                  for (int m = 0; m < 4; ++m)
+                    j += weight[m] * st[m];
+                  local[i] += j * fv.JxW(q) / area;
+                }
+            }
+          cell->get_dof_indices(dofs);
+          constraints_.distribute_local_to_global(local, dofs, rhs);
+        }
+      return solve_homogeneous(rhs);
+    }
+
+    Vector<float> AxisymmetricSolver::cell_estimates(const Vector<double> &u) const
     {
       Vector<float> eta(triangulation_.n_active_cells());
       KellyErrorEstimator<2>::estimate(mapping(), dof_handler_, QGauss<1>(options_.degree + 1),
                                        std::map<types::boundary_id, const Function<2> *>(),
-                                       solution_, eta);
+                                       u, eta);
       for (const auto &cell : triangulation_.active_cell_iterators())
         eta[cell->active_cell_index()] *= static_cast<float>(std::sqrt(std::max(0.0, cell->center()[0])));
       return eta;

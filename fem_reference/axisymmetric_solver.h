@@ -379,9 +379,12 @@ namespace fem::internal
     template <typename Solve, typename Zones>
     void adaptive_cycles(FemResult &result, int first_pass, const Solve &solve_on_mesh,
                          const Zones &zones_from_result);
-    /// Kelly's estimate of each active cell (the jumps of grad u across its interior faces),
-    /// times sqrt(r) of the cell's centre: the r-weighted energy's share.
-    Vector<float> cell_estimates() const;
+    /// Kelly's estimate of each active cell for the field u (the jumps of grad u across its
+    /// interior faces), times sqrt(r) of the cell's centre: the r-weighted energy's share.
+    Vector<float> cell_estimates(const Vector<double> &u) const;
+    /// FemOptions::AdaptiveGoal::samples: the dual solution for the sample stresses `now`
+    /// (the current ones; see FemOptions::adaptive_goal), with the last factorization.
+    Vector<double> dual_of_samples(const std::vector<FieldSample> &now);
     /// sqrt(int |grad u|^2 r dr dz) of the solution: the estimate's scale.
     double gradient_norm() const;
     /// Bilateral: moves the boundary vertex nearest to each free end of a prescribed zone onto

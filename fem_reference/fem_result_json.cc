@@ -56,7 +56,10 @@ namespace fem
           "adaptive cycles: Kelly's estimate times sqrt(r) per cell, the cells carrying "
           "adaptive_fraction of its square refined (hanging nodes constrained), new vertices on "
           "the arcs, MappingQ(degree)";
-        j["discretization"]["adaptive"] = {{"tolerance", options.adaptive_tolerance},
+        j["discretization"]["adaptive"] = {{"goal", options.adaptive_goal == FemOptions::AdaptiveGoal::samples
+                                                      ? "samples"
+                                                      : "energy"},
+                                           {"tolerance", options.adaptive_tolerance},
                                            {"max_dofs", options.adaptive_max_dofs},
                                            {"fraction", options.adaptive_fraction},
                                            {"stopped", r.adaptive_stop},

@@ -40,6 +40,7 @@ int main(int argc, char **argv)
       int refinements = -1, edge_fitting_passes = -1, max_iterations = -1;
       double penalty_factor = -1, adaptive_tolerance = -1, max_dofs = -1;
       bool adaptive = false;
+      std::string adaptive_goal;
       app.add_option("problem", problem_path, "problem file (JSON, SI units)")->required();
       app.add_option("--refinements", refinements,
                      "mesh level L: cells per line x 2^L (nested graded meshes)");
@@ -50,6 +51,10 @@ int main(int argc, char **argv)
       app.add_option("--adaptive-tolerance", adaptive_tolerance,
                      "adaptive: the relative estimate or energy change to stop at (default "
                      "fem.refinement.tolerance, 1e-6)");
+      app.add_option("--adaptive-goal", adaptive_goal,
+                     "adaptive: refine for the energy (default) or for the stresses at the "
+                     "problem's samples (goal-oriented; fem.refinement.goal)")
+        ->check(CLI::IsMember({"energy", "samples"}));
       app.add_option("--max-dofs", max_dofs,
                      "adaptive: no cycle beyond this many dofs (default fem.refinement.max_dofs, 1e6)");
       app.add_option("--output", output_path, "result file (JSON); default: stdout");
@@ -86,6 +91,9 @@ int main(int argc, char **argv)
         }
       if (adaptive)
         options.adaptive = true;
+      if (!adaptive_goal.empty())
+        options.adaptive_goal = adaptive_goal == "samples" ? fem::FemOptions::AdaptiveGoal::samples
+                                                           : fem::FemOptions::AdaptiveGoal::energy;
       if (adaptive_tolerance != -1)
         options.adaptive_tolerance = adaptive_tolerance;
       if (max_dofs != -1)

@@ -261,7 +261,8 @@ namespace
                           Case{{{"tolerance", 1e-6}}, "fem.refinement.strategy"},
                           Case{{{"strategy", "adaptive"}, {"tolerance", 0.0}}, "fem.refinement.tolerance"},
                           Case{{{"strategy", "adaptive"}, {"max_dofs", 10}}, "fem.refinement.max_dofs"},
-                          Case{{{"strategy", "adaptive"}, {"cells", 10}}, "fem.refinement.cells"}})
+                          Case{{{"strategy", "adaptive"}, {"cells", 10}}, "fem.refinement.cells"},
+                          Case{{{"strategy", "adaptive"}, {"goal", "stress"}}, "fem.refinement.goal"}})
       {
         nlohmann::json j = rotating_cylinder();
         j["fem"] = {{"refinement", c.refinement}};

@@ -722,7 +722,7 @@ namespace axisym
         if (f.has("refinement"))
           {
             const ObjectReader a(top.at("fem").at("refinement"), "fem.refinement",
-                                 {"strategy", "tolerance", "max_dofs"});
+                                 {"strategy", "tolerance", "max_dofs", "goal"});
             if (!a.has("strategy"))
               throw InputError("problem file: missing field fem.refinement.strategy (must be "
                                "one of \"adaptive\", \"uniform\")");
@@ -730,6 +730,8 @@ namespace axisym
             if (a.has("tolerance"))
               p.fem.adaptive_tolerance = a.number("tolerance", "must be in [1e-12, 1e-1]",
                                                   [](double x) { return x >= 1e-12 && x <= 1e-1; });
+            if (a.has("goal"))
+              p.fem.adaptive_goal_samples = a.string("goal", {"energy", "samples"}) == "samples";
             if (a.has("max_dofs"))
               p.fem.adaptive_max_dofs = static_cast<long>(a.number(
                 "max_dofs", "must be a whole number in [100, 1e8]",

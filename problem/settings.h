@@ -128,6 +128,8 @@ namespace axisym
     bool adaptive = false;
     double adaptive_tolerance = 1e-6;
     long adaptive_max_dofs = 1000000;
+    /// "goal": "energy" (default) or "samples" (refine for the stresses at the samples).
+    bool adaptive_goal_samples = false;
   };
 
   /// The "contact" object of a die problem.
