@@ -469,22 +469,18 @@ namespace
                   // The generalized stress intensities (vertex_intensity.h) over the support.
                   if (model->ok())
                     {
-                      nlohmann::json k = nlohmann::json::array();
-                      for (const rfm::VertexIntensity &x : rfm::vertex_intensities(
-                             [&](const Eigen::Ref<const Eigen::VectorXd> &r, const Eigen::Ref<const Eigen::VectorXd> &z) {
-                               return model->evaluate(r, z);
-                             },
-                             e, problem, e.cutoff_radius()))
-                        {
-                          k.push_back({{"lambda", {x.lambda.real(), x.lambda.imag()}},
-                                       {"K", {x.value.real(), x.value.imag()}}});
-                          fmt::print(stderr, "rfm_solve: vertex ({:.6g}, {:.6g}) m: K = {:.6e}{} Pa m^{:.4g} "
-                                             "(lambda = {:.6g})\n",
-                                     v.at.r, v.at.z, x.value.real(),
-                                     x.value.imag() != 0.0 ? fmt::format(" {:+.6e} i", x.value.imag()) : "",
-                                     1.0 - x.lambda.real(), x.lambda.real());
-                        }
-                      enrichment["intensities"] = k;
+                      const std::vector<rfm::VertexIntensity> k = rfm::vertex_intensities(
+                        [&](const Eigen::Ref<const Eigen::VectorXd> &r, const Eigen::Ref<const Eigen::VectorXd> &z) {
+                          return model->evaluate(r, z);
+                        },
+                        e, problem, e.cutoff_radius());
+                      for (const rfm::VertexIntensity &x : k)
+                        fmt::print(stderr, "rfm_solve: vertex ({:.6g}, {:.6g}) m: K = {:.6e}{} Pa m^{:.4g} "
+                                           "(lambda = {:.6g})\n",
+                                   v.at.r, v.at.z, x.value.real(),
+                                   x.value.imag() != 0.0 ? fmt::format(" {:+.6e} i", x.value.imag()) : "",
+                                   1.0 - x.lambda.real(), x.lambda.real());
+                      enrichment["intensities"] = rfm::to_json(k);
                       enrichment["intensity_units"] = "Pa m^(1 - lambda); K of the notch normalization "
                                                       "sqrt(2 pi) rho^(1 - lambda) sigma_thth(rho, 0) -> K";
                     }

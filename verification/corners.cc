@@ -48,12 +48,6 @@ namespace
       throw verification::NumericalFailure(file + ": expected one enriched vertex");
     const rfm::VertexEnrichment frame = frame_model.vertex_enrichments().front();
     const double rho_1 = frame.cutoff_radius();
-    auto intensities_json = [](const std::vector<rfm::VertexIntensity> &k) {
-      nlohmann::json j = nlohmann::json::array();
-      for (const rfm::VertexIntensity &x : k)
-        j.push_back({{"lambda", {x.lambda.real(), x.lambda.imag()}}, {"K", {x.value.real(), x.value.imag()}}});
-      return j;
-    };
     c["intensity_sector_radius"] = rho_1;
 
     // The FEM: energy against L, Richardson from the last three levels; the intensities from
@@ -89,7 +83,7 @@ namespace
                                                  {"dofs", f.n_dofs},
                                                  {"seconds", f.total_seconds},
                                                  {"samples", samples},
-                                                 {"intensities", intensities_json(fem_k)}};
+                                                 {"intensities", rfm::to_json(fem_k)}};
         energies.push_back(phi);
       }
     const std::size_t n = energies.size();
@@ -127,7 +121,7 @@ namespace
                            {"dofs", f.n_dofs},
                            {"dofs_ratio_finest_level", static_cast<double>(finest) / static_cast<double>(f.n_dofs)},
                            {"seconds", f.total_seconds},
-                           {"intensities", intensities_json(k)},
+                           {"intensities", rfm::to_json(k)},
                            {"cycles", cycles}};
     }
     c["fem"]["observed_order_energy"] = std::log2(d1 / d2);
@@ -183,7 +177,7 @@ namespace
                        "columns ({:.1f} s)\n",
                        enriched ? "" : " without vertex columns", p, f.reissner, energy_error,
                        f.indicator(), sample_error, k_error, m.n_vertex_columns(), seconds);
-            c[key]["p" + std::to_string(p)] = {{"intensities", intensities_json(k)},
+            c[key]["p" + std::to_string(p)] = {{"intensities", rfm::to_json(k)},
                                                {"intensity_error_relative", k_error},
                                                {"reissner", f.reissner},
                                                {"lagrange", f.lagrange},

@@ -10,6 +10,7 @@
 #include "rfm/spaces/edge_modes.h"
 
 #include <functional>
+#include <utility>
 
 namespace rfm
 {
@@ -29,4 +30,13 @@ namespace rfm
                                     const std::function<double(double)> &contact_u,
                                     double free_pressure = 0.0);
   Quadrature2D interaction_quadrature(const EdgeFrame &frame, double rho_1);
+
+  /// The interaction integrals' weight q(rho) = 1 - 3 t^2 + 2 t^3, t = rho / rho_1, and
+  /// dq / drho: 1 at the edge or vertex and flat there, where the discrete field is least
+  /// accurate, 0 and flat at rho_1.
+  inline std::pair<double, double> interaction_weight(const double rho, const double rho_1)
+  {
+    const double t = rho / rho_1;
+    return {1.0 - t * t * (3.0 - 2.0 * t), 6.0 * t * (t - 1.0) / rho_1};
+  }
 } // namespace rfm

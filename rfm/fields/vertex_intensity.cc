@@ -1,5 +1,7 @@
 #include "rfm/fields/vertex_intensity.h"
 
+#include "rfm/fields/interaction_integral.h"
+
 #include <Eigen/LU>
 
 #include <cmath>
@@ -13,30 +15,12 @@ namespace rfm
     constexpr double pi = 3.14159265358979323846;
     using cd = std::complex<double>;
 
-    /// One real wedge field at a point in meridian components: (sigma_rr, sigma_zz, sigma_tt,
-    /// sigma_rz) [Pa] and (u_r, u_z) [m], for a mode's real (part 0) or imaginary (part 1)
-    /// part, scaled by `scale` (complex), the plane-strain hoop stress nu (s_rr + s_zz).
-    struct RealField
+    /// Part `part` of a mode's field scaled by `scale` at (rho, theta) in meridian components.
+    MeridianWedgeField real_field(const Wedge &wedge, const WedgeMode &mode, const cd scale, const int part,
+                                  const double rho, const double theta, const double beta, const double mu,
+                                  const double nu)
     {
-      double s[4], u[2];
-    };
-    RealField real_field(const Wedge &wedge, const WedgeMode &mode, const cd scale, const int part,
-                         const double rho, const double theta, const double beta, const double mu,
-                         const double nu)
-    {
-      const WedgeFieldValues v = wedge.evaluate(mode, rho, theta);
-      auto take = [&](const cd x) { return part == 0 ? (scale * x).real() : (scale * x).imag(); };
-      const double s_pp = take(v.s_rr), s_qq = take(v.s_tt), s_pq = take(v.s_rt);
-      const double u_p = take(v.u_r), u_q = take(v.u_t);
-      const double phi = theta + beta, c = std::cos(phi), s = std::sin(phi);
-      RealField f;
-      f.s[rr] = s_pp * c * c + s_qq * s * s - 2.0 * s_pq * c * s;
-      f.s[zz] = s_pp * s * s + s_qq * c * c + 2.0 * s_pq * c * s;
-      f.s[rz] = (s_pp - s_qq) * c * s + s_pq * (c * c - s * s);
-      f.s[tt] = nu * (f.s[rr] + f.s[zz]);
-      f.u[0] = (u_p * c - u_q * s) / mu;
-      f.u[1] = (u_p * s + u_q * c) / mu;
-      return f;
+      return meridian_wedge_field(wedge.evaluate(mode, rho, theta), scale, part, theta + beta, mu, nu);
     }
 
     /// The modes' real fields and their duals: field k is part parts[k] of modes[mode_of[k]].
@@ -55,12 +39,6 @@ namespace rfm
       std::size_t size() const { return part.size(); }
     };
 
-    /// The smoothstep weight q(rho) = 1 - 3 t^2 + 2 t^3 and dq / drho.
-    std::pair<double, double> weight(const double rho, const double rho_1)
-    {
-      const double t = rho / rho_1;
-      return {1.0 - t * t * (3.0 - 2.0 * t), 6.0 * t * (t - 1.0) / rho_1};
-    }
   } // namespace
 
   Quadrature2D vertex_interaction_quadrature(const VertexEnrichment &frame, const double rho_1)
@@ -125,11 +103,11 @@ namespace rfm
         const double e_r = std::cos(phi), e_z = std::sin(phi);
         for (std::size_t i = 0; i < n; ++i)
           {
-            const RealField f = real_field(wedge, modes.modes[modes.mode_of[i]], modes.scales[modes.mode_of[i]],
+            const MeridianWedgeField f = real_field(wedge, modes.modes[modes.mode_of[i]], modes.scales[modes.mode_of[i]],
                                            modes.part[i], 1.0, theta, beta, mu, nu);
             for (std::size_t j = 0; j < n; ++j)
               {
-                const RealField g = real_field(wedge, duals.modes[duals.mode_of[j]], 1.0, duals.part[j],
+                const MeridianWedgeField g = real_field(wedge, duals.modes[duals.mode_of[j]], 1.0, duals.part[j],
                                                1.0, theta, beta, mu, nu);
                 b(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) +=
                   gt.weights[k] *
@@ -154,14 +132,14 @@ namespace rfm
         const double e_r = (r - at.r) / rho, e_z = (z - at.z) / rho;
         double theta = std::atan2(e_z, e_r) - beta;
         theta -= 2.0 * pi * std::round(theta / (2.0 * pi));
-        const auto [q, dq] = weight(rho, rho_1);
+        const auto [q, dq] = interaction_weight(rho, rho_1);
         const double u_r = fh.u(k, 0), ut_r = u_r - fv.u(0, 0), ut_z = fh.u(k, 1) - fv.u(0, 1);
         const std::array<double, 2> f =
           loads.body_force() ? axisym::body_force(loads, m, r, z) : std::array<double, 2>{0.0, 0.0};
         const double alpha_t = loads.thermal() ? axisym::thermal_strain(loads, m, r, z) : 0.0;
         for (std::size_t j = 0; j < n; ++j)
           {
-            const RealField g = real_field(wedge, duals.modes[duals.mode_of[j]], 1.0, duals.part[j], rho,
+            const MeridianWedgeField g = real_field(wedge, duals.modes[duals.mode_of[j]], 1.0, duals.part[j], rho,
                                            theta, beta, mu, nu);
             const double w_r = r * (fh.sigma(k, rr) * g.u[0] + fh.sigma(k, rz) * g.u[1] -
                                     g.s[rr] * ut_r - g.s[rz] * ut_z);
@@ -205,10 +183,10 @@ namespace rfm
         for (Eigen::Index k = 0; k < gx.nodes.size(); ++k)
           {
             const double x = gx.nodes[k], r = at.r + x * t_r;
-            const double q = weight(x, rho_1).first;
+            const double q = interaction_weight(x, rho_1).first;
             for (std::size_t j = 0; j < n; ++j)
               {
-                const RealField g = real_field(wedge, duals.modes[duals.mode_of[j]], 1.0, duals.part[j], x,
+                const MeridianWedgeField g = real_field(wedge, duals.modes[duals.mode_of[j]], 1.0, duals.part[j], x,
                                                theta, beta, mu, nu);
                 rhs[static_cast<Eigen::Index>(j)] += gx.weights[k] * q * r * (tr_r * g.u[0] + tr_z * g.u[1]);
               }
@@ -225,5 +203,13 @@ namespace rfm
         at_c += complex ? 2 : 1;
       }
     return out;
+  }
+
+  nlohmann::json to_json(const std::vector<VertexIntensity> &intensities)
+  {
+    nlohmann::json j = nlohmann::json::array();
+    for (const VertexIntensity &x : intensities)
+      j.push_back({{"lambda", {x.lambda.real(), x.lambda.imag()}}, {"K", {x.value.real(), x.value.imag()}}});
+    return j;
   }
 } // namespace rfm

@@ -38,6 +38,8 @@
 #include "rfm/quadrature/quadrature.h"
 #include "rfm/spaces/vertex_enrichment.h"
 
+#include <nlohmann/json.hpp>
+
 #include <complex>
 #include <vector>
 
@@ -62,4 +64,7 @@ namespace rfm
   std::vector<VertexIntensity> vertex_intensities(const FieldEvaluator &field,
                                                   const VertexEnrichment &frame,
                                                   const axisym::Problem &problem, double rho_1);
+
+  /// [{"lambda": [re, im], "K": [re, im]}, ...]: the result JSON's form (rfm_solve, drivers).
+  nlohmann::json to_json(const std::vector<VertexIntensity> &intensities);
 } // namespace rfm

@@ -65,21 +65,16 @@ namespace
           f.sigma(k, rr) = f.sigma(k, zz) = -p, f.sigma(k, tt) = -2.0 * nu * p;
           if (rho == 0.0)
             continue;
-          const double phi = std::atan2(dz, dr), c = std::cos(phi), s = std::sin(phi);
+          const double phi = std::atan2(dz, dr);
           double theta = phi - beta;
           theta -= 2.0 * pi * std::round(theta / (2.0 * pi));
           for (std::size_t i = 0; i < 3; ++i)
             {
-              const WedgeFieldValues v = wedge.evaluate(modes[i], rho, theta);
-              const double a = amplitude[i];
-              const double s_pp = a * (scale[i] * v.s_rr).real(), s_qq = a * (scale[i] * v.s_tt).real();
-              const double s_pq = a * (scale[i] * v.s_rt).real();
-              const double u_p = a * (scale[i] * v.u_r).real() / mu, u_q = a * (scale[i] * v.u_t).real() / mu;
-              const double s_rr = s_pp * c * c + s_qq * s * s - 2.0 * s_pq * c * s;
-              const double s_zz = s_pp * s * s + s_qq * c * c + 2.0 * s_pq * c * s;
-              f.sigma(k, rr) += s_rr, f.sigma(k, zz) += s_zz, f.sigma(k, tt) += nu * (s_rr + s_zz);
-              f.sigma(k, rz) += (s_pp - s_qq) * c * s + s_pq * (c * c - s * s);
-              f.u(k, 0) += u_p * c - u_q * s, f.u(k, 1) += u_p * s + u_q * c;
+              const MeridianWedgeField m = meridian_wedge_field(wedge.evaluate(modes[i], rho, theta),
+                                                                amplitude[i] * scale[i], 0, phi, mu, nu);
+              for (int comp = 0; comp < 4; ++comp)
+                f.sigma(k, comp) += m.s[comp];
+              f.u(k, 0) += m.u[0], f.u(k, 1) += m.u[1];
             }
         }
       return f;

@@ -115,7 +115,6 @@ namespace rfm
         const double phi = std::atan2(dz, dr);
         double theta = phi - beta_;
         theta -= 2.0 * pi * std::round(theta / (2.0 * pi)); // into [-pi, pi]
-        const double c = std::cos(phi), s = std::sin(phi);
         std::size_t f = 0;
         for (const WedgeMode &mode : modes_)
           {
@@ -125,26 +124,19 @@ namespace rfm
               v = wedge_.evaluate(mode, rho, theta);
             for (int part = 0; part < (mode.lambda.imag() == 0.0 ? 1 : 2); ++part, ++f)
               {
-                auto take = [part](const std::complex<double> x) { return part == 0 ? x.real() : x.imag(); };
-                const double s_pp = take(v.s_rr), s_tt = take(v.s_tt), s_pt = take(v.s_rt);
-                const double u_p = take(v.u_r), u_t = take(v.u_t);
                 Field &fl = fields[f];
                 // Polar to meridian components (phi the direction of the point from v).
-                const double s_rr = s_pp * c * c + s_tt * s * s - 2.0 * s_pt * c * s;
-                const double s_zz = s_pp * s * s + s_tt * c * c + 2.0 * s_pt * c * s;
-                const double s_rz = (s_pp - s_tt) * c * s + s_pt * (c * c - s * s);
+                const MeridianWedgeField m = meridian_wedge_field(v, 1.0, part, phi, mu, nu);
                 const bool no_value = rho == 0.0 && singular;
-                fl.s[rr] = no_value ? 0.0 : s_rr;
-                fl.s[zz] = no_value ? 0.0 : s_zz;
-                fl.s[tt] = no_value ? 0.0 : nu * (s_rr + s_zz);
-                fl.s[rz] = no_value ? 0.0 : s_rz;
+                for (int comp = 0; comp < 4; ++comp)
+                  fl.s[comp] = no_value ? 0.0 : m.s[comp];
                 // Plane-strain Hooke's law (the displacement of mu = 1 scaled by 1 / mu).
                 const double tr = nu * (fl.s[rr] + fl.s[zz]);
                 fl.e[0] = (fl.s[rr] - tr) / (2.0 * mu);
                 fl.e[1] = (fl.s[zz] - tr) / (2.0 * mu);
                 fl.e[2] = fl.s[rz] / mu;
-                fl.u[0] = (u_p * c - u_t * s) / mu;
-                fl.u[1] = (u_p * s + u_t * c) / mu;
+                fl.u[0] = m.u[0];
+                fl.u[1] = m.u[1];
               }
           }
         // grad chi = chi'(rho) (dr, dz) / rho (chi'(0) = 0).

@@ -46,6 +46,8 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
+#include <complex>
 #include <vector>
 
 namespace rfm
@@ -59,6 +61,32 @@ namespace rfm
   using axisym::wedge_face;
   using axisym::WedgeFieldValues;
   using axisym::WedgeMode;
+
+  /// One real part (part 0: real, 1: imaginary) of a wedge field's values v, scaled by
+  /// `scale`, in meridian components at the point in direction phi from the vertex:
+  /// (sigma_rr, sigma_zz, sigma_tt, sigma_rz) [Pa], sigma_tt = nu (sigma_rr + sigma_zz) (plane
+  /// strain), and (u_r, u_z) [m] for the shear modulus mu (v's displacements are for mu = 1).
+  struct MeridianWedgeField
+  {
+    double s[4], u[2];
+  };
+  inline MeridianWedgeField meridian_wedge_field(const WedgeFieldValues &v, const std::complex<double> scale,
+                                                 const int part, const double phi, const double mu,
+                                                 const double nu)
+  {
+    auto take = [&](const std::complex<double> x) { return part == 0 ? (scale * x).real() : (scale * x).imag(); };
+    const double s_pp = take(v.s_rr), s_qq = take(v.s_tt), s_pq = take(v.s_rt);
+    const double u_p = take(v.u_r), u_q = take(v.u_t);
+    const double c = std::cos(phi), s = std::sin(phi);
+    MeridianWedgeField f;
+    f.s[rr] = s_pp * c * c + s_qq * s * s - 2.0 * s_pq * c * s;
+    f.s[zz] = s_pp * s * s + s_qq * c * c + 2.0 * s_pq * c * s;
+    f.s[rz] = (s_pp - s_qq) * c * s + s_pq * (c * c - s * s);
+    f.s[tt] = nu * (f.s[rr] + f.s[zz]);
+    f.u[0] = (u_p * c - u_q * s) / mu;
+    f.u[1] = (u_p * s + u_q * c) / mu;
+    return f;
+  }
 
   class VertexEnrichment
   {
