@@ -15,6 +15,7 @@
 
 #include <deal.II/base/convergence_table.h>
 
+#include <cstdlib>
 #include <iomanip>
 #include <limits>
 
@@ -57,10 +58,43 @@ namespace fem
            "must be in [1, 64]");
   }
 
+  struct MpiSession::State
+  {
+    std::unique_ptr<Utilities::MPI::MPI_InitFinalize> mpi;
+  };
+
+  MpiSession::MpiSession(int &argc, char **&argv)
+    : state_(std::make_unique<State>())
+  {
+    if (!launched_by_mpi())
+      return;
+    // One thread per rank: the ranks are the parallelism.
+    state_->mpi = std::make_unique<Utilities::MPI::MPI_InitFinalize>(argc, argv, 1);
+    active_ = true;
+    rank_ = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    size_ = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+  }
+
+  MpiSession::~MpiSession() = default;
+
+  bool MpiSession::launched_by_mpi()
+  {
+    // Open MPI's mpirun, MPICH's and Intel's hydra (PMI), PMIx launchers, Slurm's srun.
+    for (const char *name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "SLURM_STEP_NUM_TASKS"})
+      if (std::getenv(name) != nullptr)
+        return true;
+    return false;
+  }
+
   void check_supported(const axisym::Problem &problem, const FemOptions &)
   {
     if (!problem.body)
       throw axisym::InputError("problem: no body (parser bug?)");
+    if (Utilities::MPI::job_supports_mpi() && problem.contact.method == "fixed" &&
+        !problem.body->die_parts().empty())
+      throw axisym::InputError("contact.method = \"fixed\" under MPI: a prescribed zone moves "
+                               "mesh vertices onto its ends, which the distributed mesh does "
+                               "not do; run fem_solve without mpirun");
     if (problem.contact.method == "fixed")
       for (const std::string &part : problem.body->die_parts())
         if (problem.body->conditions.at(part).die.force)
@@ -149,6 +183,8 @@ namespace fem
           }
         result.assembly_seconds = assembly_s_;
         result.solve_seconds = solve_s_;
+        result.linear_solver = linear_solver_used_;
+        result.linear_iterations = linear_iterations_;
         result.total_seconds = seconds_since(t_start);
       };
 
@@ -176,7 +212,8 @@ namespace fem
         assembly_s_ += seconds_since(t0);
         assemble_base();
         result.n_dofs = dof_handler_.n_dofs();
-        result.n_cells = triangulation_.n_active_cells();
+        result.n_cells = triangulation_.n_global_active_cells();
+        result.processes = distributed_ ? Utilities::MPI::n_mpi_processes(comm_) : 1;
         result.base_mesh_size = base_mesh_size_;
         result.n_base_cells = n_base_cells_;
         result.base_mesh_subdivided = base_mesh_subdivided_;
@@ -194,8 +231,7 @@ namespace fem
           result.contact->h_min = h_min_;
         if (mode_ != Mode::unilateral)
           {
-            system_matrix_.copy_from(base_matrix_);
-            system_rhs_ = base_rhs_;
+            reset_system();
             solve_linear();
             finish(evaluate(nullptr));
             result.success = true;
@@ -273,7 +309,8 @@ namespace fem
           FemResult::AdaptiveCycle rec;
           rec.n_dofs = result.n_dofs, rec.n_cells = result.n_cells;
           const double scale = gradient_norm();
-          rec.estimate = scale > 0 ? eta.l2_norm() / scale : 0.0;
+          const double eta_norm = std::sqrt(all_sum(eta.norm_sqr()));
+          rec.estimate = scale > 0 ? eta_norm / scale : 0.0;
           rec.reissner = result.functionals.reissner;
           // The change since the mesh had half the dofs (a cycle refines few cells where a
           // singularity dominates: the change from the previous cycle alone would stop early):
@@ -336,13 +373,19 @@ namespace fem
               result.adaptive_stop = "adaptive_max_cycles reached";
               return;
             }
-          GridRefinement::refine_and_coarsen_fixed_fraction(
-            triangulation_, eta, options_.adaptive_fraction, 0.0,
-            std::numeric_limits<unsigned int>::max(), VectorTools::NormType::L2_norm);
+          if (distributed_)
+            parallel::distributed::GridRefinement::refine_and_coarsen_fixed_fraction(
+              dynamic_cast<parallel::distributed::Triangulation<2> &>(triangulation_), eta,
+              options_.adaptive_fraction, 0.0, VectorTools::NormType::L2_norm);
+          else
+            GridRefinement::refine_and_coarsen_fixed_fraction(
+              triangulation_, eta, options_.adaptive_fraction, 0.0,
+              std::numeric_limits<unsigned int>::max(), VectorTools::NormType::L2_norm);
           // Each refined quadrilateral becomes four: about 3 n_dofs / n_cells more dofs each.
-          unsigned long marked = 0;
+          double marked = 0;
           for (const auto &cell : triangulation_.active_cell_iterators())
-            marked += cell->refine_flag_set() ? 1 : 0;
+            marked += cell->is_locally_owned() && cell->refine_flag_set() ? 1 : 0;
+          marked = all_sum(marked);
           const double next = static_cast<double>(result.n_dofs) *
                               (1.0 + 3.0 * static_cast<double>(marked) / static_cast<double>(result.n_cells));
           if (next > static_cast<double>(options_.adaptive_max_dofs))
@@ -379,21 +422,17 @@ namespace fem
       const unsigned int n = fe_.n_dofs_per_cell();
       Vector<double> local(n);
       std::vector<types::global_dof_index> dofs(n);
+      // The cell around each sample (a mirrored body's image point in z > 0).
+      std::vector<Point<2>> points;
       for (const FieldSample &s : now)
+        points.emplace_back(s.r, std::abs(s.z));
+      const std::vector<PointCell> cells = locate_points(points);
+      for (std::size_t k = 0; k < now.size(); ++k)
         {
-          // The cell around the sample (a mirrored body's image point in z > 0).
-          const Point<2> x(s.r, std::abs(s.z));
-          DoFHandler<2>::active_cell_iterator cell;
-          try
-            {
-              cell = GridTools::find_active_cell_around_point(mapping(), dof_handler_, x).first;
-            }
-          catch (const std::exception &)
-            {
-              continue;
-            }
-          if (cell.state() != IteratorState::valid)
+          const FieldSample &s = now[k];
+          if (!cells[k].here)
             continue;
+          const DoFHandler<2>::active_cell_iterator cell = cells[k].cell;
           std::array<double, 4> weight{};
           for (int m = 0; m < 4; ++m)
             weight[m] = std::abs(s.sigma[m]) > 1e-3 * largest ? (s.sigma[m] > 0 ? 1.0 : -1.0) / largest : 0.0;
@@ -429,7 +468,10 @@ namespace fem
                                        std::map<types::boundary_id, const Function<2> *>(),
                                        u, eta);
       for (const auto &cell : triangulation_.active_cell_iterators())
-        eta[cell->active_cell_index()] *= static_cast<float>(std::sqrt(std::max(0.0, cell->center()[0])));
+        eta[cell->active_cell_index()] =
+          cell->is_locally_owned()
+            ? eta[cell->active_cell_index()] * static_cast<float>(std::sqrt(std::max(0.0, cell->center()[0])))
+            : 0.0f;
       return eta;
     }
 
@@ -441,13 +483,15 @@ namespace fem
       double sum = 0;
       for (const auto &cell : dof_handler_.active_cell_iterators())
         {
+          if (!cell->is_locally_owned())
+            continue;
           fv.reinit(cell);
           fv.get_function_gradients(solution_, grads);
           for (unsigned int q = 0; q < cell_quadrature_.size(); ++q)
             sum += (grads[q][0].norm_square() + grads[q][1].norm_square()) * fv.quadrature_point(q)[0] *
                    fv.JxW(q);
         }
-      return std::sqrt(sum);
+      return std::sqrt(all_sum(sum));
     }
 
     // 5c. Active-set loop, from the whole outer side in contact (paper iteration 0), until the
@@ -487,9 +531,14 @@ namespace fem
           ActiveSetStep step;
           step.pass = pass;
           step.iteration = it;
-          step.n_active = static_cast<int>(std::count(active.begin(), active.end(), 1));
+          // Each rank holds the points of its own faces: counts are summed.
+          step.n_active = static_cast<int>(
+            all_sum(static_cast<double>(std::count(active.begin(), active.end(), 1))));
+          int changed = 0;
           for (std::size_t i = 0; i < next.size(); ++i)
-            step.n_changed += next[i] != active[i];
+            changed += next[i] != active[i];
+          step.n_changed = static_cast<int>(all_sum(changed));
+          const double n_points = all_sum(static_cast<double>(active.size()));
           step.half_width = ev.half_width;
           step.force = ev.force;
           step.force_trace = ev.force_trace;
@@ -500,7 +549,7 @@ namespace fem
           std::ostringstream line;
           line.precision(6);
           line << "pass " << pass << ", active-set step " << it << ": |A| = " << step.n_active
-               << " of " << active.size() << ", changed " << step.n_changed;
+               << " of " << n_points << ", changed " << step.n_changed;
           for (std::size_t d = 0; d < ev.dies.size(); ++d)
             line << "; " << dies_[d].part << ": c = " << ev.dies[d].half_width
                  << " m, delta = " << ev.dies[d].indentation << " m, P = " << ev.dies[d].force
@@ -512,11 +561,15 @@ namespace fem
               result.success = true;
               return;
             }
-          const auto seen = std::find(history.begin(), history.end(), next);
-          if (seen != history.end())
+          // The first earlier set equal to the next one on every rank.
+          std::size_t seen = history.size();
+          for (std::size_t h = 0; h < history.size() && seen == history.size(); ++h)
+            if (!all_or(history[h] != next))
+              seen = h;
+          if (seen != history.size())
             {
               result.message = "active set cycles: step " + std::to_string(it + 1) +
-                               " would repeat step " + std::to_string(seen - history.begin()) +
+                               " would repeat step " + std::to_string(seen) +
                                " (pass " + std::to_string(pass) + ")";
               return;
             }

@@ -98,12 +98,22 @@
 //    refines around an estimate of the zone (indentation: where g0 < delta; force: Hertz's
 //    radius, or the flat face), each edge-fitting pass around the zone of the previous pass;
 //    with n passes in all, pass k runs on level max(0, L - (n-1-k)).
+//  MPI (issue 25): when the process runs under MPI (fem_solve started by mpirun; MpiSession),
+//    the same solver runs on a parallel::distributed::Triangulation (p4est): every rank
+//    refines, assembles, evaluates and estimates its own cells into Trilinos matrices, and
+//    sums, extrema, samples and contact points are combined over the ranks, so that every
+//    rank holds the whole result. Linear solves: MUMPS (Amesos) up to
+//    FemOptions::mpi_direct_max_dofs, CG with ML algebraic multigrid beyond (near-null space:
+//    the constant modes of u_r and u_z). The active set is decided per contact point by the
+//    rank that owns the point's face. A prescribed zone (contact.method = "fixed") moves mesh
+//    vertices onto the zone's ends and is not distributed (InputError under MPI).
 #pragma once
 
 #include "problem/problem.h"
 
 #include <array>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -121,6 +131,10 @@ namespace fem
       cg      ///< CG + SSOR(1.2), relative residual linear_tolerance
     } linear_solver = LinearSolver::direct;
     double linear_tolerance = 1e-12;
+    /// Under MPI with LinearSolver::direct: systems up to this many dofs are factorized by
+    /// MUMPS (through Trilinos Amesos), larger ones solved by CG with ML algebraic multigrid
+    /// to linear_tolerance (LinearSolver::cg: always CG + AMG).
+    long mpi_direct_max_dofs = 200000;
     /// kappa = penalty_factor * E / h_min. The force error is O(1/kappa): for the paper's die
     /// at L = 5, Q2, |P(1e3) - P(1e4)| = 0.2 N of 192.6 kN (fem_convergence penalty study).
     double penalty_factor = 1e3;
@@ -271,6 +285,11 @@ namespace fem
     std::string message;
     int degree = 0, refinements = 0;
     unsigned long n_dofs = 0, n_cells = 0;
+    /// MPI ranks that shared the mesh (1 serial), the linear solver of the last solve
+    /// ("umfpack", "cg-ssor", "mumps", "cg-amg") and its last iteration count (0: direct).
+    unsigned int processes = 1;
+    std::string linear_solver;
+    unsigned int linear_iterations = 0;
     std::string mesh_generator;
     double base_mesh_size = 0;     ///< h0 [m]
     unsigned long n_base_cells = 0; ///< cells of the gmsh base mesh
@@ -316,6 +335,29 @@ namespace fem
   using StressFunction = std::function<std::array<double, 4>(double r, double z)>;
   /// (u_r, u_z) at (r, z).
   using DisplacementFunction = std::function<std::array<double, 2>(double r, double z)>;
+
+  /// MPI for fem_solve: initializes MPI (and deal.II's parallel libraries) for the lifetime
+  /// of the object when the process was started by an MPI launcher (mpirun, mpiexec,
+  /// srun: its environment variables), else does nothing, so that a plain run stays serial.
+  class MpiSession
+  {
+  public:
+    MpiSession(int &argc, char **&argv);
+    ~MpiSession();
+    MpiSession(const MpiSession &) = delete;
+    MpiSession &operator=(const MpiSession &) = delete;
+    /// Whether the environment is that of an MPI launcher.
+    static bool launched_by_mpi();
+    bool active() const { return active_; }
+    unsigned int rank() const { return rank_; }
+    unsigned int size() const { return size_; }
+
+  private:
+    struct State;
+    std::unique_ptr<State> state_;
+    bool active_ = false;
+    unsigned int rank_ = 0, size_ = 1;
+  };
 
   /// Solves the problem. Numerical failures (singular matrix, CG not converging, active-set
   /// cycle or no convergence) return success = false with a message and whatever history

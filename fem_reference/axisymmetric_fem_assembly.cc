@@ -2,6 +2,10 @@
 // (axisymmetric_solver.h).
 #include "fem_reference/axisymmetric_solver.h"
 
+// The constraints' distribution into a Trilinos matrix with a deal.II right-hand side (the
+// distributed assembly) is not among deal.II's precompiled combinations.
+#include <deal.II/lac/affine_constraints.templates.h>
+
 namespace fem::internal
 {
   // 3o. Pressure and traction parts: int t.v r ds with t = -p n (n of the mapped face at
@@ -52,10 +56,15 @@ namespace fem::internal
     std::vector<types::global_dof_index> dofs(n);
     std::vector<Stress> b(n), db(n);
 
-    base_matrix_ = 0;
+    if (distributed_)
+      *mpi_base_matrix_ = 0;
+    else
+      base_matrix_ = 0;
     base_rhs_ = 0;
     for (const auto &cell : dof_handler_.active_cell_iterators())
       {
+        if (!cell->is_locally_owned())
+          continue;
         cell_matrix = 0;
         cell_rhs = 0;
         fe_values.reinit(cell);
@@ -95,10 +104,25 @@ namespace fem::internal
 
         add_outline_tractions(cell, outline_face_values, cell_rhs);
         cell->get_dof_indices(dofs);
-        constraints_.distribute_local_to_global(cell_matrix, cell_rhs, dofs, base_matrix_,
-                                                base_rhs_);
+        if (distributed_)
+          constraints_.distribute_local_to_global(cell_matrix, cell_rhs, dofs, *mpi_base_matrix_,
+                                                  base_rhs_);
+        else
+          constraints_.distribute_local_to_global(cell_matrix, cell_rhs, dofs, base_matrix_,
+                                                  base_rhs_);
       }
+    if (distributed_)
+      mpi_base_matrix_->compress(VectorOperation::add);
     assembly_s_ += seconds_since(t0);
+  }
+
+  void AxisymmetricSolver::reset_system()
+  {
+    if (distributed_)
+      mpi_system_matrix_->copy_from(*mpi_base_matrix_);
+    else
+      system_matrix_.copy_from(base_matrix_);
+    system_rhs_ = base_rhs_;
   }
 
   // 5a. Penalty kappa int_A (u.n - t) v.n r ds added to a copy of the base system, t the
@@ -108,8 +132,7 @@ namespace fem::internal
   void AxisymmetricSolver::add_penalty(const std::vector<char> &active)
   {
     const auto t0 = Clock::now();
-    system_matrix_.copy_from(base_matrix_);
-    system_rhs_ = base_rhs_;
+    reset_system();
     std::vector<int> force_index(dies_.size(), -1);
     int n_force = 0;
     for (std::size_t d = 0; d < dies_.size(); ++d)
@@ -162,10 +185,15 @@ namespace fem::internal
               }
           }
         face.cell->get_dof_indices(dofs);
-        constraints_.distribute_local_to_global(m, rhs, dofs, system_matrix_, system_rhs_);
+        if (distributed_)
+          constraints_.distribute_local_to_global(m, rhs, dofs, *mpi_system_matrix_, system_rhs_);
+        else
+          constraints_.distribute_local_to_global(m, rhs, dofs, system_matrix_, system_rhs_);
         if (force_index[face.die] >= 0)
           constraints_.distribute_local_to_global(unit, dofs, unit_rhs_[force_index[face.die]]);
       }
+    if (distributed_)
+      mpi_system_matrix_->compress(VectorOperation::add);
     assembly_s_ += seconds_since(t0);
   }
 
@@ -173,6 +201,12 @@ namespace fem::internal
   void AxisymmetricSolver::solve_system(const Vector<double> &rhs, Vector<double> &x,
                                         const bool factorize)
   {
+    linear_iterations_ = 0;
+    if (distributed_)
+      {
+        solve_distributed(rhs, x, factorize);
+        return;
+      }
     if (options_.linear_solver == FemOptions::LinearSolver::direct)
       {
         if (factorize || !umfpack_)
@@ -181,6 +215,7 @@ namespace fem::internal
             umfpack_->initialize(system_matrix_);
           }
         umfpack_->vmult(x, rhs);
+        linear_solver_used_ = "umfpack";
         return;
       }
     SolverControl control(20 * dof_handler_.n_dofs() + 100, options_.linear_tolerance * rhs.l2_norm());
@@ -188,16 +223,78 @@ namespace fem::internal
     PreconditionSSOR<SparseMatrix<double>> ssor;
     ssor.initialize(system_matrix_, 1.2);
     cg.solve(system_matrix_, x, rhs, ssor);
+    linear_solver_used_ = "cg-ssor";
+    linear_iterations_ = control.last_step();
+  }
+
+  void AxisymmetricSolver::solve_distributed(const Vector<double> &rhs, Vector<double> &x,
+                                             const bool factorize)
+  {
+    // The ranks' contributions (at their relevant dofs) summed into the owners' entries.
+    TrilinosWrappers::MPI::Vector b;
+    b.reinit(owned_dofs_, relevant_dofs_, comm_, true);
+    for (const types::global_dof_index i : relevant_dofs_)
+      if (rhs(i) != 0.0)
+        b(i) += rhs(i);
+    b.compress(VectorOperation::add);
+    TrilinosWrappers::MPI::Vector u(owned_dofs_, comm_);
+    const bool direct = options_.linear_solver == FemOptions::LinearSolver::direct &&
+                        static_cast<long>(dof_handler_.n_dofs()) <= options_.mpi_direct_max_dofs;
+    if (direct)
+      {
+        if (factorize || !mpi_direct_)
+          {
+            mpi_amg_.reset();
+            mpi_direct_ = std::make_unique<TrilinosWrappers::SolverDirect>(
+              mpi_direct_control_, TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Mumps"));
+            mpi_direct_->initialize(*mpi_system_matrix_);
+          }
+        mpi_direct_->solve(u, b);
+        linear_solver_used_ = "mumps";
+      }
+    else
+      {
+        if (factorize || !mpi_amg_)
+          {
+            mpi_direct_.reset();
+            // Near-null space: a constant u_r and a constant u_z (the axial translation is
+            // the true null mode; u_r = const carries the hoop strain u_r / r, but is smooth,
+            // which is what the aggregates need).
+            TrilinosWrappers::PreconditionAMG::AdditionalData data;
+            data.elliptic = true;
+            data.higher_order_elements = options_.degree > 1;
+            data.smoother_sweeps = 2;
+            data.aggregation_threshold = 0.02;
+            DoFTools::extract_constant_modes(dof_handler_, ComponentMask(), data.constant_modes);
+            mpi_amg_ = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+            mpi_amg_->initialize(*mpi_system_matrix_, data);
+          }
+        SolverControl control(20 * dof_handler_.n_dofs() + 100,
+                              options_.linear_tolerance * b.l2_norm());
+        SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+        cg.solve(*mpi_system_matrix_, u, b, *mpi_amg_);
+        linear_solver_used_ = "cg-amg";
+        linear_iterations_ = control.last_step();
+      }
+    constraints_.distribute(u);
+    TrilinosWrappers::MPI::Vector ghosted(owned_dofs_, relevant_dofs_, comm_);
+    ghosted = u;
+    x = 0;
+    for (const types::global_dof_index i : relevant_dofs_)
+      x(i) = ghosted(i);
   }
 
   void AxisymmetricSolver::solve_linear()
   {
     const auto t0 = Clock::now();
     solve_system(system_rhs_, solution_, true);
-    constraints_.distribute(solution_);
+    if (!distributed_) // solve_distributed distributes on the owned entries
+      constraints_.distribute(solution_);
+    bool finite = true;
     for (const double x : solution_)
-      if (!std::isfinite(x))
-        throw std::runtime_error("linear solve produced non-finite values (singular matrix?)");
+      finite = finite && std::isfinite(x);
+    if (all_or(!finite))
+      throw std::runtime_error("linear solve produced non-finite values (singular matrix?)");
     solve_s_ += seconds_since(t0);
   }
 
@@ -206,7 +303,8 @@ namespace fem::internal
     const auto t0 = Clock::now();
     Vector<double> x(dof_handler_.n_dofs()), zero(dof_handler_.n_dofs());
     solve_system(rhs, x, false); // the factorization of solve_linear
-    constraints_.distribute(x);
+    if (!distributed_)
+      constraints_.distribute(x);
     constraints_.distribute(zero); // the inhomogeneities alone
     x -= zero;
     solve_s_ += seconds_since(t0);
@@ -241,6 +339,9 @@ namespace fem::internal
             out[face.die][2] += w;
           }
       }
+    for (auto &die : out)
+      for (double &v : die)
+        v = all_sum(v);
     return out;
   }
 

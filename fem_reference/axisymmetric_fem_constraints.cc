@@ -8,20 +8,46 @@ namespace fem::internal
   {
     dof_handler_.distribute_dofs(fe_);
     constraints_.clear();
-    DoFTools::make_hanging_node_constraints(dof_handler_, constraints_);
     hanging_node_constraints_.clear();
+    if (distributed_)
+      {
+        owned_dofs_ = dof_handler_.locally_owned_dofs();
+        DoFTools::extract_locally_relevant_dofs(dof_handler_, relevant_dofs_);
+        constraints_.reinit(relevant_dofs_);
+        hanging_node_constraints_.reinit(relevant_dofs_);
+      }
+    DoFTools::make_hanging_node_constraints(dof_handler_, constraints_);
     DoFTools::make_hanging_node_constraints(dof_handler_, hanging_node_constraints_);
     hanging_node_constraints_.close();
+    // Distributed: each rank constrains the dofs of its cells and ghost cells from the faces
+    // it sees, which are all the faces at the dofs of its own cells: the ranks agree on every
+    // dof that two of them share (AffineConstraints::make_consistent_in_parallel is not
+    // needed, and is quadratic in the constraints).
     add_outline_constraints();
     constraints_.close();
 
     base_matrix_.clear(); // they refer to the sparsity pattern rebuilt below
     system_matrix_.clear();
-    DynamicSparsityPattern dsp(dof_handler_.n_dofs());
-    DoFTools::make_sparsity_pattern(dof_handler_, dsp, constraints_, false);
-    sparsity_.copy_from(dsp);
-    base_matrix_.reinit(sparsity_);
-    system_matrix_.reinit(sparsity_);
+    mpi_direct_.reset();
+    mpi_amg_.reset();
+    if (distributed_)
+      {
+        DynamicSparsityPattern dsp(relevant_dofs_);
+        DoFTools::make_sparsity_pattern(dof_handler_, dsp, constraints_, false);
+        SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs_, comm_, relevant_dofs_);
+        mpi_base_matrix_ = std::make_unique<TrilinosWrappers::SparseMatrix>();
+        mpi_system_matrix_ = std::make_unique<TrilinosWrappers::SparseMatrix>();
+        mpi_base_matrix_->reinit(owned_dofs_, owned_dofs_, dsp, comm_);
+        mpi_system_matrix_->reinit(owned_dofs_, owned_dofs_, dsp, comm_);
+      }
+    else
+      {
+        DynamicSparsityPattern dsp(dof_handler_.n_dofs());
+        DoFTools::make_sparsity_pattern(dof_handler_, dsp, constraints_, false);
+        sparsity_.copy_from(dsp);
+        base_matrix_.reinit(sparsity_);
+        system_matrix_.reinit(sparsity_);
+      }
     base_rhs_.reinit(dof_handler_.n_dofs());
     system_rhs_.reinit(dof_handler_.n_dofs());
     solution_.reinit(dof_handler_.n_dofs());
@@ -32,7 +58,7 @@ namespace fem::internal
     for (const auto &cell : dof_handler_.active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
         {
-          if (!cell->face(f)->at_boundary())
+          if (!cell->is_locally_owned() || !cell->face(f)->at_boundary())
             continue;
           const types::boundary_id id = cell->face(f)->boundary_id();
           unsigned int die = 0;
@@ -43,7 +69,8 @@ namespace fem::internal
           contact_faces_.push_back({cell, f, die});
           h_min_ = std::min(h_min_, cell->face(f)->measure());
         }
-    if (!contact_faces_.empty())
+    h_min_ = all_min(h_min_);
+    if (std::isfinite(h_min_))
       kappa_ = options_.penalty_factor * problem_.material.youngs_modulus / h_min_;
   }
 
@@ -76,10 +103,12 @@ namespace fem::internal
     FEFaceValues<2> support(mapping(), fe_,
                             Quadrature<1>(fe_.base_element(0).get_unit_face_support_points()),
                             update_quadrature_points);
+    // Distributed: the faces of this rank's cells and of its ghost cells (all faces at the
+    // dofs of its own cells); artificial cells have no dofs.
     for (const auto &cell : dof_handler_.active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
         {
-          if (!cell->face(f)->at_boundary())
+          if (cell->is_artificial() || !cell->face(f)->at_boundary())
             continue;
           const int edge = edge_of(cell->face(f));
           const axisym::PartCondition &c = body.condition_of_edge(edge);

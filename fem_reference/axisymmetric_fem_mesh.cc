@@ -244,9 +244,9 @@ namespace fem::internal
       {
         bool any = false;
         for (const auto &cell : triangulation_.active_cell_iterators())
-          if (wants(cell))
+          if (cell->is_locally_owned() && wants(cell))
             cell->set_refine_flag(), any = true;
-        if (!any)
+        if (!all_or(any)) // distributed: every rank refines (collectively) or none
           return;
         triangulation_.execute_coarsening_and_refinement();
       }

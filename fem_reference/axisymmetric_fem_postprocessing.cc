@@ -22,6 +22,8 @@ namespace fem::internal
     double body_force_work = 0, thermal_strain_work = 0; // int f.u_h r, int s_h.e_th r
     for (const auto &cell : dof_handler_.active_cell_iterators())
       {
+        if (!cell->is_locally_owned())
+          continue;
         fe_values.reinit(cell);
         fe_values.get_function_values(solution_, u);
         fe_values.get_function_gradients(solution_, grad);
@@ -65,6 +67,10 @@ namespace fem::internal
               }
           }
       }
+    energy = all_sum(energy), error_sq = all_sum(error_sq), norm_sq = all_sum(norm_sq);
+    u_error_sq = all_sum(u_error_sq), u_norm_sq = all_sum(u_norm_sq);
+    body_force_work = all_sum(body_force_work);
+    thermal_strain_work = all_sum(thermal_strain_work);
     // A mirrored section stands for the whole body (twice); an outline for itself.
     const double mirror = mirror_;
     if (exact_u_)
@@ -84,6 +90,8 @@ namespace fem::internal
         double error_max = 0, norm_max = 0;
         for (const auto &cell : dof_handler_.active_cell_iterators())
           {
+            if (!cell->is_locally_owned())
+              continue;
             fe_nodes.reinit(cell);
             fe_nodes.get_function_values(solution_, un);
             fe_nodes.get_function_gradients(solution_, gradn);
@@ -100,13 +108,15 @@ namespace fem::internal
                   }
               }
           }
-        ev.error_max = error_max, ev.norm_max = norm_max;
+        ev.error_max = all_max(error_max), ev.norm_max = all_max(norm_max);
       }
 
     double work = 0, b_c = 0, b_r = 0, penalty_energy = 0;
     outline_boundary_terms(work, b_c, b_r);
     if (!dies_.empty())
       evaluate_dies(active, ev, b_c, b_r, penalty_energy);
+    work = all_sum(work), b_c = all_sum(b_c), b_r = all_sum(b_r);
+    penalty_energy = all_sum(penalty_energy);
     // DESIGN.md 3 with the thermal strain as an initial strain (axisymmetric_fem.h):
     // W = int f.u_h r + int_St t.u_h r ds; the Castigliano functional carries
     // -int s_h.e_th r; in Reissner's s.e(u) - 1/2 s.C s - s.e_th = U density for s = s_h.
@@ -183,6 +193,27 @@ namespace fem::internal
             gaps[face.die].emplace_back(s, gap);
           }
       }
+    if (distributed_)
+      for (std::size_t i = 0; i < dies_.size(); ++i)
+        {
+          // Each rank has the points of its own faces: the forces summed, the points of all.
+          DieEvaluation &de = ev.dies[i];
+          de.force = all_sum(de.force);
+          de.force_trace = all_sum(de.force_trace);
+          de.max_penetration = all_max(de.max_penetration);
+          std::vector<double> flat;
+          for (const PressurePoint &p : de.pressure)
+            flat.insert(flat.end(), {p.s, p.r, p.z, p.p, p.p_trace, p.gap});
+          flat = all_concat(flat);
+          de.pressure.clear();
+          gaps[i].clear();
+          for (std::size_t k = 0; k + 5 < flat.size(); k += 6)
+            {
+              de.pressure.push_back(
+                {flat[k], flat[k + 1], flat[k + 2], flat[k + 3], flat[k + 4], flat[k + 5]});
+              gaps[i].emplace_back(flat[k], flat[k + 5]);
+            }
+        }
     for (std::size_t i = 0; i < dies_.size(); ++i)
       {
         const OutlineDie &d = dies_[i];
@@ -264,7 +295,7 @@ namespace fem::internal
     for (const auto &cell : dof_handler_.active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
         {
-          if (!cell->face(f)->at_boundary())
+          if (!cell->is_locally_owned() || !cell->face(f)->at_boundary())
             continue;
           const axisym::PartCondition &c =
             body_.condition_of_edge(edge_of(cell->face(f)));
@@ -334,6 +365,8 @@ namespace fem::internal
     };
     for (const auto &cell : dof_handler_.active_cell_iterators())
       {
+        if (!cell->is_locally_owned())
+          continue;
         cell->get_dof_indices(dofs);
         if (std::none_of(dofs.begin(), dofs.end(), reaches))
           continue;
@@ -390,87 +423,177 @@ namespace fem::internal
         PartReaction &reaction = out[it->second];
         (held.component == 0 ? reaction.force_r : reaction.force_z) += 2 * pi * residual(dof);
       }
+    // Distributed: each rank's residual holds its cells' shares.
+    for (PartReaction &reaction : out)
+      reaction.force_r = all_sum(reaction.force_r), reaction.force_z = all_sum(reaction.force_z);
     return out;
   }
 
-  // Fields at the sample points; a mirrored body's z < 0 by mirroring (u_z and sigma_rz are
-  // odd in z). A sample on an arc may lie just outside the Q_p image of the arc
-  // (deal.II 9.4 then returns an invalid cell rather than throwing), so a miss is retried
+  // The cell around each point. A point on an arc may lie just outside the Q_p image of the
+  // arc (deal.II 9.4 then returns an invalid cell rather than throwing), so a miss is retried
   // with looser tolerances (unit-cell coordinates) and projected onto the unit cell; with
-  // straight-sided cells the nearest boundary cell is taken.
-  std::vector<FieldSample> AxisymmetricSolver::samples() const
+  // straight-sided cells the nearest boundary cell is taken. Distributed: a rank keeps the
+  // cell only if it owns it, else it looks among its own cells near the point; of the ranks
+  // that found one, the nearest in unit coordinates keeps the point (the lowest rank on a
+  // tie: a point on a face between two ranks' cells).
+  std::vector<AxisymmetricSolver::PointCell>
+  AxisymmetricSolver::locate_points(const std::vector<Point<2>> &points) const
   {
-    using Found = std::pair<DoFHandler<2>::active_cell_iterator, Point<2>>;
     // The cache holds the vertices and their cells once (without it every search collects
     // the used vertices anew, the whole cost of thousands of samples); the last cell found
     // is the hint for the next point.
     const GridTools::Cache<2> cache(triangulation_, mapping());
     Triangulation<2>::active_cell_iterator hint;
-    const auto locate = [&](const Point<2> &x) -> Found {
+    // (cell, unit point, distance to the unit cell); distance infinity: none found here.
+    const auto locate = [&](const Point<2> &x) -> std::pair<PointCell, double> {
       for (const double tolerance : {1e-10, 1e-6, 1e-3})
         {
-          Found found;
           try
             {
               const auto [cell, unit] =
                 GridTools::find_active_cell_around_point(cache, x, hint, {}, tolerance);
-              if (cell.state() == IteratorState::valid)
+              if (cell.state() == IteratorState::valid && cell->is_locally_owned())
                 {
                   hint = cell;
-                  found = {DoFHandler<2>::active_cell_iterator(&triangulation_, cell->level(),
-                                                               cell->index(), &dof_handler_),
-                           unit};
+                  PointCell found{DoFHandler<2>::active_cell_iterator(
+                                    &triangulation_, cell->level(), cell->index(), &dof_handler_),
+                                  GeometryInfo<2>::project_to_unit_cell(unit), true};
+                  return {found, GeometryInfo<2>::distance_to_unit_cell(unit)};
+                }
+              if (cell.state() == IteratorState::valid)
+                {
+                  // Another rank's cell: the point is this rank's only on a face or vertex
+                  // shared with a ghost cell, in one of the own cells at its vertices.
+                  PointCell best;
+                  double best_distance = std::numeric_limits<double>::infinity();
+                  if (cell->is_ghost())
+                    for (const unsigned int v : cell->vertex_indices())
+                      for (const auto &next : cache.get_vertex_to_cell_map()[cell->vertex_index(v)])
+                        {
+                          if (!next->is_locally_owned())
+                            continue;
+                          try
+                            {
+                              const Point<2> u = mapping().transform_real_to_unit_cell(next, x);
+                              const double d = GeometryInfo<2>::distance_to_unit_cell(u);
+                              if (d < best_distance)
+                                best_distance = d,
+                                best = {DoFHandler<2>::active_cell_iterator(
+                                          &triangulation_, next->level(), next->index(), &dof_handler_),
+                                        GeometryInfo<2>::project_to_unit_cell(u), true};
+                            }
+                          catch (const std::exception &)
+                            {}
+                        }
+                  return {best, best_distance};
                 }
             }
           catch (const std::exception &)
             {
               continue;
             }
-          if (found.first.state() == IteratorState::valid)
-            {
-              found.second = GeometryInfo<2>::project_to_unit_cell(found.second);
-              return found;
-            }
         }
-      // Still outside (straight-sided studies: a sample on an arc lies beyond the chord):
-      // the boundary cell nearest in unit coordinates, the point projected onto it.
-      Found best;
+      // Still outside (straight-sided studies: a point on an arc lies beyond the chord): the
+      // own boundary cell nearest in unit coordinates.
+      PointCell best;
       double best_distance = std::numeric_limits<double>::infinity();
       for (const auto &cell : dof_handler_.active_cell_iterators())
         {
-          if (!cell->at_boundary() || cell->center().distance(x) > 2 * cell->diameter())
+          if (!cell->is_locally_owned() || !cell->at_boundary() ||
+              cell->center().distance(x) > 2 * cell->diameter())
             continue;
           try
             {
               const Point<2> unit = mapping().transform_real_to_unit_cell(cell, x);
               const double d = GeometryInfo<2>::distance_to_unit_cell(unit);
               if (d < best_distance)
-                best_distance = d, best = {cell, GeometryInfo<2>::project_to_unit_cell(unit)};
+                best_distance = d, best = {cell, GeometryInfo<2>::project_to_unit_cell(unit), true};
             }
           catch (const std::exception &)
             {}
         }
-      if (best.first.state() != IteratorState::valid)
-        throw std::runtime_error("sample (" + std::to_string(x[0]) + ", " +
-                                 std::to_string(x[1]) + ") is not in any cell of the mesh");
-      return best;
+      return {best, best_distance};
     };
-    std::vector<FieldSample> out;
-    for (const auto &[r, z] : problem_.samples)
+    std::vector<PointCell> out;
+    std::vector<double> distance;
+    for (const Point<2> &x : points)
       {
-        const bool mirrored = body_.mirrored && z < 0;
-        const Point<2> x(r, mirrored ? -z : z);
-        const Found found = locate(x);
-        const Quadrature<2> point(std::vector<Point<2>>{found.second});
+        const auto [cell, d] = locate(x);
+        out.push_back(cell);
+        distance.push_back(d);
+      }
+    if (distributed_)
+      {
+        const unsigned int rank = Utilities::MPI::this_mpi_process(comm_);
+        const std::vector<std::vector<double>> all = Utilities::MPI::all_gather(comm_, distance);
+        for (std::size_t k = 0; k < points.size(); ++k)
+          {
+            unsigned int winner = 0;
+            for (unsigned int q = 1; q < all.size(); ++q)
+              if (all[q][k] < all[winner][k])
+                winner = q;
+            distance[k] = all[winner][k];
+            out[k].here = winner == rank && std::isfinite(all[winner][k]);
+          }
+      }
+    for (std::size_t k = 0; k < points.size(); ++k)
+      if (!std::isfinite(distance[k]))
+        throw std::runtime_error("sample (" + std::to_string(points[k][0]) + ", " +
+                                 std::to_string(points[k][1]) + ") is not in any cell of the mesh");
+    return out;
+  }
+
+  std::vector<double> AxisymmetricSolver::all_concat(const std::vector<double> &x) const
+  {
+    if (!distributed_)
+      return x;
+    std::vector<double> out;
+    for (const std::vector<double> &part : Utilities::MPI::all_gather(comm_, x))
+      out.insert(out.end(), part.begin(), part.end());
+    return out;
+  }
+
+  // Fields at the sample points; a mirrored body's z < 0 by mirroring (u_z and sigma_rz are
+  // odd in z). Distributed: the rank that holds a point evaluates it, and the values are
+  // summed over the ranks (zeros elsewhere).
+  std::vector<FieldSample> AxisymmetricSolver::samples() const
+  {
+    std::vector<Point<2>> points;
+    for (const auto &[r, z] : problem_.samples)
+      points.emplace_back(r, body_.mirrored && z < 0 ? -z : z);
+    const std::vector<PointCell> cells = locate_points(points);
+    std::vector<double> values(6 * points.size(), 0.0);
+    for (std::size_t k = 0; k < points.size(); ++k)
+      {
+        if (!cells[k].here)
+          continue;
+        const Point<2> &x = points[k];
+        const Quadrature<2> point(std::vector<Point<2>>{cells[k].unit});
         FEValues<2> fv(mapping(), fe_, point, update_values | update_gradients);
-        fv.reinit(found.first);
+        fv.reinit(cells[k].cell);
         std::vector<Vector<double>> u(1, Vector<double>(2));
         std::vector<std::vector<Tensor<1, 2>>> grad(1, std::vector<Tensor<1, 2>>(2));
         fv.get_function_values(solution_, u);
         fv.get_function_gradients(solution_, grad);
-        const Stress s = stress_at(x, strain(r, u[0][0], grad[0][0], grad[0][1]));
-        const double sign = mirrored ? -1.0 : 1.0;
-        out.push_back({r, z, u[0][0], sign * u[0][1], {{s[0], s[1], s[2], sign * s[3]}}});
+        const Stress s = stress_at(x, strain(x[0], u[0][0], grad[0][0], grad[0][1]));
+        values[6 * k] = u[0][0], values[6 * k + 1] = u[0][1];
+        for (int m = 0; m < 4; ++m)
+          values[6 * k + 2 + m] = s[m];
+      }
+    if (distributed_)
+      {
+        std::vector<double> total(values.size());
+        Utilities::MPI::sum(ArrayView<const double>(values.data(), values.size()), comm_,
+                            ArrayView<double>(total.data(), total.size()));
+        values = std::move(total);
+      }
+    std::vector<FieldSample> out;
+    for (std::size_t k = 0; k < points.size(); ++k)
+      {
+        const auto [r, z] = problem_.samples[k];
+        const double sign = body_.mirrored && z < 0 ? -1.0 : 1.0;
+        const double *v = &values[6 * k];
+        out.push_back({r, z, v[0], sign * v[1], {{v[2], v[3], v[4], sign * v[5]}}});
       }
     return out;
   }
@@ -483,12 +606,36 @@ namespace fem::internal
     data_out.add_data_vector(solution_, post);
     // Cells next to an arc are curved inside too (transfinite interpolation).
     data_out.build_patches(mapping(), options_.degree, DataOut<2>::curved_inner_cells);
-    std::filesystem::create_directories(options_.vtu_directory);
-    const std::filesystem::path path =
-      std::filesystem::path(options_.vtu_directory) / "fem_solution.vtu";
-    std::ofstream out(path);
-    if (!out)
-      throw std::runtime_error("cannot write " + path.string());
+    const std::filesystem::path directory(options_.vtu_directory);
+    auto open = [](const std::filesystem::path &path) {
+      std::ofstream out(path);
+      if (!out)
+        throw std::runtime_error("cannot write " + path.string());
+      return out;
+    };
+    if (!distributed_)
+      {
+        std::filesystem::create_directories(directory);
+        std::ofstream out = open(directory / "fem_solution.vtu");
+        data_out.write_vtu(out);
+        return;
+      }
+    // One piece per rank (its own cells) and the record that lists them.
+    const unsigned int rank = Utilities::MPI::this_mpi_process(comm_);
+    const unsigned int n = Utilities::MPI::n_mpi_processes(comm_);
+    auto piece = [](unsigned int k) { return "fem_solution." + std::to_string(k) + ".vtu"; };
+    if (rank == 0)
+      std::filesystem::create_directories(directory);
+    MPI_Barrier(comm_);
+    std::ofstream out = open(directory / piece(rank));
     data_out.write_vtu(out);
+    if (rank == 0)
+      {
+        std::vector<std::string> pieces;
+        for (unsigned int k = 0; k < n; ++k)
+          pieces.push_back(piece(k));
+        std::ofstream record = open(directory / "fem_solution.pvtu");
+        data_out.write_pvtu_record(record, pieces);
+      }
   }
 } // namespace fem::internal

@@ -19,7 +19,11 @@
 
 #include <deal.II/base/convergence_table.h>
 #include <deal.II/base/function.h>
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
@@ -42,6 +46,11 @@
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
@@ -281,6 +290,14 @@ namespace fem::internal
       , exact_(exact)
       , exact_u_(exact_u)
       , mirror_(problem.body->mirrored ? 2.0 : 1.0)
+      , distributed_(Utilities::MPI::job_supports_mpi())
+      , comm_(MPI_COMM_WORLD)
+      , root_(!distributed_ || Utilities::MPI::this_mpi_process(comm_) == 0)
+      , triangulation_holder_(
+          distributed_ ? std::unique_ptr<Triangulation<2>>(
+                           std::make_unique<parallel::distributed::Triangulation<2>>(comm_))
+                       : std::make_unique<Triangulation<2>>())
+      , triangulation_(*triangulation_holder_)
       , fe_(FE_Q<2>(options.degree), 2)
       , dof_handler_(triangulation_)
       , d_(problem.material)
@@ -431,6 +448,41 @@ namespace fem::internal
     Vector<double> support_residual() const;
     std::vector<PartReaction> reactions() const;
     void write_vtu() const;
+
+    /// MPI (axisymmetric_fem.h, "MPI"): sums, extrema and concatenations over the ranks; the
+    /// value itself in a serial run.
+    double all_sum(double x) const
+    {
+      return distributed_ ? Utilities::MPI::sum(x, comm_) : x;
+    }
+    double all_max(double x) const
+    {
+      return distributed_ ? Utilities::MPI::max(x, comm_) : x;
+    }
+    double all_min(double x) const
+    {
+      return distributed_ ? Utilities::MPI::min(x, comm_) : x;
+    }
+    bool all_or(bool x) const
+    {
+      return distributed_ ? Utilities::MPI::logical_or(x, comm_) : x;
+    }
+    std::vector<double> all_concat(const std::vector<double> &x) const;
+    /// The cell of the mesh around each point and the point in its unit cell: in a
+    /// distributed run a rank keeps the points it owns (`here`; one rank for each point).
+    struct PointCell
+    {
+      DoFHandler<2>::active_cell_iterator cell;
+      Point<2> unit;
+      bool here = false;
+    };
+    std::vector<PointCell> locate_points(const std::vector<Point<2>> &points) const;
+    /// The system matrix and right-hand side set to the base system.
+    void reset_system();
+    /// solve_system in a distributed run: MUMPS (Amesos) up to FemOptions::mpi_direct_max_dofs
+    /// with LinearSolver::direct, else CG + ML algebraic multigrid; `x` receives the solution
+    /// with the constraints distributed at the locally relevant dofs.
+    void solve_distributed(const Vector<double> &rhs, Vector<double> &x, bool factorize);
     /// Total stress D (e - e_th) at x for the strain e of the solution there.
     Stress stress_at(const Point<2> &x, const Stress &e) const
     {
@@ -438,7 +490,7 @@ namespace fem::internal
     }
     void progress(const std::string &line) const
     {
-      if (options_.progress)
+      if (options_.progress && root_)
         std::cerr << "fem: " << line << '\n';
     }
 
@@ -453,7 +505,15 @@ namespace fem::internal
     Mode mode_ = Mode::none;
     int level_ = 0; ///< mesh level of the current pass
 
-    Triangulation<2> triangulation_;
+    /// Under MPI (fem_solve started by mpirun): a parallel::distributed::Triangulation, each
+    /// rank assembling and evaluating its own cells; every Vector<double> below stays
+    /// n_dofs long and holds this rank's share: its cells' contributions (right-hand sides)
+    /// or the values at its locally relevant dofs (solutions).
+    bool distributed_ = false;
+    MPI_Comm comm_;
+    bool root_ = true; ///< rank 0, or serial: prints and writes
+    std::unique_ptr<Triangulation<2>> triangulation_holder_;
+    Triangulation<2> &triangulation_;
     FESystem<2> fe_;
     DoFHandler<2> dof_handler_;
     // MappingQ(p) cached after the refinement (MappingQ1 on a polygon and for the
@@ -492,6 +552,17 @@ namespace fem::internal
     std::map<types::global_dof_index, ReactionDof> reaction_dofs_;
     double h_min_ = 0, kappa_ = 0;
     std::unique_ptr<SparseDirectUMFPACK> umfpack_; ///< the last direct factorization
+    // Distributed: the dofs this rank owns and those its cells and ghost cells touch, the
+    // Trilinos matrices, and the last factorization or multigrid hierarchy.
+    IndexSet owned_dofs_, relevant_dofs_;
+    // Held by pointer: a Trilinos object may not even be default-constructed before MPI_Init.
+    std::unique_ptr<TrilinosWrappers::SparseMatrix> mpi_base_matrix_, mpi_system_matrix_;
+    std::unique_ptr<TrilinosWrappers::SolverDirect> mpi_direct_;
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG> mpi_amg_;
+    SolverControl mpi_direct_control_;
+    /// The linear solver of the last solve and its iterations (CG; 0 for a direct solve).
+    std::string linear_solver_used_;
+    unsigned int linear_iterations_ = 0;
     double assembly_s_ = 0, solve_s_ = 0;
   };
 } // namespace fem::internal

@@ -26,8 +26,10 @@ namespace fem
     nlohmann::json j;
     j["solver"] = "fem";
     j["problem"] = problem.source;
-    const char *linear_solver =
-      options.linear_solver == FemOptions::LinearSolver::direct ? "umfpack" : "cg-ssor";
+    // The solver of the last solve: umfpack, cg-ssor (serial), mumps or cg-amg (MPI).
+    const std::string linear_solver =
+      !r.linear_solver.empty() ? r.linear_solver
+      : options.linear_solver == FemOptions::LinearSolver::direct ? "umfpack" : "cg-ssor";
     j["discretization"] = {
       {"degree", r.degree},
       {"refinements", r.refinements},
@@ -44,6 +46,8 @@ namespace fem
       {"base_mesh_flat_corners", r.base_mesh_flat_corners},
       {"grading", nullptr},
       {"linear_solver", linear_solver},
+      {"linear_iterations", r.linear_iterations},
+      {"processes", r.processes},
       {"section", problem.body && problem.body->mirrored
                     ? "upper half z in [0, length/2] as an outline, mirrored in z = 0 (the "
                       "functionals, forces and norms are the whole body's)"

@@ -19,6 +19,11 @@
 //
 // Exit status: 0 success, 2 bad input (nothing written), 3 numerical failure (the result
 // with the history so far is still written).
+//
+// Distributed (issue 25): `mpirun -np N build/bin/fem_solve PROBLEM.json ...` runs the same
+// solver on a p4est mesh shared by N processes (fem_reference/axisymmetric_fem.h, "MPI");
+// the result is the same file, with discretization.processes = N, and --vtu writes
+// DIR/fem_solution.pvtu with one piece per process.
 #include "fem_reference/axisymmetric_fem.h"
 #include "fem_reference/fem_result_json.h"
 #include "problem/problem.h"
@@ -32,6 +37,10 @@
 
 int main(int argc, char **argv)
 {
+  // Under mpirun every rank runs this program on its share of the mesh; rank 0 prints and
+  // writes (axisymmetric_fem.h, "MPI"). Started without a launcher, nothing changes.
+  const fem::MpiSession mpi(argc, argv);
+  const bool root = mpi.rank() == 0;
   try
     {
       // 1. Command line.
@@ -60,8 +69,11 @@ int main(int argc, char **argv)
       app.add_option("--output", output_path, "result file (JSON); default: stdout");
       app.add_option("--vtu", vtu_directory,
                      "write DIR/fem_solution.vtu (u_r, u_z, stresses, the vector displacement); "
-                     "DIR is created when missing");
-      app.add_option("--linear-solver", solver, "direct (UMFPACK) or cg (CG + SSOR)")
+                     "DIR is created when missing; under mpirun DIR/fem_solution.pvtu and one "
+                     "piece per process");
+      app.add_option("--linear-solver", solver,
+                     "direct (UMFPACK; under mpirun MUMPS up to 2e5 dofs, CG + AMG beyond) or "
+                     "cg (CG + SSOR; under mpirun CG + AMG)")
         ->check(CLI::IsMember({"direct", "cg"}));
       app.add_option("--penalty-factor", penalty_factor,
                      "unilateral contact: kappa = factor * E / h_min (default 1e3)");
@@ -77,7 +89,7 @@ int main(int argc, char **argv)
         }
       catch (const CLI::ParseError &e)
         {
-          const int status = app.exit(e);
+          const int status = root ? app.exit(e) : e.get_exit_code();
           return status == 0 ? 0 : 2;
         }
 
@@ -120,6 +132,16 @@ int main(int argc, char **argv)
                                      ": must be a directory or creatable as one" +
                                      (ec ? " (" + ec.message() + ")" : std::string()));
         }
+      if (!root)
+        {
+          // The other ranks solve alongside rank 0 and stay silent.
+          const fem::FemResult r = fem::solve(problem, options);
+          return r.success ? 0 : 3;
+        }
+      if (mpi.active())
+        fmt::print(stderr, "fem_solve: MPI, {} process{} sharing the mesh (p4est), Trilinos "
+                           "matrices; MUMPS up to {} dofs, CG + ML AMG beyond\n",
+                   mpi.size(), mpi.size() == 1 ? "" : "es", options.mpi_direct_max_dofs);
       fmt::print(stderr, "fem_solve: Q{} elements, level L = {}{}, gmsh mesh, {} solver{}{}\n",
                  options.degree, options.refinements,
                  options.adaptive ? fmt::format(" then adaptive (tolerance {:g}, at most {} dofs)",
@@ -165,7 +187,9 @@ int main(int argc, char **argv)
                  r.assembly_seconds, r.solve_seconds);
       if (!vtu_directory.empty())
         fmt::print(stderr, "fem_solve: wrote {}\n",
-                   (std::filesystem::path(vtu_directory) / "fem_solution.vtu").string());
+                   (std::filesystem::path(vtu_directory) /
+                    (mpi.active() ? "fem_solution.pvtu" : "fem_solution.vtu"))
+                     .string());
       if (r.contact && problem.legacy_cylinder)
         fmt::print(stderr, "fem_solve: c = {:.6g} m (c/a = {:.4f}), P = {:.6g} N (trace {:.6g} N)\n",
                    r.contact->half_width, r.contact->half_width / problem.geometry.half_length(),
@@ -188,12 +212,14 @@ int main(int argc, char **argv)
     }
   catch (const axisym::InputError &e)
     {
-      std::cerr << "fem_solve: error: " << e.what() << '\n';
+      if (root) // every rank reads the same input and fails alike
+        std::cerr << "fem_solve: error: " << e.what() << '\n';
       return 2;
     }
   catch (const std::exception &e)
     {
-      std::cerr << "fem_solve: error: " << e.what() << '\n';
+      std::cerr << "fem_solve: error" << (mpi.active() ? fmt::format(" (rank {})", mpi.rank()) : "")
+                << ": " << e.what() << '\n';
       return 3;
     }
 }
