@@ -11,6 +11,8 @@ packages=(
   libeigen3-dev nlohmann-json3-dev libcli11-dev libfmt-dev
   # fem_reference/: deal.II 9.4 (MPI, p4est, PETSc, Trilinos, UMFPACK, gmsh) and gmsh itself
   libdeal.ii-dev gmsh libgmsh-dev
+  # mpirun for fem_solve's distributed runs and the `mpi` tests (deal.II's MPI is Open MPI)
+  openmpi-bin
   # faster BLAS for UMFPACK than Debian's reference BLAS
   libopenblas0-pthread
   # tests and benchmarks
