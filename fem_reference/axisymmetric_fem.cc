@@ -233,7 +233,12 @@ namespace fem
           {
             reset_system();
             solve_linear();
+            const auto t_evaluate = Clock::now();
             finish(evaluate(nullptr));
+            std::ostringstream line;
+            line.precision(3);
+            line << "functionals and errors " << seconds_since(t_evaluate) << " s";
+            progress(line.str());
             result.success = true;
           }
         else
@@ -275,11 +280,18 @@ namespace fem
             }
           if (result.success && options_.adaptive)
             adaptive_cycles(result, n_passes, solve_on_mesh, zones_from_result);
+          const auto t_post = Clock::now();
           if (result.success)
             result.samples = samples();
+          const double samples_s = seconds_since(t_post);
           // A mirrored section's mid-plane is no support of the body: no reactions.
           if (result.success && !body_.mirrored)
             result.reactions = reactions();
+          std::ostringstream line;
+          line.precision(3);
+          line << "samples " << samples_s << " s, reactions " << seconds_since(t_post) - samples_s
+               << " s";
+          progress(line.str());
         }
       catch (const std::exception &e)
         {

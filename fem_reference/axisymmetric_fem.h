@@ -133,7 +133,8 @@ namespace fem
     double linear_tolerance = 1e-12;
     /// Under MPI with LinearSolver::direct: systems up to this many dofs are factorized by
     /// MUMPS (through Trilinos Amesos), larger ones solved by CG with ML algebraic multigrid
-    /// to linear_tolerance (LinearSolver::cg: always CG + AMG).
+    /// to linear_tolerance (100 times smaller with a die: the penalty force amplifies the
+    /// algebraic error; LinearSolver::cg: always CG + AMG).
     long mpi_direct_max_dofs = 200000;
     /// kappa = penalty_factor * E / h_min. The force error is O(1/kappa): for the paper's die
     /// at L = 5, Q2, |P(1e3) - P(1e4)| = 0.2 N of 192.6 kN (fem_convergence penalty study).

@@ -254,6 +254,7 @@ namespace fem::internal
       }
     else
       {
+        const auto t_setup = Clock::now();
         if (factorize || !mpi_amg_)
           {
             mpi_direct_.reset();
@@ -263,18 +264,31 @@ namespace fem::internal
             TrilinosWrappers::PreconditionAMG::AdditionalData data;
             data.elliptic = true;
             data.higher_order_elements = options_.degree > 1;
+            // Two Chebyshev sweeps, aggregation threshold 1e-4: 85 iterations to 1e-12 on the
+            // Lame cylinder at 337 k dofs (0.02: 117; 0.1: 375; one sweep: 134, no faster).
             data.smoother_sweeps = 2;
-            data.aggregation_threshold = 0.02;
+            data.aggregation_threshold = 1e-4;
             DoFTools::extract_constant_modes(dof_handler_, ComponentMask(), data.constant_modes);
             mpi_amg_ = std::make_unique<TrilinosWrappers::PreconditionAMG>();
             mpi_amg_->initialize(*mpi_system_matrix_, data);
           }
-        SolverControl control(20 * dof_handler_.n_dofs() + 100,
-                              options_.linear_tolerance * b.l2_norm());
+        const double setup_s = seconds_since(t_setup);
+        const auto t_cg = Clock::now();
+        // With a penalty the force is kappa int (u.n - t) r ds: an algebraic error in u.n
+        // comes back times kappa (penalty_factor E / h_min). On the paper's die at level 5
+        // the relative residual 1e-10, 1e-12, 1e-13, 1e-14 left P off UMFPACK's by 1.8e-6,
+        // 6.7e-8, 9.3e-9, 6.1e-10: with dies the residual asked is 100 times smaller.
+        const double tolerance = options_.linear_tolerance * (kappa_ > 0 ? 1e-2 : 1.0);
+        SolverControl control(20 * dof_handler_.n_dofs() + 100, tolerance * b.l2_norm());
         SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
         cg.solve(*mpi_system_matrix_, u, b, *mpi_amg_);
         linear_solver_used_ = "cg-amg";
         linear_iterations_ = control.last_step();
+        std::ostringstream line;
+        line.precision(3);
+        line << "CG + AMG: " << linear_iterations_ << " iterations in " << seconds_since(t_cg)
+             << " s (multigrid set up in " << setup_s << " s)";
+        progress(line.str());
       }
     constraints_.distribute(u);
     TrilinosWrappers::MPI::Vector ghosted(owned_dofs_, relevant_dofs_, comm_);

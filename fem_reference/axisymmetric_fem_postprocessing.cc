@@ -3,6 +3,7 @@
 #include "fem_reference/axisymmetric_solver.h"
 
 #include <deal.II/grid/grid_tools_cache.h>
+#include <deal.II/numerics/rtree.h>
 
 namespace fem::internal
 {
@@ -432,10 +433,10 @@ namespace fem::internal
   // The cell around each point. A point on an arc may lie just outside the Q_p image of the
   // arc (deal.II 9.4 then returns an invalid cell rather than throwing), so a miss is retried
   // with looser tolerances (unit-cell coordinates) and projected onto the unit cell; with
-  // straight-sided cells the nearest boundary cell is taken. Distributed: a rank keeps the
-  // cell only if it owns it, else it looks among its own cells near the point; of the ranks
-  // that found one, the nearest in unit coordinates keeps the point (the lowest rank on a
-  // tie: a point on a face between two ranks' cells).
+  // straight-sided cells the nearest boundary cell is taken. Distributed: each rank looks
+  // among its own cells nearest to the point, and the rank whose cell is nearest in unit
+  // coordinates keeps the point (the lowest rank on a tie: a point on a face between two
+  // ranks' cells).
   std::vector<AxisymmetricSolver::PointCell>
   AxisymmetricSolver::locate_points(const std::vector<Point<2>> &points) const
   {
@@ -445,47 +446,46 @@ namespace fem::internal
     const GridTools::Cache<2> cache(triangulation_, mapping());
     Triangulation<2>::active_cell_iterator hint;
     // (cell, unit point, distance to the unit cell); distance infinity: none found here.
+    // Distributed: the own cells whose bounding boxes are nearest to the point (deal.II's
+    // search from the nearest vertex would also walk the other ranks' coarse artificial cells,
+    // and over the whole mesh where it misses: seconds per point at 1e6 cells).
+    const auto locate_own = [&](const Point<2> &x) -> std::pair<PointCell, double> {
+      std::vector<std::pair<BoundingBox<2>, Triangulation<2>::active_cell_iterator>> near;
+      cache.get_locally_owned_cell_bounding_boxes_rtree().query(
+        boost::geometry::index::nearest(x, 8), std::back_inserter(near));
+      PointCell best;
+      double best_distance = std::numeric_limits<double>::infinity();
+      for (const auto &[box, cell] : near)
+        try
+          {
+            const Point<2> u = mapping().transform_real_to_unit_cell(cell, x);
+            const double d = GeometryInfo<2>::distance_to_unit_cell(u);
+            if (d < best_distance)
+              best_distance = d,
+              best = {DoFHandler<2>::active_cell_iterator(&triangulation_, cell->level(),
+                                                          cell->index(), &dof_handler_),
+                      GeometryInfo<2>::project_to_unit_cell(u), true};
+          }
+        catch (const std::exception &)
+          {}
+      return {best, best_distance};
+    };
     const auto locate = [&](const Point<2> &x) -> std::pair<PointCell, double> {
+      if (distributed_)
+        return locate_own(x);
       for (const double tolerance : {1e-10, 1e-6, 1e-3})
         {
           try
             {
               const auto [cell, unit] =
                 GridTools::find_active_cell_around_point(cache, x, hint, {}, tolerance);
-              if (cell.state() == IteratorState::valid && cell->is_locally_owned())
+              if (cell.state() == IteratorState::valid)
                 {
                   hint = cell;
                   PointCell found{DoFHandler<2>::active_cell_iterator(
                                     &triangulation_, cell->level(), cell->index(), &dof_handler_),
                                   GeometryInfo<2>::project_to_unit_cell(unit), true};
                   return {found, GeometryInfo<2>::distance_to_unit_cell(unit)};
-                }
-              if (cell.state() == IteratorState::valid)
-                {
-                  // Another rank's cell: the point is this rank's only on a face or vertex
-                  // shared with a ghost cell, in one of the own cells at its vertices.
-                  PointCell best;
-                  double best_distance = std::numeric_limits<double>::infinity();
-                  if (cell->is_ghost())
-                    for (const unsigned int v : cell->vertex_indices())
-                      for (const auto &next : cache.get_vertex_to_cell_map()[cell->vertex_index(v)])
-                        {
-                          if (!next->is_locally_owned())
-                            continue;
-                          try
-                            {
-                              const Point<2> u = mapping().transform_real_to_unit_cell(next, x);
-                              const double d = GeometryInfo<2>::distance_to_unit_cell(u);
-                              if (d < best_distance)
-                                best_distance = d,
-                                best = {DoFHandler<2>::active_cell_iterator(
-                                          &triangulation_, next->level(), next->index(), &dof_handler_),
-                                        GeometryInfo<2>::project_to_unit_cell(u), true};
-                            }
-                          catch (const std::exception &)
-                            {}
-                        }
-                  return {best, best_distance};
                 }
             }
           catch (const std::exception &)

@@ -48,8 +48,10 @@ namespace axisym
       "rfm.local_stress_degree", -1, 12,
       "per direction, the stress-only columns in each local box; -1: none"};
     inline constexpr IntRange fem_degree{"fem.degree", 1, 4, "FE_Q(p)"};
-    inline constexpr IntRange fem_refinements{"fem.refinements", 0, 6,
-                                              "level 6 already has 131072 cells"};
+    inline constexpr IntRange fem_refinements{
+      "fem.refinements", 0, 8,
+      "each level has 4 times the cells of the last; beyond level 6 (about 1e6 dofs on a "
+      "small section) run fem_solve under mpirun"};
     inline constexpr IntRange contact_curve_points{"contact.curve_points", 0, 200};
     inline constexpr IntRange rfm_max_degree{"rfm.max_degree", 2, 40,
                                              "the last p tried to reach rfm.tolerance"};
