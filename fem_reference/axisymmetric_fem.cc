@@ -16,6 +16,7 @@
 #include <deal.II/base/convergence_table.h>
 
 #include <cstdlib>
+#include <sys/resource.h>
 #include <iomanip>
 #include <limits>
 
@@ -301,6 +302,10 @@ namespace fem
       if (!options_.vtu_directory.empty() && result.success)
         write_vtu();
       result.total_seconds = seconds_since(t_start);
+      rusage usage{};
+      getrusage(RUSAGE_SELF, &usage);
+      result.peak_memory_bytes = 1024.0 * static_cast<double>(usage.ru_maxrss); // ru_maxrss: KiB
+      result.peak_memory_bytes_all_processes = all_sum(result.peak_memory_bytes);
       return result;
     }
 
@@ -355,6 +360,8 @@ namespace fem
                 break;
               }
           rec.force = result.contact ? result.contact->force : 0.0;
+          if (!problem_.samples.empty())
+            rec.samples = goal ? sampled.back() : samples();
           rec.seconds = seconds_since(t_cycle);
           cycles.push_back(rec);
           std::ostringstream line;

@@ -310,6 +310,7 @@ namespace fem
       double reissner = 0;        ///< Phi_R [J/rad]
       double change = 0;          ///< |Phi_R - Phi_R at half the DoFs| / |Phi_R| (inf before)
       double force = 0;           ///< the first die's P [N] (0 without a die)
+      std::vector<FieldSample> samples; ///< the fields at the problem's samples
       double seconds = 0;         ///< wall time of the cycle (refinement, assembly, solve)
     };
     std::vector<AdaptiveCycle> adaptive_cycles;
@@ -330,6 +331,9 @@ namespace fem
     /// exact displacement is given.
     std::optional<double> displacement_l2_error, displacement_l2_norm;
     double assembly_seconds = 0, solve_seconds = 0, total_seconds = 0;
+    /// Peak resident memory [bytes] of this process (rank 0 under MPI) and summed over the
+    /// processes, at the end of the run (getrusage's maximum resident set size).
+    double peak_memory_bytes = 0, peak_memory_bytes_all_processes = 0;
   };
 
   /// (sigma_rr, sigma_zz, sigma_tt, sigma_rz) at (r, z).

@@ -18,6 +18,21 @@ namespace fem
               {"penalty_energy", f.penalty_energy},
               {"units", "J per radian"}};
     }
+
+    nlohmann::json samples_to_json(const std::vector<FieldSample> &samples)
+    {
+      nlohmann::json out = nlohmann::json::array();
+      for (const FieldSample &s : samples)
+        out.push_back({{"r", s.r},
+                       {"z", s.z},
+                       {"u_r", s.u_r},
+                       {"u_z", s.u_z},
+                       {"sigma_rr", s.sigma[0]},
+                       {"sigma_zz", s.sigma[1]},
+                       {"sigma_tt", s.sigma[2]},
+                       {"sigma_rz", s.sigma[3]}});
+      return out;
+    }
   } // namespace
 
   nlohmann::json result_to_json(const axisym::Problem &problem, const FemOptions &options,
@@ -77,6 +92,7 @@ namespace fem
                                                                             ? nlohmann::json(c.change)
                                                                             : nlohmann::json(nullptr)},
                                                                {"force", c.force},
+                                                               {"samples", samples_to_json(c.samples)},
                                                                {"seconds", c.seconds}});
       }
     j["discretization"]["graded_vertices"] = nlohmann::json::array();
@@ -101,7 +117,9 @@ namespace fem
       }
     j["timing"] = {{"assembly_s", r.assembly_seconds},
                    {"solve_s", r.solve_seconds},
-                   {"total_s", r.total_seconds}};
+                   {"total_s", r.total_seconds},
+                   {"peak_memory_bytes", r.peak_memory_bytes},
+                   {"peak_memory_bytes_all_processes", r.peak_memory_bytes_all_processes}};
     if (r.success || (r.contact && !r.contact->iterations.empty()))
       j["functionals"] = functionals_to_json(r.functionals);
     // One die in the form of DESIGN.md 7 (`contact` is the first die, `dies` lists them all).
@@ -164,17 +182,7 @@ namespace fem
               j["dies"].push_back(die_to_json(c));
           }
       }
-    nlohmann::json samples = nlohmann::json::array();
-    for (const FieldSample &s : r.samples)
-      samples.push_back({{"r", s.r},
-                         {"z", s.z},
-                         {"u_r", s.u_r},
-                         {"u_z", s.u_z},
-                         {"sigma_rr", s.sigma[0]},
-                         {"sigma_zz", s.sigma[1]},
-                         {"sigma_tt", s.sigma[2]},
-                         {"sigma_rz", s.sigma[3]}});
-    j["samples"] = samples;
+    j["samples"] = samples_to_json(r.samples);
     if (!problem.legacy_cylinder)
       {
         // Support reactions [N, full 360 degree body] (axisymmetric_fem.h, PartReaction).

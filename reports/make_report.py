@@ -6,6 +6,7 @@ command 1); needs numpy and matplotlib (Debian: python3-numpy, python3-matplotli
 import argparse
 import datetime
 import json
+import math
 import os
 import platform
 import subprocess
@@ -1328,6 +1329,113 @@ def fem_lame_rows(cmp):
     return out
 
 
+def slope(dofs, err):
+    """Least-squares slope of log(err) against log(dofs): the observed rate in dofs (err ~
+    dofs^slope); None with fewer than two usable points."""
+    pts = [(math.log(n), math.log(e)) for n, e in zip(dofs, err) if e > 0 and n > 0]
+    if len(pts) < 2:
+        return None
+    x = np.array([p[0] for p in pts])
+    y = np.array([p[1] for p in pts])
+    return float(np.polyfit(x, y, 1)[0])
+
+
+def fem_scaling_section(sc, out_dir):
+    """Issue 25: adaptive against uniform refinement, and 1 and 2 MPI processes
+    (benchmarks/fem_scaling.py, run by the benchmarks preset)."""
+    md = ["## 10. The FEM reference at scale: adaptive refinement and MPI (`benchmarks/fem_scaling.py`)", "",
+          f"Measured by `cmake --build --preset benchmarks` on {sc['date']} ({sc['cores']} cores; README command (1) "
+          "does not re-run it: its data file is `reports/data/fem_scaling.json`). Q2 elements; `serial` is the plain "
+          "run (UMFPACK), `np 1` and `np 2` the same executable under mpirun (p4est mesh, Trilinos; MUMPS up to "
+          "2e5 dofs, CG + ML AMG beyond). Adaptive: Kelly's estimate times sqrt(r), the cells carrying half its "
+          "square refined; goal `samples`: the dual-weighted product for the sample stresses. Rates are the "
+          "least-squares slopes of log(error) against log(dofs): error ~ dofs^rate (uniform over its last three "
+          "levels, adaptive over the cycles above a tenth of its last dofs). Where an adaptive error levels off "
+          "it has reached the reference's own accuracy, and its rate flattens with it.", ""]
+    names = {"die": "The paper's die: contact force P", "sphere": "Thick sphere: energy against the closed form",
+             "groove": "Filleted groove: stress concentration K_t"}
+    fig, axs = plt.subplots(1, 3, figsize=(15, 4.2))
+    for ax, (key, title) in zip(axs, names.items()):
+        c = sc["cases"].get(key)
+        if not c:
+            continue
+        ref = c["reference"]["value"]
+        err = lambda v: abs(v - ref) / abs(ref)
+        md += [f"### {title}", "", f"Reference: {c['reference']['what']} = {ref:.10g}.", "",
+               "| strategy | processes | dofs | value | relative error | wall [s] |", "|---|---|---|---|---|---|"]
+        rates = []
+        for np_key, rows in sorted(c["uniform"].items()):
+            label = "serial" if np_key == "0" else f"np {np_key}"
+            for r in rows:
+                md.append(f"| uniform | {label} | {r['dofs']} | {r['value']:.10g} | {err(r['value']):.2e} | "
+                          f"{r['wall_s']:.1f} |")
+            n = [r["dofs"] for r in rows][-3:]
+            e = [err(r["value"]) for r in rows][-3:]
+            rate = slope(n, e)
+            if rate is not None:
+                rates.append(f"uniform ({label}) {rate:.2f}")
+            ax.loglog([r["dofs"] for r in rows], [max(err(r["value"]), 1e-16) for r in rows], "o-", ms=3,
+                      label=f"uniform, {label}")
+        for a in c["adaptive"]:
+            if "cycles" in a:
+                cyc = a["cycles"]
+                label = "serial" if a["processes"] == 1 else f"np {a['processes']}"
+                if "goal" in a:
+                    label += f", goal {a['goal']}"
+                last = cyc[-1]
+                md.append(f"| adaptive ({len(cyc)} cycles) | {label} | {last['dofs']} | {last['value']:.10g} | "
+                          f"{err(last['value']):.2e} | {a['wall_s']:.1f} |")
+                top = [x for x in cyc if x["dofs"] >= cyc[-1]["dofs"] / 10]
+                rate = slope([x["dofs"] for x in top], [err(x["value"]) for x in top])
+                if rate is not None:
+                    rates.append(f"adaptive ({label}) {rate:.2f}")
+                ax.loglog([x["dofs"] for x in cyc], [max(err(x["value"]), 1e-16) for x in cyc], ".-", ms=3,
+                          label=f"adaptive cycles, {label}")
+            else:
+                runs = a["runs"]
+                for r in runs:
+                    md.append(f"| adaptive, goal {a['goal']}, tolerance {r['tolerance']:g} | np {a['processes']} | "
+                              f"{r['dofs']} | {r['value']:.10g} | {err(r['value']):.2e} | {r['wall_s']:.1f} |")
+                rate = slope([r["dofs"] for r in runs], [err(r["value"]) for r in runs])
+                if rate is not None:
+                    rates.append(f"adaptive, goal {a['goal']} {rate:.2f}")
+                ax.loglog([r["dofs"] for r in runs], [max(err(r["value"]), 1e-16) for r in runs], "s--", ms=4,
+                          label=f"adaptive, goal {a['goal']}")
+        md += ["", "Observed rates in dofs: " + "; ".join(rates) + ".", ""]
+        decorate(ax, "dofs", "relative error", title.split(":")[0])
+    md += [f"![adaptive against uniform]({save(fig, out_dir, 'fem_adaptive_convergence.png')})", ""]
+
+    md += ["### Wall time and memory against dofs on 1 and 2 processes", "",
+           "Assembly + solve as measured inside fem::solve (mesh, dofs, constraints and assembly; factorization or "
+           "multigrid set-up and solves, every active-set step and both mesh passes of a die); memory: the peak "
+           "resident sets summed over the processes.", "",
+           "| case | dofs | serial [s] | np 1 [s] | np 2 [s] | speed-up np 1 / np 2 | solver (np 2) | "
+           "memory per dof serial / np 1 / np 2 [KiB] |", "|---|---|---|---|---|---|---|---|"]
+    fig, ax = plt.subplots(figsize=(6.5, 4.2))
+    for key in ("die", "sphere", "groove"):
+        c = sc["cases"].get(key)
+        if not c:
+            continue
+        by = {k: {r["dofs"]: r for r in rows} for k, rows in c["uniform"].items()}
+        for n in sorted(set().union(*[set(v) for v in by.values()])):
+            t = {k: (by[k][n]["assembly_s"] + by[k][n]["solve_s"]) if n in by[k] else None for k in by}
+            mem = {k: by[k][n]["peak_memory_bytes"] / n / 1024 if n in by[k] else None for k in by}
+            fmt = lambda x, f: "-" if x is None else format(x, f)
+            sp = t["1"] / t["2"] if t.get("1") and t.get("2") else None
+            solver = by["2"][n]["linear_solver"] if "2" in by and n in by["2"] else "-"
+            md.append(f"| {key} | {n} | {fmt(t.get('0'), '.2f')} | {fmt(t.get('1'), '.2f')} | {fmt(t.get('2'), '.2f')} | "
+                      f"{fmt(sp, '.2f')} | {solver} | {fmt(mem.get('0'), '.2f')} / {fmt(mem.get('1'), '.2f')} / "
+                      f"{fmt(mem.get('2'), '.2f')} |")
+        for k, rows in sorted(by.items()):
+            label = "serial" if k == "0" else f"np {k}"
+            n = sorted(rows)
+            ax.loglog(n, [rows[x]["assembly_s"] + rows[x]["solve_s"] for x in n], "o-", ms=3, label=f"{key}, {label}")
+    decorate(ax, "dofs", "assembly + solve [s]", "FEM wall time against dofs")
+    md += ["", f"![wall time]({save(fig, out_dir, 'fem_scaling_time.png')})", ""]
+    return md
+
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("--data", required=True)
@@ -1411,6 +1519,9 @@ def main():
     corners = load(args.data, "corners.json")
     if corners:
         md += corners_section(corners, args.out)
+    scaling = load(args.data, "fem_scaling.json")
+    if scaling:
+        md += fem_scaling_section(scaling, args.out)
 
     tmp = os.path.join(args.out, "report.md.tmp")
     with open(tmp, "w") as f:
