@@ -40,11 +40,7 @@ namespace
   // A fresh scratch directory per test.
   fs::path scratch(const std::string &name)
   {
-    const fs::path dir =
-      fs::temp_directory_path() / ("fem_cli_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
+    return axisym::testing::scratch_directory("fem_cli_", name);
   }
 
   std::string read(const fs::path &p)

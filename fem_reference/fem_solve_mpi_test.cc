@@ -27,11 +27,7 @@ namespace
 
   fs::path scratch(const std::string &name)
   {
-    const fs::path dir =
-      fs::temp_directory_path() / ("fem_mpi_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
+    return axisym::testing::scratch_directory("fem_mpi_", name);
   }
 
   nlohmann::json read_json(const fs::path &p)

@@ -8,9 +8,11 @@
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace axisym::testing
 {
@@ -134,5 +136,16 @@ namespace axisym::testing
       out += buf.data();
     const int raw = pclose(pipe.release());
     return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
+  }
+
+  /// A fresh, empty scratch directory `prefix name _ pid` under the system's temporary
+  /// directory (the pid keeps concurrent test processes apart).
+  inline std::filesystem::path scratch_directory(const std::string &prefix, const std::string &name)
+  {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                      (prefix + name + "_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
   }
 } // namespace axisym::testing
