@@ -282,8 +282,11 @@ namespace fem
           if (result.success && options_.adaptive)
             adaptive_cycles(result, n_passes, solve_on_mesh, zones_from_result);
           const auto t_post = Clock::now();
+          // The last adaptive cycle recorded the samples on this mesh.
           if (result.success)
-            result.samples = samples();
+            result.samples = !result.adaptive_cycles.empty() && !problem_.samples.empty()
+                               ? result.adaptive_cycles.back().samples
+                               : samples();
           const double samples_s = seconds_since(t_post);
           // A mirrored section's mid-plane is no support of the body: no reactions.
           if (result.success && !body_.mirrored)
@@ -319,7 +322,6 @@ namespace fem
       auto t_cycle = Clock::now();
       std::vector<FemResult::AdaptiveCycle> &cycles = result.adaptive_cycles;
       const bool goal = options_.adaptive_goal == FemOptions::AdaptiveGoal::samples && !problem_.samples.empty();
-      std::vector<std::vector<FieldSample>> sampled; // per cycle (goal: samples)
       for (int cycle = 0;; ++cycle)
         {
           Vector<float> eta = cell_estimates(solution_);
@@ -334,8 +336,8 @@ namespace fem
           // of the energy, or of the sample stresses over the largest of them (goal).
           if (goal)
             {
-              sampled.push_back(samples());
-              const Vector<double> z = dual_of_samples(sampled.back());
+              rec.samples = samples();
+              const Vector<double> z = dual_of_samples(rec.samples);
               const Vector<float> eta_z = cell_estimates(z);
               for (unsigned int i = 0; i < eta.size(); ++i)
                 eta[i] *= eta_z[i];
@@ -349,19 +351,19 @@ namespace fem
                 else
                   {
                     double largest = 0, change = 0;
-                    for (std::size_t k = 0; k < sampled.back().size(); ++k)
+                    for (std::size_t k = 0; k < rec.samples.size(); ++k)
                       for (int m = 0; m < 4; ++m)
                         {
-                          largest = std::max(largest, std::abs(sampled.back()[k].sigma[m]));
-                          change = std::max(change, std::abs(sampled.back()[k].sigma[m] - sampled[c][k].sigma[m]));
+                          largest = std::max(largest, std::abs(rec.samples[k].sigma[m]));
+                          change = std::max(change, std::abs(rec.samples[k].sigma[m] - cycles[c].samples[k].sigma[m]));
                         }
                     rec.change = largest > 0 ? change / largest : 0.0;
                   }
                 break;
               }
           rec.force = result.contact ? result.contact->force : 0.0;
-          if (!problem_.samples.empty())
-            rec.samples = goal ? sampled.back() : samples();
+          if (!goal && !problem_.samples.empty())
+            rec.samples = samples();
           rec.seconds = seconds_since(t_cycle);
           cycles.push_back(rec);
           std::ostringstream line;

@@ -652,10 +652,7 @@ namespace fem
   {
     const axisym::Problem p = axisym::parse_problem(axisym::testing::stepped_ring());
     const double limit = -0.4283127;
-    FemOptions o;
-    o.degree = 2;
-    o.refinements = 0;
-    o.progress = false;
+    FemOptions o = quiet(2, 0);
     o.adaptive = true;
     o.adaptive_tolerance = 1e-6;
     const FemResult r = solve(p, o);
@@ -696,10 +693,7 @@ namespace fem
       "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3},
       "samples": [[0.04, 0.0]]})"));
     const double net = 1e7 * 0.05 * 0.05 / (0.04 * 0.04), reference = 1.905761;
-    FemOptions o;
-    o.degree = 2;
-    o.refinements = 0;
-    o.progress = false;
+    FemOptions o = quiet(2, 0);
     o.adaptive = true;
     o.adaptive_tolerance = 1e-4;
     o.adaptive_max_dofs = 23000;

@@ -72,8 +72,9 @@ int main(int argc, char **argv)
                      "DIR is created when missing; under mpirun DIR/fem_solution.pvtu and one "
                      "piece per process");
       app.add_option("--linear-solver", solver,
-                     "direct (UMFPACK; under mpirun MUMPS up to 2e5 dofs, CG + AMG beyond) or "
-                     "cg (CG + SSOR; under mpirun CG + AMG)")
+                     fmt::format("direct (UMFPACK; under mpirun MUMPS up to {} dofs, CG + AMG "
+                                 "beyond) or cg (CG + SSOR; under mpirun CG + AMG)",
+                                 fem::FemOptions{}.mpi_direct_max_dofs))
         ->check(CLI::IsMember({"direct", "cg"}));
       app.add_option("--penalty-factor", penalty_factor,
                      "unilateral contact: kappa = factor * E / h_min (default 1e3)");
