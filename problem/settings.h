@@ -92,7 +92,8 @@ namespace axisym
     /// straight parts where the field is singular (an exponent with Re lambda < 1), the
     /// wedge's modes with Re lambda < vertex_max_exponent (0: off), each times the monomials
     /// of the scaled offsets up to vertex_mode_degree, cut off at vertex_cutoff times the
-    /// room around the vertex.
+    /// room around the vertex. The same cutoff places the loaded wedge's field at a traction
+    /// jump (rfm/spaces/traction_jump.h). 0 switches both off.
     double vertex_max_exponent = 3.0;
     int vertex_mode_degree = 1;
     double vertex_cutoff = 1.0;

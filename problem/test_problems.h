@@ -46,6 +46,35 @@ namespace axisym::testing
       "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})");
   }
 
+  // A ring section whose bore carries a pressure on its lower half only (issue 24 item 4): the
+  // traction jumps at (0.5, 0.25), where the loaded and the free half of the bore meet (a
+  // straight angle). Symmetry at z = 0.
+  inline nlohmann::json pressure_band()
+  {
+    return nlohmann::json::parse(R"({
+      "geometry": {"outline": [
+        {"start": [0.5, 0.0]}, {"line_to": [1.0, 0.0], "part": "mid"},
+        {"line_to": [1.0, 0.5], "part": "outer"}, {"line_to": [0.5, 0.5], "part": "top"},
+        {"line_to": [0.5, 0.25], "part": "bore_free"}, {"line_to": [0.5, 0.0], "part": "bore_loaded"}]},
+      "boundary": {"mid": {"symmetry": true}, "bore_loaded": {"pressure": 1.0e7}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})");
+  }
+
+  // Issue 24's tapered hub: a pressure on the inner arc ends at the straight bore (133.4
+  // degrees, a traction jump on an arc), a re-entrant vertex where the taper meets the neck,
+  // and a 186-degree vertex on the outer arc; symmetry on mid and top.
+  inline nlohmann::json tapered_hub()
+  {
+    return nlohmann::json::parse(R"({
+      "geometry": {"outline": [{"start": [0.8, 0.0]}, {"line_to": [1.2, 0.0], "part": "mid"},
+        {"arc_to": [1.0875693444439798, 0.5071419140888394], "center": [0.0, 0.0], "part": "outer_arc"},
+        {"line_to": [0.85, 1.2], "part": "taper"}, {"line_to": [0.85, 1.6], "part": "neck"},
+        {"line_to": [0.55, 1.6], "part": "top"}, {"line_to": [0.55, 0.5809475019311126], "part": "bore"},
+        {"arc_to": [0.8, 0.0], "center": [0.0, 0.0], "part": "inner_arc"}]},
+      "boundary": {"mid": {"symmetry": true}, "top": {"symmetry": true}, "inner_arc": {"pressure": 1.0e7}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})");
+  }
+
   /// The sector 0 <= polar angle from the equator <= 60 degrees of the same shell: the cone
   /// phi = 60 degrees is an inclined symmetry edge (u.n = 0 with n = (-sin 60, cos 60)),
   /// which a spherically symmetric solution satisfies; inner pressure 10 MPa, steel.

@@ -1316,6 +1316,62 @@ def corners_section(corners, out_dir):
         decorate(ax, "degree p", "Phi_R against the FEM's limit (relative); indicator", key.replace("_", " "))
     md.append(f"![energy error and indicator against p]({save(fig, out_dir, 'corners_convergence.png')})")
     md.append("")
+    md += traction_jump_rows(corners, out_dir)
+    return md
+
+
+def traction_jump_rows(corners, out_dir):
+    """Section 9.3: traction jumps (issue 24 item 4), with and without the loaded wedge's field."""
+    cases = [(k, t) for k, t in (("pressure_band", "a pressure ending on a straight bore (180 degrees)"),
+                                  ("tapered_hub", "issue 24's tapered hub: the inner arc's pressure ends at the bore"))
+             if k in corners]
+    if not cases:
+        return []
+    md = ["### 9.3 Traction jumps", "",
+          "Where the prescribed traction changes at a vertex so that no constant stress meets both faces "
+          "(a pressure ending at a free face), the stress has a bounded term of degree 0 whose value "
+          "depends on the direction from the vertex. The RFM adds the plane wedge's field of degree 0 "
+          "(an Airy function rho^2 f(theta)), mapped onto curved faces, times a cutoff to the particular "
+          "stress, and the displacement of its log term to the particular displacement "
+          "(`rfm/spaces/traction_jump.h`); 'without' switches it off (`rfm.vertex_max_exponent = 0`, "
+          "which also drops any vertex's modes). The FEM refines uniformly there (the jump is not a "
+          "singular vertex); its energy limit is Richardson's from the last three levels. Sample errors "
+          "are per point, the largest component's difference from the FEM's finest level over the "
+          "largest sample stress; points on a symmetry line (z = 0) converge more slowly than the rest "
+          "(as on the axis: issue 24 item 5).", ""]
+    fig, axes = plt.subplots(1, len(cases), figsize=(5 * len(cases), 4), squeeze=False)
+    for (key, title), ax in zip(cases, axes[0]):
+        c = corners[key]
+        f = c["fem"]
+        md.append(f"**{title}** (`{c['problem_file']}`): FEM energy limit {f['extrapolated_energy']:.10e} J/rad "
+                  f"(observed order {f['observed_order_energy']:.2f}; the finest level {f['estimated_error_relative']:.1e} "
+                  "from it).")
+        md.append("")
+        points = [f"({x['r']:g}, {x['z']:g})" for x in f[max((k for k in f if k.startswith('L')), key=lambda k: int(k[1:]))]["samples"]]
+        md.append("| solver | Phi_R [J/rad] | vs FEM limit | indicator | " + " | ".join(points) + " | time [s] |")
+        md.append("|---|---|---|---|" + "---|" * len(points) + "---|")
+        for lk in sorted((k for k in f if k.startswith("L")), key=lambda k: int(k[1:])):
+            row = f[lk]
+            rel = abs(row["reissner"] - f["extrapolated_energy"]) / abs(f["extrapolated_energy"])
+            md.append(f"| FEM Q2 {lk} ({row['dofs']} DoFs) | {row['reissner']:.10e} | {rel:.1e} | | "
+                      + " | " * len(points) + f"{row['seconds']:.2f} |")
+        for rk, label in (("rfm", "RFM"), ("rfm_without_jump_field", "RFM without the field")):
+            rows = {k: v for k, v in c.get(rk, {}).items() if k.startswith("p")}
+            ps = sorted(rows, key=lambda k: int(k[1:]))
+            for pk in ps:
+                r = rows[pk]
+                errs = " | ".join(f"{e:.1e}" for e in r["sample_errors_relative"])
+                md.append(f"| {label} p = {pk[1:]} | {r['reissner']:.10e} | {r['energy_error_relative']:.1e} | "
+                          f"{r['indicator']:.1e} | {errs} | {r['seconds']:.2f} |")
+            if ps:
+                ax.semilogy([int(k[1:]) for k in ps], [rows[k]["energy_error_relative"] for k in ps],
+                            "o-" if rk == "rfm" else "s--", label=label + " (Phi_R)")
+                ax.semilogy([int(k[1:]) for k in ps], [rows[k]["indicator"] for k in ps],
+                            "^:" if rk == "rfm" else "v:", label=label + " (indicator)")
+        md.append("")
+        decorate(ax, "degree p", "Phi_R against the FEM's limit (relative); indicator", key.replace("_", " "))
+    md.append(f"![traction jumps: energy error and indicator against p]({save(fig, out_dir, 'corners_traction_jumps.png')})")
+    md.append("")
     return md
 
 

@@ -51,6 +51,7 @@
 #include "rfm/spaces/edge_modes.h"
 #include "rfm/spaces/local_basis.h"
 #include "rfm/spaces/section_basis.h"
+#include "rfm/spaces/traction_jump.h"
 #include "rfm/spaces/vertex_enrichment.h"
 #include "rfm/structures/outline_structures.h"
 
@@ -166,6 +167,15 @@ namespace rfm
     /// of both spaces after the edge modes; their products are integrated on the near-vertex
     /// rules (VertexEnrichment::near_rule).
     const std::vector<VertexEnrichment> &vertex_enrichments() const { return vertices_; }
+    /// Traction jumps (traction_jump.h; issue 24 item 4): at every vertex of the outline off
+    /// the axis between two traction parts (free, pressure, traction; no die) whose tractions
+    /// no constant stress meets, the loaded wedge's stress S of degree 0, added as
+    /// chi (S - s0) to the particular stress, cut off at rfm.vertex_cutoff times the room
+    /// (half of each face, the distance to every other edge, clear of the other enrichments'
+    /// supports; a singular vertex's own cutoff when the vertex has modes too). Its products
+    /// are integrated on the jump's polar rule (the vertex's when it has modes), like the
+    /// enrichment columns'.
+    const std::vector<TractionJump> &traction_jumps() const { return jumps_; }
     Eigen::Index n_vertex_columns() const;
     /// The edge intensity K = sqrt(2 pi) a_1 [Pa m^1/2] at zone end i by the interaction
     /// integral (contact.h) on the half disc of radius 0.9 times the end's room. K < 0: the
@@ -224,6 +234,20 @@ namespace rfm
     Eigen::Index n_enrichment_columns() const { return n_edge_columns() + n_vertex_columns(); }
     EdgeColumns enrichment_columns(const Eigen::Ref<const Eigen::VectorXd> &r,
                                    const Eigen::Ref<const Eigen::VectorXd> &z) const;
+    /// Builds jumps_ (after vertices_); jump_rules_[i]: jump i has a near rule of its own
+    /// (false where it shares a vertex enrichment's).
+    void make_traction_jumps(const axisym::Problem &problem, const DiscretizationOptions &options);
+    /// Sums over the jumps at points (zero beyond their supports): sigma = chi (S - s0) (the
+    /// particular stress's change), u = chi u_w (the particular displacement's: no condition
+    /// on u holds within the support) and its strain (fourth-order central differences with
+    /// steps of 1e-3 times the distance to the vertex: 1e-12 relative for the degree-0 field).
+    FieldValues jump_fields(const Eigen::Ref<const Eigen::VectorXd> &r,
+                            const Eigen::Ref<const Eigen::VectorXd> &z) const;
+    /// The jumps' terms of p_s and p_u: - int X . (C sigma_j - e(u_j)) and + int sigma_j . e(Phi)
+    /// on the near rules.
+    void add_jump_terms(ReissnerSystem &sys) const;
+    /// Fields on the near rules beyond the polynomial part: enrichment columns or jumps.
+    bool has_near_fields() const { return n_enrichment_columns() > 0 || !jumps_.empty(); }
     /// Builds vertices_ (after enrichments_) and grades the edge rule toward each vertex.
     void make_vertex_enrichments(const axisym::Problem &problem,
                                  const DiscretizationOptions &options, std::vector<int> &graded);
@@ -266,6 +290,8 @@ namespace rfm
     };
     std::vector<ZoneEdge> edges_;
     std::vector<VertexEnrichment> vertices_;
+    std::vector<TractionJump> jumps_;
+    std::vector<bool> jump_rules_;
     Quadrature2D near_;      ///< the near-edge and near-vertex rules of all enrichments
     Eigen::MatrixXd gram_e_; ///< Gram matrix of the enrichment's displacement columns
   };

@@ -512,6 +512,25 @@ namespace
             bare->modes.front().lambda.imag() != 0.0 ? fmt::format(" {:+.4g} i", bare->modes.front().lambda.imag())
                                                      : "");
       }
+    // Traction jumps (traction_jump.h, issue 24 item 4): the loaded wedge's stress added to the
+    // particular solution at each.
+    if (model && !model->traction_jumps().empty())
+      {
+        nlohmann::json list = nlohmann::json::array();
+        for (const rfm::TractionJump &j : model->traction_jumps())
+          {
+            const double degrees = j.angle() * 180.0 / 3.14159265358979323846;
+            fmt::print(stderr,
+                       "rfm_solve: traction jump at ({:.6g}, {:.6g}) m (interior angle {:.1f} degrees): "
+                       "the loaded wedge's stress added within {:.4g} m\n",
+                       j.vertex().r, j.vertex().z, degrees, j.cutoff_radius());
+            list.push_back({{"r", j.vertex().r},
+                            {"z", j.vertex().z},
+                            {"angle_degrees", degrees},
+                            {"cutoff_radius", j.cutoff_radius()}});
+          }
+        result["diagnostics"]["traction_jumps"] = list;
+      }
     if (!solved)
       {
         if (!vertex_warning.empty())

@@ -1,0 +1,137 @@
+// The particular stress of a traction jump at a vertex (issue 24 item 4).
+//
+// Where the prescribed traction of two traction parts (free, pressure, traction) differs at
+// their common vertex v so that no constant stress meets both (a pressure ending at a free
+// face at any angle but 90 degrees; a pressure on part of a straight face), the stress near v
+// has a term of degree 0 in rho: bounded, but with a value that depends on the direction from
+// v. The structures' transfinite blend s0 = sum_e W_e s0_e meets both faces' conditions with
+// another direction dependence, and the polynomial columns times omega vanish at v, so the
+// difference stays in the error and the Reissner indicator stalls (issue 24's hub: 4-6e-4 at
+// p = 8-20, while with the pressure continued over the vertex it falls to 8e-6).
+//
+// The term is the plane wedge's (Williams 1952; Timoshenko and Goodier, section 45): with
+// theta measured from the leaving face (theta = 0) into the body to the arriving face
+// (theta = beta, the interior angle), the Airy function rho^2 f(theta),
+//   f = A + B cos 2 theta + C sin 2 theta + D theta,
+//   sigma_rhorho = 2 f + f'',  sigma_thth = 2 f,  sigma_rhoth = -f',
+// equilibrated and with the faces' tractions t_0 (theta = 0) and t_1 (theta = beta) at v
+// when (A, B, C, D) solve a 4 x 4 system. The system is singular where tan 2 beta = 2 beta
+// (beta = 257.5 degrees: the field then has a log rho term) and, at beta = 180 degrees, for
+// two different shear tractions; there it has no solution and no field is made.
+//
+// Faces that are arcs. The straight wedge meets an arc's condition only at v. The field is
+// therefore taken at a mapped angle and rotated: with phi_f(x) the angle about the arc's
+// centre from v to x (0 for a line), a point of face f seen from v at the polar angle of the
+// chord, theta_f + phi_f / 2, and whose normal is turned by phi_f,
+//   w = (theta - phi_0 / 2) / (beta + phi_1 / 2 - phi_0 / 2)          (0 on face 0, 1 on face 1)
+//   theta' = theta - (1 - w) phi_0 / 2 - w phi_1 / 2,   a = (1 - w) phi_0 + w phi_1,
+//   S(x) = Q(a) S_wedge(theta') Q(a)^T,
+// so that on each face theta' is the straight wedge's face angle and Q(a) turns the wedge's
+// face normal into the arc's: S n = Q(a) t_f. That is the arc's traction for a pressure (t
+// turns with n) and for a free face; an arc carrying a fixed traction vector is left out.
+// On lines a = 0 and theta' = theta: the wedge's field exactly.
+//
+// The model (outline_model.h) adds chi(rho) (S - s0) to the particular stress, with chi the
+// C2 cutoff of edge_modes.h (1 at v, 0 from rho_0 on), so that the structures stay
+// boundary-exact (S and s0 meet the same conditions on both faces) and the stress near v is
+// S plus terms that vanish at v. The quintic's C2 join at rho_0 leaves the polynomials a
+// remainder they resolve algebraically there (the pressure band's sample on the cutoff's rim
+// is 7e-4 of max |sigma| off at p = 20 against 2e-4 elsewhere); a C-infinity cutoff
+// (exp(-1/x) blend) was steeper inside and worse everywhere (Phi_R 1.5e-5 against 3.5e-6).
+// The largest room helps most: half of it gave 7.9e-4 for the band's indicator at p = 20
+// against 1.8e-5. The hoop component of S is nu (S_rr + S_zz), as in plane
+// strain. Its products are integrated on near_rule, a polar rule about v that follows curved
+// faces (for each radius the angles between the faces).
+#pragma once
+
+#include "problem/outline.h"
+#include "rfm/quadrature/quadrature.h"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <optional>
+#include <string>
+
+namespace rfm
+{
+  class TractionJump
+  {
+  public:
+    /// The traction at the vertex of one face: t [Pa] there; `follows_normal`: t = -p n
+    /// (a pressure) or 0, which an arc may carry.
+    struct FaceLoad
+    {
+      std::array<double, 2> traction{{0.0, 0.0}};
+      bool follows_normal = true;
+    };
+
+    /// The field at the vertex where `arriving` ends and `leaving` starts (a counter-clockwise
+    /// outline, the body on the left), cut off at cutoff_radius > 0. std::nullopt, with the
+    /// reason in *why, when there is no jump (a constant stress meets both faces' tractions),
+    /// when the wedge has no field of degree 0 (see above), or when an arc carries a fixed
+    /// traction vector.
+    static std::optional<TractionJump> make(const axisym::OutlineEdge &arriving, const FaceLoad &on_arriving,
+                                            const axisym::OutlineEdge &leaving, const FaceLoad &on_leaving,
+                                            double cutoff_radius, double poisson_ratio,
+                                            std::string *why = nullptr);
+
+    const axisym::Point &vertex() const { return at_; }
+    double cutoff_radius() const { return cutoff_radius_; }
+    /// The interior angle beta [rad].
+    double angle() const { return beta_; }
+
+    /// S at points, n x 4 in StressComponent order (rr, zz, tt, rz) [Pa], without the cutoff.
+    /// At the vertex itself (no direction) the value on the bisector.
+    Eigen::MatrixXd stress(const Eigen::Ref<const Eigen::VectorXd> &r,
+                           const Eigen::Ref<const Eigen::VectorXd> &z) const;
+    /// The displacement of the wedge's D term [m] for the shear modulus mu (plane strain),
+    /// n x 2 (u_r, u_z), without the cutoff, mapped like the stress:
+    ///   2 mu u_rho = (kappa - 1) D theta rho,   2 mu u_th = -(kappa + 1) D rho ln(rho / rho_0),
+    /// kappa = 3 - 4 nu (the stresses 2 D theta, 2 D theta, -D). It rotates like ln rho, which
+    /// polynomials resolve no better than the stress's jump. The A, B and C terms are a
+    /// uniform stress, whose displacement is linear: the polynomials carry it, and cut off it
+    /// would only leave a strain of the field's size in the cutoff's annulus (measured: the
+    /// pressure band's indicator at p = 8 went from 1.6e-3 to 2.0e-2 with them).
+    Eigen::MatrixXd displacement(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                 const Eigen::Ref<const Eigen::VectorXd> &z, double mu) const;
+    /// chi(rho) at points.
+    Eigen::VectorXd cutoff(const Eigen::Ref<const Eigen::VectorXd> &r,
+                           const Eigen::Ref<const Eigen::VectorXd> &z) const;
+
+    /// The body within rho_0 of the vertex, polar: radially in geometric layers toward v
+    /// (ratio 0.2, n_layers of them, the innermost with rho = rho_in s^2), n_radial points
+    /// each; at each radius the angles between the two faces (the chord angle of an arc), in
+    /// panels of at most pi / 2 broken where a face's line continues into the body, n_angular
+    /// points each. Plain area weights dr dz. Precondition: rho_0 below the faces' lengths
+    /// and the distance to every other edge (OutlineModel chooses it).
+    Quadrature2D near_rule(int n_radial, int n_angular, int n_layers = 8) const;
+
+  private:
+    TractionJump() = default;
+    /// The straight wedge's stress (rr, zz, rz) in the (r, z) frame at the angle theta.
+    std::array<double, 3> wedge_stress(double theta) const;
+    /// The mapped angle theta' and the rotation a at a point (theta' = beta / 2, a = 0 at v).
+    std::array<double, 2> mapped_angle(double r, double z) const;
+    /// Polar angle of x about v from the leaving face's direction, in
+    /// [beta / 2 - pi, beta / 2 + pi).
+    double polar_angle(double r, double z) const;
+    /// phi_f(x): the angle about face f's centre from v to x (0 for a line).
+    double arc_angle(int face, double r, double z) const;
+
+    axisym::Point at_;
+    double gamma_ = 0.0; ///< angle of the leaving face's direction at v in the (r, z) plane
+    double beta_ = 0.0;
+    std::array<double, 4> coefficients_{{0, 0, 0, 0}}; ///< A, B, C, D
+    double cutoff_radius_ = 0.0;
+    double poisson_ratio_ = 0.0;
+    /// Faces: 0 leaving, 1 arriving; an arc's centre, radius, sweep sign (0 for a line).
+    struct Face
+    {
+      axisym::Point center;
+      double radius = 0.0;
+      int sweep_sign = 0;
+    };
+    std::array<Face, 2> faces_;
+  };
+} // namespace rfm

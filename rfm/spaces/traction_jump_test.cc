@@ -1,0 +1,164 @@
+#include "rfm/spaces/traction_jump.h"
+
+#include "rfm/material.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace
+{
+  using axisym::OutlineEdge;
+  using axisym::Point;
+  using rfm::TractionJump;
+  constexpr double pi = 3.14159265358979323846;
+  constexpr double nu = 0.3, young = 2.1e11, mu = young / (2 * (1 + nu));
+
+  OutlineEdge line(const Point a, const Point b)
+  {
+    OutlineEdge e;
+    e.kind = OutlineEdge::Kind::line;
+    e.start = a, e.end = b;
+    return e;
+  }
+  OutlineEdge arc(const Point a, const Point b, const Point c)
+  {
+    OutlineEdge e = line(a, b);
+    e.kind = OutlineEdge::Kind::arc;
+    e.center = c;
+    return e;
+  }
+  TractionJump::FaceLoad pressure(const OutlineEdge &e, const double t, const double p)
+  {
+    const Point n = e.outward_normal_at(t);
+    return {{-p * n.r, -p * n.z}, true};
+  }
+  constexpr TractionJump::FaceLoad free_face{{0.0, 0.0}, true};
+
+  // S n - t at points of a face (max over the points, relative to p).
+  double face_residual(const TractionJump &j, const OutlineEdge &e, const double p, const bool loaded,
+                       const bool from_start)
+  {
+    double worst = 0.0;
+    for (const double f : {1e-6, 1e-3, 0.01, 0.05, 0.1, 0.2})
+      {
+        const double t = from_start ? f : 1.0 - f;
+        const Point x = e.point_at(t), n = e.outward_normal_at(t);
+        Eigen::VectorXd r(1), z(1);
+        r << x.r;
+        z << x.z;
+        const Eigen::MatrixXd s = j.stress(r, z);
+        const double tr = s(0, rfm::rr) * n.r + s(0, rfm::rz) * n.z + (loaded ? p * n.r : 0.0);
+        const double tz = s(0, rfm::rz) * n.r + s(0, rfm::zz) * n.z + (loaded ? p * n.z : 0.0);
+        worst = std::max(worst, std::hypot(tr, tz) / p);
+      }
+    return worst;
+  }
+
+  // The pressure of a bore ending at a free face, straight faces at 135 degrees.
+  TEST(TractionJump, StraightWedgeMeetsBothFacesTractions)
+  {
+    const Point v{0.5, 0.5};
+    const double p = 1e7;
+    // Arriving along +z (a bore, body at r > 0.5, outline running down: -z). Use an outline
+    // running counter-clockwise: the bore runs down (r = 0.5, z from 1 to 0.5), then a face
+    // leaving v at 135 degrees interior angle.
+    const OutlineEdge arriving = line({0.5, 1.0}, v);
+    const double leave = -0.25 * pi; // direction of the leaving face
+    const OutlineEdge leaving = line(v, {v.r + 0.4 * std::cos(leave), v.z + 0.4 * std::sin(leave)});
+    const auto j = TractionJump::make(arriving, pressure(arriving, 1.0, p), leaving, free_face, 0.1, nu);
+    ASSERT_TRUE(j.has_value());
+    EXPECT_NEAR(j->angle(), 0.75 * pi, 1e-12);
+    EXPECT_LT(face_residual(*j, arriving, p, true, false), 1e-12);
+    EXPECT_LT(face_residual(*j, leaving, p, false, true), 1e-12);
+  }
+
+  // Equilibrium (plane: div S = 0) and compatibility with the displacement: the strain of u
+  // (the D term's) by central differences is the plane-strain compliance of S up to the
+  // uniform part's, the same constant strain at every point.
+  TEST(TractionJump, FieldIsEquilibratedAndItsDisplacementsStrainIsTheCompliance)
+  {
+    const Point v{1.0, 0.0};
+    const OutlineEdge arriving = line({1.0, 1.0}, v); // z runs down to v, body at r > 1
+    const OutlineEdge leaving = line(v, {1.6, -0.3});
+    const auto j = TractionJump::make(arriving, pressure(arriving, 1.0, 1e7), leaving, free_face, 0.3, nu);
+    ASSERT_TRUE(j.has_value());
+    const double h = 1e-5;
+    bool first = true;
+    Eigen::Vector3d first_uniform;
+    for (const Point x : {Point{1.05, 0.02}, Point{1.1, 0.1}, Point{1.02, 0.2}, Point{1.15, -0.05}})
+      {
+        auto at = [&](const double dr, const double dz) {
+          Eigen::VectorXd r(1), z(1);
+          r << x.r + dr;
+          z << x.z + dz;
+          return std::pair{Eigen::RowVectorXd(j->stress(r, z).row(0)),
+                           Eigen::RowVectorXd(j->displacement(r, z, mu).row(0))};
+        };
+        const auto [s, u] = at(0, 0);
+        const auto [s_rp, u_rp] = at(h, 0);
+        const auto [s_rm, u_rm] = at(-h, 0);
+        const auto [s_zp, u_zp] = at(0, h);
+        const auto [s_zm, u_zm] = at(0, -h);
+        const double scale = s.cwiseAbs().maxCoeff();
+        // Plane equilibrium.
+        const double f_r = (s_rp[rfm::rr] - s_rm[rfm::rr] + s_zp[rfm::rz] - s_zm[rfm::rz]) / (2 * h);
+        const double f_z = (s_rp[rfm::rz] - s_rm[rfm::rz] + s_zp[rfm::zz] - s_zm[rfm::zz]) / (2 * h);
+        EXPECT_LT(std::hypot(f_r, f_z) * 0.1 / scale, 1e-6);
+        // Strains.
+        const double e_rr = (u_rp[0] - u_rm[0]) / (2 * h), e_zz = (u_zp[1] - u_zm[1]) / (2 * h);
+        const double g_rz = (u_zp[0] - u_zm[0] + u_rp[1] - u_rm[1]) / (2 * h);
+        const double c_rr = (s[rfm::rr] - nu * (s[rfm::zz] + s[rfm::tt])) / young;
+        const double c_zz = (s[rfm::zz] - nu * (s[rfm::rr] + s[rfm::tt])) / young;
+        const double c_rz = s[rfm::rz] / mu;
+        const double e_scale = scale / young;
+        const Eigen::Vector3d uniform(c_rr - e_rr, c_zz - e_zz, c_rz - g_rz);
+        if (first)
+          first_uniform = uniform, first = false;
+        EXPECT_LT((uniform - first_uniform).cwiseAbs().maxCoeff(), 1e-6 * e_scale);
+        EXPECT_GT(std::abs(e_rr) + std::abs(e_zz) + std::abs(g_rz), 1e-3 * e_scale);
+      }
+  }
+
+  // The hub of issue 24: the pressure on an arc ends at a straight bore (135 degrees); the
+  // mapped field meets the arc's pressure and the bore's freedom exactly.
+  TEST(TractionJump, MappedFieldMeetsAnArcsPressure)
+  {
+    const double p = 1e7, R = 0.8;
+    const Point v{0.55, std::sqrt(R * R - 0.55 * 0.55)};
+    const OutlineEdge bore = line({0.55, 1.6}, v);            // arriving, running down
+    const OutlineEdge inner = arc(v, {0.8, 0.0}, {0.0, 0.0}); // leaving, clockwise
+    ASSERT_LT(inner.sweep(), 0.0);
+    const auto j = TractionJump::make(bore, free_face, inner, pressure(inner, 0.0, p), 0.3, nu);
+    ASSERT_TRUE(j.has_value());
+    EXPECT_LT(face_residual(*j, inner, p, true, true), 1e-12);
+    EXPECT_LT(face_residual(*j, bore, p, false, false), 1e-12);
+  }
+
+  TEST(TractionJump, NoJumpWhereAConstantStressMeetsBoth)
+  {
+    // A bore under pressure meeting a free end at 90 degrees: S = -p e_r e_r.
+    const OutlineEdge bore = line({0.5, 1.0}, {0.5, 0.0});
+    const OutlineEdge end = line({0.5, 0.0}, {1.0, 0.0});
+    std::string why;
+    EXPECT_FALSE(TractionJump::make(bore, pressure(bore, 1.0, 1e7), end, free_face, 0.1, nu, &why));
+    EXPECT_NE(why.find("constant"), std::string::npos) << why;
+    // Both free.
+    EXPECT_FALSE(TractionJump::make(bore, free_face, end, free_face, 0.1, nu, &why));
+  }
+
+  TEST(TractionJump, PressureEndingOnAStraightFace)
+  {
+    // 180 degrees: the 4 x 4 system has rank 3, the normal tractions still have a field.
+    const OutlineEdge low = line({0.5, 0.5}, {0.5, 0.25}), high = line({0.5, 0.25}, {0.5, 0.0});
+    const auto j = TractionJump::make(low, free_face, high, pressure(high, 0.0, 1e7), 0.1, nu);
+    ASSERT_TRUE(j.has_value());
+    EXPECT_NEAR(j->angle(), pi, 1e-12);
+    EXPECT_LT(face_residual(*j, high, 1e7, true, true), 1e-12);
+    EXPECT_LT(face_residual(*j, low, 1e7, false, false), 1e-12);
+    // A shear traction ending there has none (a log term).
+    std::string why;
+    EXPECT_FALSE(TractionJump::make(low, free_face, high, {{0.0, 1e7}, false}, 0.1, nu, &why));
+    EXPECT_NE(why.find("log"), std::string::npos) << why;
+  }
+} // namespace
