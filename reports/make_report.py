@@ -1307,17 +1307,22 @@ def corners_section(corners, out_dir):
                 md.append(f"| {label} p = {pk[1:]} | {r['reissner']:.10e} | {r['energy_error_relative']:.1e} | "
                           f"{r['indicator']:.1e} | {r['sample_error_relative']:.1e} | {k_1(r)} | "
                           f"{'' if k_err is None else f'{k_err:.1e}'} | {r['seconds']:.2f} |")
-            if ps:
-                ax.semilogy([int(k[1:]) for k in ps], [rows[k]["energy_error_relative"] for k in ps],
-                            "o-" if rk == "rfm" else "s--", label=label + " (Phi_R)")
-                ax.semilogy([int(k[1:]) for k in ps], [rows[k]["indicator"] for k in ps],
-                            "^:" if rk == "rfm" else "v:", label=label + " (indicator)")
+            plot_energy_and_indicator(ax, rows, ps, rk == "rfm", label)
         md.append("")
         decorate(ax, "degree p", "Phi_R against the FEM's limit (relative); indicator", key.replace("_", " "))
     md.append(f"![energy error and indicator against p]({save(fig, out_dir, 'corners_convergence.png')})")
     md.append("")
     md += traction_jump_rows(corners, out_dir)
     return md
+
+
+def plot_energy_and_indicator(ax, rows, ps, first, label):
+    """Phi_R's distance from the FEM's limit and the indicator against p (rows keyed 'p<n>')."""
+    if ps:
+        ax.semilogy([int(k[1:]) for k in ps], [rows[k]["energy_error_relative"] for k in ps],
+                    "o-" if first else "s--", label=label + " (Phi_R)")
+        ax.semilogy([int(k[1:]) for k in ps], [rows[k]["indicator"] for k in ps],
+                    "^:" if first else "v:", label=label + " (indicator)")
 
 
 def traction_jump_rows(corners, out_dir):
@@ -1363,11 +1368,7 @@ def traction_jump_rows(corners, out_dir):
                 errs = " | ".join(f"{e:.1e}" for e in r["sample_errors_relative"])
                 md.append(f"| {label} p = {pk[1:]} | {r['reissner']:.10e} | {r['energy_error_relative']:.1e} | "
                           f"{r['indicator']:.1e} | {errs} | {r['seconds']:.2f} |")
-            if ps:
-                ax.semilogy([int(k[1:]) for k in ps], [rows[k]["energy_error_relative"] for k in ps],
-                            "o-" if rk == "rfm" else "s--", label=label + " (Phi_R)")
-                ax.semilogy([int(k[1:]) for k in ps], [rows[k]["indicator"] for k in ps],
-                            "^:" if rk == "rfm" else "v:", label=label + " (indicator)")
+            plot_energy_and_indicator(ax, rows, ps, rk == "rfm", label)
         md.append("")
         decorate(ax, "degree p", "Phi_R against the FEM's limit (relative); indicator", key.replace("_", " "))
     md.append(f"![traction jumps: energy error and indicator against p]({save(fig, out_dir, 'corners_traction_jumps.png')})")

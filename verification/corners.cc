@@ -34,6 +34,46 @@
 
 namespace
 {
+  // Richardson's limit of the last three of the FEM's energies (which must converge
+  // monotonically), written into fem with the observed order and the finest level's distance
+  // from it, and printed.
+  double energy_limit(const std::vector<double> &energies, const std::string &file, nlohmann::json &fem)
+  {
+    const std::size_t n = energies.size();
+    const double d1 = energies[n - 2] - energies[n - 3], d2 = energies[n - 1] - energies[n - 2];
+    if (!(d1 != 0.0 && d2 != 0.0 && d1 / d2 > 1.0))
+      throw verification::NumericalFailure(file + ": the FEM's energies do not converge monotonically");
+    const double limit = energies[n - 1] + d2 / (d1 / d2 - 1.0);
+    const double finest = std::abs(energies[n - 1] - limit) / std::abs(limit);
+    fem["observed_order_energy"] = std::log2(d1 / d2);
+    fem["extrapolated_energy"] = limit;
+    fem["estimated_error_relative"] = finest;
+    fmt::print("FEM extrapolated Phi = {:.10e} J/rad (observed order {:.2f} in energy, finest level "
+               "{:.2e} from it)\n",
+               limit, std::log2(d1 / d2), finest);
+    return limit;
+  }
+
+  // The samples' scale: the largest stress component at any sample of the finest level.
+  double largest_component(const std::vector<std::array<double, 4>> &samples)
+  {
+    double scale = 0.0;
+    for (const auto &s : samples)
+      for (const double x : s)
+        scale = std::max(scale, std::abs(x));
+    return scale;
+  }
+
+  // The problem's sample points.
+  std::array<Eigen::VectorXd, 2> sample_points(const axisym::Problem &problem)
+  {
+    const Eigen::Index n = static_cast<Eigen::Index>(problem.samples.size());
+    std::array<Eigen::VectorXd, 2> x{Eigen::VectorXd(n), Eigen::VectorXd(n)};
+    for (Eigen::Index k = 0; k < n; ++k)
+      x[0][k] = problem.samples[static_cast<std::size_t>(k)][0], x[1][k] = problem.samples[static_cast<std::size_t>(k)][1];
+    return x;
+  }
+
   nlohmann::json corner_case(const verification::DriverContext &context, const std::string &file,
                              const std::vector<int> &degrees, const std::vector<int> &levels)
   {
@@ -89,11 +129,7 @@ namespace
                                                  {"intensities", rfm::to_json(fem_k)}};
         energies.push_back(phi);
       }
-    const std::size_t n = energies.size();
-    const double d1 = energies[n - 2] - energies[n - 3], d2 = energies[n - 1] - energies[n - 2];
-    if (!(d1 != 0.0 && d2 != 0.0 && d1 / d2 > 1.0))
-      throw verification::NumericalFailure(file + ": the FEM's energies do not converge monotonically");
-    const double limit = energies[n - 1] + d2 / (d1 / d2 - 1.0);
+    const double limit = energy_limit(energies, file, c["fem"]);
 
     // The FEM with adaptive refinement from the base mesh (issue 25 item 1: Kelly's estimate,
     // no a-priori grading) at the tolerance 1e-7 (1e-6 in quick mode: 1 s instead of 5 s on the
@@ -127,21 +163,8 @@ namespace
                            {"intensities", rfm::to_json(k)},
                            {"cycles", cycles}};
     }
-    c["fem"]["observed_order_energy"] = std::log2(d1 / d2);
-    c["fem"]["extrapolated_energy"] = limit;
-    c["fem"]["estimated_error_relative"] = std::abs(energies[n - 1] - limit) / std::abs(limit);
-    fmt::print("FEM extrapolated Phi = {:.10e} J/rad (observed order {:.2f} in energy, finest level "
-               "{:.2e} from it)\n",
-               limit, std::log2(d1 / d2), std::abs(energies[n - 1] - limit) / std::abs(limit));
-    // The samples' scale: the largest stress component at any sample of the finest level.
-    double scale = 0.0;
-    for (const auto &s : fem_samples)
-      for (const double x : s)
-        scale = std::max(scale, std::abs(x));
-
-    Eigen::VectorXd r(static_cast<Eigen::Index>(problem.samples.size())), z(r.size());
-    for (std::size_t k = 0; k < problem.samples.size(); ++k)
-      r[static_cast<Eigen::Index>(k)] = problem.samples[k][0], z[static_cast<Eigen::Index>(k)] = problem.samples[k][1];
+    const double scale = largest_component(fem_samples);
+    const auto [r, z] = sample_points(problem);
     for (const bool enriched : {true, false})
       {
         const std::string key = enriched ? "rfm" : "rfm_without_vertex_columns";
@@ -231,24 +254,9 @@ namespace
                                                  {"samples", samples}};
         energies.push_back(f.functionals.reissner);
       }
-    const std::size_t n = energies.size();
-    const double d1 = energies[n - 2] - energies[n - 3], d2 = energies[n - 1] - energies[n - 2];
-    if (!(d1 != 0.0 && d2 != 0.0 && d1 / d2 > 1.0))
-      throw verification::NumericalFailure(file + ": the FEM's energies do not converge monotonically");
-    const double limit = energies[n - 1] + d2 / (d1 / d2 - 1.0);
-    c["fem"]["observed_order_energy"] = std::log2(d1 / d2);
-    c["fem"]["extrapolated_energy"] = limit;
-    c["fem"]["estimated_error_relative"] = std::abs(energies[n - 1] - limit) / std::abs(limit);
-    fmt::print("FEM extrapolated Phi = {:.10e} J/rad (observed order {:.2f} in energy, finest level "
-               "{:.2e} from it)\n",
-               limit, std::log2(d1 / d2), std::abs(energies[n - 1] - limit) / std::abs(limit));
-    double scale = 0.0;
-    for (const auto &x : fem_samples)
-      for (const double v : x)
-        scale = std::max(scale, std::abs(v));
-    Eigen::VectorXd r(static_cast<Eigen::Index>(problem.samples.size())), z(r.size());
-    for (std::size_t k = 0; k < problem.samples.size(); ++k)
-      r[static_cast<Eigen::Index>(k)] = problem.samples[k][0], z[static_cast<Eigen::Index>(k)] = problem.samples[k][1];
+    const double limit = energy_limit(energies, file, c["fem"]);
+    const double scale = largest_component(fem_samples);
+    const auto [r, z] = sample_points(problem);
     for (const bool with : {true, false})
       {
         const std::string key = with ? "rfm" : "rfm_without_jump_field";

@@ -25,6 +25,37 @@ namespace rfm
     }
   } // namespace
 
+  GaussRule1D polar_radial_rule(const double rho_0, const int n_points, const int n_layers)
+  {
+    if (n_points < 1 || n_layers < 0)
+      throw std::invalid_argument("polar_radial_rule: n_points >= 1 and n_layers >= 0");
+    std::vector<double> layers{rho_0};
+    for (int i = 0; i < n_layers; ++i)
+      layers.push_back(layers.back() * 0.2);
+    layers.push_back(0.0);
+    const GaussRule1D g = gauss_legendre(n_points);
+    GaussRule1D out;
+    out.nodes.resize(static_cast<Eigen::Index>(n_layers + 1) * n_points);
+    out.weights.resize(out.nodes.size());
+    Eigen::Index at = 0;
+    for (std::size_t i = 0; i + 1 < layers.size(); ++i)
+      {
+        const double hi = layers[i], lo = layers[i + 1];
+        for (Eigen::Index k = 0; k < g.nodes.size(); ++k, ++at)
+          {
+            const double s = 0.5 * (g.nodes[k] + 1.0), ws = 0.5 * g.weights[k];
+            double rho, drho;
+            if (lo == 0.0)
+              rho = hi * s * s, drho = 2.0 * hi * s;
+            else
+              rho = lo + (hi - lo) * s, drho = hi - lo;
+            out.nodes[at] = rho;
+            out.weights[at] = ws * drho * rho;
+          }
+      }
+    return out;
+  }
+
   GaussRule1D gauss_legendre(const int n_points)
   {
     if (n_points < 1)

@@ -20,6 +20,12 @@ namespace rfm
   };
   GaussRule1D gauss_legendre(int n_points);
 
+  /// A radial rule on [0, rho_0] for polar rules about a point: n_points Gauss points on each
+  /// geometric layer [0.2^(i+1), 0.2^i] rho_0 (i < n_layers) and on the innermost
+  /// [0, 0.2^n_layers rho_0] with rho = rho_in s^2; the weights include the Jacobian rho (so
+  /// that sum w f(rho) = int f(rho) rho drho). Precondition: n_points >= 1, n_layers >= 0.
+  GaussRule1D polar_radial_rule(double rho_0, int n_points, int n_layers);
+
   /// Cell ends partitioning [a, b]: split at every break point strictly inside (a, b),
   /// and, for n_graded_layers > 0, graded geometrically toward each break point: the
   /// cell touching the break point has width ratio^n_graded_layers times the width of

@@ -196,50 +196,36 @@ namespace rfm
   {
     if (n_radial < 1 || n_angular < 1 || n_layers < 0)
       throw std::invalid_argument("TractionJump::near_rule: point counts must be positive");
-    std::vector<double> layers{cutoff_radius_};
-    for (int i = 0; i < n_layers; ++i)
-      layers.push_back(layers.back() * 0.2);
-    layers.push_back(0.0);
-    const GaussRule1D gr = gauss_legendre(n_radial), ga = gauss_legendre(n_angular);
+    const GaussRule1D radial = polar_radial_rule(cutoff_radius_, n_radial, n_layers), ga = gauss_legendre(n_angular);
     std::vector<double> rs, zs, ws;
-    for (std::size_t i = 0; i + 1 < layers.size(); ++i)
+    for (Eigen::Index k = 0; k < radial.nodes.size(); ++k)
       {
-        const double hi = layers[i], lo = layers[i + 1];
-        for (Eigen::Index k = 0; k < gr.nodes.size(); ++k)
+        const double rho = radial.nodes[k], w_rho = radial.weights[k];
+        // The faces at this radius: the chord angles of arcs.
+        auto chord = [rho](const Face &f) {
+          return f.sweep_sign == 0 ? 0.0 : std::asin(std::min(1.0, rho / (2.0 * f.radius)));
+        };
+        const double theta_lo = faces_[0].sweep_sign * chord(faces_[0]);
+        const double theta_hi = beta_ - faces_[1].sweep_sign * chord(faces_[1]);
+        std::vector<double> breaks{theta_lo, theta_hi};
+        if (beta_ > pi + 1e-12) // the faces' lines continued into the body
+          for (const double b : {beta_ - pi, pi})
+            if (b > theta_lo && b < theta_hi)
+              breaks.push_back(b);
+        std::sort(breaks.begin(), breaks.end());
+        for (std::size_t p = 0; p + 1 < breaks.size(); ++p)
           {
-            const double s = 0.5 * (gr.nodes[k] + 1.0), w_s = 0.5 * gr.weights[k];
-            double rho, drho;
-            if (lo == 0.0)
-              rho = hi * s * s, drho = 2.0 * hi * s;
-            else
-              rho = lo + (hi - lo) * s, drho = hi - lo;
-            // The faces at this radius: the chord angles of arcs.
-            auto chord = [rho](const Face &f) {
-              return f.sweep_sign == 0 ? 0.0 : std::asin(std::min(1.0, rho / (2.0 * f.radius)));
-            };
-            const double theta_lo = faces_[0].sweep_sign * chord(faces_[0]);
-            const double theta_hi = beta_ - faces_[1].sweep_sign * chord(faces_[1]);
-            std::vector<double> breaks{theta_lo, theta_hi};
-            if (beta_ > pi + 1e-12) // the faces' lines continued into the body
-              for (const double b : {beta_ - pi, pi})
-                if (b > theta_lo && b < theta_hi)
-                  breaks.push_back(b);
-            std::sort(breaks.begin(), breaks.end());
-            for (std::size_t p = 0; p + 1 < breaks.size(); ++p)
+            const double a = breaks[p], b = breaks[p + 1];
+            const int pieces = std::max(1, static_cast<int>(std::ceil((b - a) / (0.5 * pi) - 1e-9)));
+            for (int piece = 0; piece < pieces; ++piece)
               {
-                const double a = breaks[p], b = breaks[p + 1];
-                const int pieces = std::max(1, static_cast<int>(std::ceil((b - a) / (0.5 * pi) - 1e-9)));
-                for (int piece = 0; piece < pieces; ++piece)
+                const double pa = a + (b - a) * piece / pieces, pb = a + (b - a) * (piece + 1) / pieces;
+                for (Eigen::Index l = 0; l < ga.nodes.size(); ++l)
                   {
-                    const double pa = a + (b - a) * piece / pieces, pb = a + (b - a) * (piece + 1) / pieces;
-                    for (Eigen::Index l = 0; l < ga.nodes.size(); ++l)
-                      {
-                        const double theta = pa + 0.5 * (ga.nodes[l] + 1.0) * (pb - pa);
-                        const double w_t = 0.5 * ga.weights[l] * (pb - pa);
-                        rs.push_back(at_.r + rho * std::cos(gamma_ + theta));
-                        zs.push_back(at_.z + rho * std::sin(gamma_ + theta));
-                        ws.push_back(w_s * drho * rho * w_t);
-                      }
+                    const double theta = pa + 0.5 * (ga.nodes[l] + 1.0) * (pb - pa);
+                    rs.push_back(at_.r + rho * std::cos(gamma_ + theta));
+                    zs.push_back(at_.z + rho * std::sin(gamma_ + theta));
+                    ws.push_back(w_rho * 0.5 * ga.weights[l] * (pb - pa));
                   }
               }
           }

@@ -85,7 +85,7 @@ namespace
     ASSERT_TRUE(j.has_value());
     const double h = 1e-5;
     bool first = true;
-    Eigen::Vector3d first_uniform;
+    Eigen::Vector3d first_uniform = Eigen::Vector3d::Zero();
     for (const Point x : {Point{1.05, 0.02}, Point{1.1, 0.1}, Point{1.02, 0.2}, Point{1.15, -0.05}})
       {
         auto at = [&](const double dr, const double dz) {

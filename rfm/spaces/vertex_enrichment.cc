@@ -270,27 +270,10 @@ namespace rfm
       }
     panels.push_back(alpha);
     // Radial layers [0.2^(i+1), 0.2^i] rho_0, the innermost [0, 0.2^L rho_0] with rho = rho_in s^2.
-    std::vector<double> layers{cutoff_radius_};
-    for (int i = 0; i < n_layers; ++i)
-      layers.push_back(layers.back() * 0.2);
-    layers.push_back(0.0);
-    const GaussRule1D gr = gauss_legendre(n_radial), ga = gauss_legendre(n_angular);
-    std::vector<double> rho_nodes, rho_weights; // weights include the Jacobian rho
-    for (std::size_t i = 0; i + 1 < layers.size(); ++i)
-      {
-        const double hi = layers[i], lo = layers[i + 1];
-        for (Eigen::Index k = 0; k < gr.nodes.size(); ++k)
-          {
-            const double s = 0.5 * (gr.nodes[k] + 1.0), ws = 0.5 * gr.weights[k];
-            double rho, drho;
-            if (lo == 0.0)
-              rho = hi * s * s, drho = 2.0 * hi * s;
-            else
-              rho = lo + (hi - lo) * s, drho = hi - lo;
-            rho_nodes.push_back(rho);
-            rho_weights.push_back(ws * drho * rho);
-          }
-      }
+    const GaussRule1D ga = gauss_legendre(n_angular);
+    const GaussRule1D radial = polar_radial_rule(cutoff_radius_, n_radial, n_layers);
+    const std::vector<double> rho_nodes(radial.nodes.data(), radial.nodes.data() + radial.nodes.size());
+    const std::vector<double> rho_weights(radial.weights.data(), radial.weights.data() + radial.weights.size());
     Quadrature2D q;
     const Eigen::Index n_points =
       static_cast<Eigen::Index>(rho_nodes.size()) * (static_cast<Eigen::Index>(panels.size()) - 1) * n_angular;
