@@ -170,11 +170,12 @@ namespace rfm
     /// Traction jumps (traction_jump.h; issue 24 item 4): at every vertex of the outline off
     /// the axis between two traction parts (free, pressure, traction; no die) whose tractions
     /// no constant stress meets, the loaded wedge's stress S of degree 0, added as
-    /// chi (S - s0) to the particular stress, cut off at rfm.vertex_cutoff times the room
-    /// (half of each face, the distance to every other edge, clear of the other enrichments'
-    /// supports; a singular vertex's own cutoff when the vertex has modes too). Its products
-    /// are integrated on the jump's polar rule (the vertex's when it has modes), like the
-    /// enrichment columns'.
+    /// chi (S - s0) to the particular stress, and the displacement of its log term as chi u_D
+    /// to the particular displacement, cut off at rfm.vertex_cutoff times the room (each face,
+    /// half of it where its other end has a jump too; the distance to every other edge; clear
+    /// of the other enrichments' supports; a singular vertex's own cutoff when the vertex has
+    /// modes too). Their products are integrated on the jump's polar rule (the vertex's when
+    /// it has modes), like the enrichment columns'.
     const std::vector<TractionJump> &traction_jumps() const { return jumps_; }
     Eigen::Index n_vertex_columns() const;
     /// The edge intensity K = sqrt(2 pi) a_1 [Pa m^1/2] at zone end i by the interaction
@@ -238,9 +239,10 @@ namespace rfm
     /// (false where it shares a vertex enrichment's).
     void make_traction_jumps(const axisym::Problem &problem, const DiscretizationOptions &options);
     /// Sums over the jumps at points (zero beyond their supports): sigma = chi (S - s0) (the
-    /// particular stress's change), u = chi u_w (the particular displacement's: no condition
+    /// particular stress's change), u = chi u_D (the particular displacement's: no condition
     /// on u holds within the support) and its strain (fourth-order central differences with
-    /// steps of 1e-3 times the distance to the vertex: 1e-12 relative for the degree-0 field).
+    /// steps of 1e-3 times the distance to the vertex: truncation about 1e-12 and rounding
+    /// about 1e-13 of the strain).
     FieldValues jump_fields(const Eigen::Ref<const Eigen::VectorXd> &r,
                             const Eigen::Ref<const Eigen::VectorXd> &z) const;
     /// The jumps' terms of p_s and p_u: - int X . (C sigma_j - e(u_j)) and + int sigma_j . e(Phi)
