@@ -1040,8 +1040,9 @@ namespace rfm
             // The room: each face (half of it where its other end has a jump too), the
             // distance to every other edge, clear of the other enrichments' supports. The
             // cutoff's annulus leaves a steep remainder to the polynomials when the room is
-            // small: on a pressure band ending on a straight bore, half the room gave the
-            // indicators 3.4e-3, 7.9e-4 at p = 8, 20 and the whole 2.2e-3, 1.8e-5.
+            // small: on a pressure band ending on a straight bore, the indicators at p = 8, 20
+            // were 2.2e-3, 1.8e-5 with the whole room, 6.4e-3, 7.9e-5 with half of it and
+            // 3.4e-3, 7.9e-4 with a quarter.
             double room = std::min(arriving.length() * (jump_at[(i + n_edges - 1) % n_edges] ? 0.5 : 1.0),
                                    leaving.length() * (jump_at[(i + 1) % n_edges] ? 0.5 : 1.0));
             for (const axisym::OutlineEdge &e : edges)
