@@ -319,13 +319,14 @@ nlohmann::json run(const verification::DriverContext &context)
   results["stepped_ring"] = corner_case(context, "stepped_ring_pressure.json", degrees, {2, 3, 4});
   results["clamped_cylinder"] = corner_case(context, "clamped_cylinder_tension.json", degrees, {2, 3, 4});
   // Traction jumps (issue 24 item 4): the pressure band on a straight bore; the tapered hub of
-  // the issue (a jump on an arc, besides its two vertices) in full mode only, to p = 16 (its
-  // p = 18 and 20 take 10 and 17 s each way; the even degrees 8-20 are in the session notes).
+  // the issue (a jump on an arc, besides its two vertices) in full mode only, to p = 14 (its
+  // p = 16, 18 and 20 take 6, 10 and 17 s each way, which the report's five minutes do not
+  // hold; the even degrees 8-20 are in the session notes).
   results["pressure_band"] =
-    jump_case("pressure_band_ring.json", context, full ? std::vector<int>{8, 12, 16, 20} : std::vector<int>{8, 12},
+    jump_case("pressure_band_ring.json", context, full ? std::vector<int>{8, 12, 16} : std::vector<int>{8, 12},
               full ? std::vector<int>{2, 3, 4} : std::vector<int>{1, 2, 3});
   if (full)
-    results["tapered_hub"] = jump_case("tapered_hub_pressure.json", context, {8, 12, 16}, {1, 2, 3});
+    results["tapered_hub"] = jump_case("tapered_hub_pressure.json", context, {8, 10, 12, 14}, {1, 2, 3});
   return results;
 }
 
