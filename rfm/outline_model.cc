@@ -149,7 +149,10 @@ namespace rfm
     , local_((options.validate(), is_axis_aligned_rectangle(problem.body->outline))
                ? (local ? *local : die_local_basis(problem, zones, options))
                : LocalBasis())
-    , local_stress_degree_(local_.empty() ? -1 : options.local_stress_degree)
+    , local_stress_degree_(local_.empty() ? -1
+                                          : options.resolved_local_stress_degree(std::any_of(
+                                              local_.patches().begin(), local_.patches().end(),
+                                              [](const LocalPatch &b) { return !b.one_sided; })))
     , n_local_stress_(local_stress_degree_ < 0
                         ? 0
                         : 4 * local_.n_functions(local_stress_degree_))
@@ -405,13 +408,18 @@ namespace rfm
         const Eigen::VectorXd mu = q.weights.segment(k0, k).cwiseProduct(r);
         const DisplacementBasisValues v =
           displacement_basis(basis_values(r, z), as_structure(structures_.displacement(r, z)));
+        const Eigen::VectorXd root = mu.cwiseSqrt();
+        Eigen::MatrixXd a(3 * k, n);
         for (int m = 0; m < 2; ++m)
           {
-            gram[m].noalias() += (v.value[m].transpose() * (mu.asDiagonal() * v.value[m])) / (l * l);
-            gram[m].noalias() += v.d_r[m].transpose() * (mu.asDiagonal() * v.d_r[m]);
-            gram[m].noalias() += v.d_z[m].transpose() * (mu.asDiagonal() * v.d_z[m]);
+            a.topRows(k) = (root / l).asDiagonal() * v.value[m];
+            a.middleRows(k, k) = root.asDiagonal() * v.d_r[m];
+            a.bottomRows(k) = root.asDiagonal() * v.d_z[m];
+            gram[m].selfadjointView<Eigen::Lower>().rankUpdate(a.transpose());
           }
       }
+    for (int m = 0; m < 2; ++m)
+      gram[m].triangularView<Eigen::StrictlyUpper>() = gram[m].transpose();
     return gram;
   }
 
@@ -816,7 +824,9 @@ namespace rfm
             patches.push_back(patch);
           }
       }
-    return LocalBasis(std::move(patches), options.local_degree);
+    const bool two_sided =
+      std::any_of(patches.begin(), patches.end(), [](const LocalPatch &b) { return !b.one_sided; });
+    return LocalBasis(std::move(patches), options.resolved_local_degree(two_sided));
   }
 
   Eigen::Index OutlineModel::n_edge_columns() const
@@ -1435,7 +1445,9 @@ namespace rfm
         box_weight += !f.runs_down() || !f.runs_up() ? 1.0 : 2.0;
       }
     auto local_columns = [&](const double d) { return box_weight * n_boxes * (d + 1.0) * (d + 1.0); };
-    const double p = options.degree, n = (p + 1) * (p + 1) + local_columns(options.local_degree);
+    const bool two_sided = box_weight > static_cast<double>(body.die_parts().size());
+    const double p = options.degree,
+                 n = (p + 1) * (p + 1) + local_columns(options.resolved_local_degree(two_sided));
     double n_q = 0;
     if (is_axis_aligned_rectangle(body.outline))
       {
@@ -1478,7 +1490,9 @@ namespace rfm
                        (options.edge_mode_degree + 2.0) / 2.0;
     // The stress-only local columns: four components per box.
     const double n_ls =
-      options.local_stress_degree < 0 ? 0.0 : 4.0 * local_columns(options.local_stress_degree);
+      options.resolved_local_stress_degree(two_sided) < 0
+        ? 0.0
+        : 4.0 * local_columns(options.resolved_local_stress_degree(two_sided));
     const double n_s = 4 * n + n_ls + n_e, n_u = 2 * n + n_e;
     return 8.0 * (14.0 * n_q * n + 20.0 * n_eq * n_s + 4.0 * n_s * n_s + 3.0 * n_s * n_u +
                   4.0 * n_u * n_u);

@@ -6,12 +6,35 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 namespace rfm
 {
+  double half_space_shape(const double kink, const double x)
+  {
+    if (!(kink > 0.0 && kink < 1.0) || !(x >= 0.0 && x <= 1.0))
+      throw std::invalid_argument("half_space_shape: needs 0 < kink < 1 and 0 <= x <= 1");
+    // In units of c: H'(t) = 2 sqrt(t^2 - k^2) - k arccos(k / t) for t > k (0 below), and with
+    // t = sqrt(x^2 + w^2) the integral is int H'(t) / t dw over w0 = sqrt(max(x, k)^2 - x^2)
+    // to w1 = sqrt(1 - x^2); w = w0 + (w1 - w0) u^2 takes away the square root H' has at t = k.
+    const double lo = std::max(x, kink), w0 = std::sqrt(std::max(0.0, lo * lo - x * x)),
+                 w1 = std::sqrt(std::max(0.0, 1.0 - x * x));
+    static const GaussRule1D rule = gauss_legendre(48);
+    double integral = 0.0;
+    for (Eigen::Index i = 0; i < rule.nodes.size(); ++i)
+      {
+        const double u = 0.5 * (rule.nodes[i] + 1.0), w = w0 + (w1 - w0) * u * u;
+        const double t = std::sqrt(x * x + w * w);
+        const double dh = t > kink ? 2.0 * std::sqrt(t * t - kink * kink) - kink * std::acos(kink / t) : 0.0;
+        integral += 0.5 * rule.weights[i] * dh / t * 2.0 * u;
+      }
+    // Over sqrt(1 - x^2): (w1 - w0) / w1 is 1 beyond the kink (w0 = 0), where w1 may vanish.
+    return x >= kink ? integral : (w1 - w0) / w1 * integral;
+  }
+
   std::vector<double> consistent_die_pressure(const OutlineModel &model, const axisym::Problem &problem,
                                               const DieZone &zone, const std::vector<double> &s,
                                               const int n_moments)
@@ -37,7 +60,21 @@ namespace rfm
       for (int m = 1; m < m_max; ++m)
         v[m + 1] = 2.0 * x * v[m] - v[m - 1];
     };
+    // A rounded flat punch on an end face about the axis (one free end, c > b): X_0 is the
+    // half-space pressure's shape of its profile instead of U_0 (half_space_shape below; it
+    // carries the peak at the flat's end, where g0'' jumps and p has an x log x term that the
+    // polynomials smooth out). The body's finite size adds a smooth part to it.
+    const axisym::DieProfile &profile = problem.body->conditions.at(zone.part).die.profile;
+    const bool on_axis = std::abs(frame.center.r) <= frame.tolerance && std::abs(frame.tangent.z) < 1e-12;
+    const bool kinked = !two_ends && on_axis && profile.shape == axisym::DieProfile::Shape::flat_rounded &&
+                        h > profile.flat_radius * (1.0 + 1e-9);
+    const double kink = kinked ? profile.flat_radius / h : 0.0;
     std::vector<double> v;
+    auto basis = [&](double x, std::vector<double> &values) {
+      chebyshev(x, values);
+      if (kinked)
+        values[0] = half_space_shape(kink, x);
+    };
     // The test fields: V_0 = (1 - d / D) n (die_force's: m_0 = P / 2 pi), and for k >= 1 the
     // bumps (1 - x^2)^3 x^e of the zone (C2, zero at its ends and beyond; e = 2 (k - 1) with
     // one free end, k - 1 with two) times the C2 quintic step from 1 at d = 0 to 0 at
@@ -87,24 +124,29 @@ namespace rfm
     // zone's side of the centre (one).
     const double side = two_ends || zone.s_hi > frame.tolerance ? 1.0 : -1.0;
     const double theta_a = two_ends ? -0.5 * M_PI : 0.0, theta_b = 0.5 * M_PI;
+    // (With the half-space shape, in two pieces split at its kink x = b / c.)
     const GaussRule1D rule = gauss_legendre(2 * m_max + 24);
+    std::vector<std::array<double, 2>> pieces{{theta_a, theta_b}};
+    if (kinked)
+      pieces = {{theta_a, std::asin(kink)}, {std::asin(kink), theta_b}};
     Eigen::MatrixXd g = Eigen::MatrixXd::Zero(n_phi, n_phi);
-    for (Eigen::Index i = 0; i < rule.nodes.size(); ++i)
-      {
-        const double theta = theta_a + 0.5 * (rule.nodes[i] + 1.0) * (theta_b - theta_a);
-        const double x = std::sin(theta), wx = sharp ? 1.0 : std::cos(theta) * std::cos(theta);
-        const double r = frame.point_at(two_ends ? mid + h * x : side * h * x).r;
-        chebyshev(x, v);
-        const double weight = 0.5 * (theta_b - theta_a) * rule.weights[i] * wx * h * r *
-                              (model.mirrored() ? 2.0 : 1.0);
-        for (int k = 0; k < n_phi; ++k)
-          {
-            const int e = two_ends ? k - 1 : 2 * (k - 1);
-            const double test = k == 0 ? 1.0 : std::pow(1.0 - x * x, 3) * std::pow(x, e);
-            for (int j = 0; j < n_phi; ++j)
-              g(k, j) += weight * test * v[degree(j)];
-          }
-      }
+    for (const auto &[t0, t1] : pieces)
+      for (Eigen::Index i = 0; i < rule.nodes.size(); ++i)
+        {
+          const double theta = t0 + 0.5 * (rule.nodes[i] + 1.0) * (t1 - t0);
+          const double x = std::sin(theta), wx = sharp ? 1.0 : std::cos(theta) * std::cos(theta);
+          const double r = frame.point_at(two_ends ? mid + h * x : side * h * x).r;
+          basis(x, v);
+          const double weight =
+            0.5 * (t1 - t0) * rule.weights[i] * wx * h * r * (model.mirrored() ? 2.0 : 1.0);
+          for (int k = 0; k < n_phi; ++k)
+            {
+              const int e = two_ends ? k - 1 : 2 * (k - 1);
+              const double test = k == 0 ? 1.0 : std::pow(1.0 - x * x, 3) * std::pow(x, e);
+              for (int j = 0; j < n_phi; ++j)
+                g(k, j) += weight * test * v[degree(j)];
+            }
+        }
     const Eigen::VectorXd b = g.partialPivLu().solve(moments);
     std::vector<double> p(s.size(), 0.0);
     for (std::size_t i = 0; i < s.size(); ++i)
@@ -113,7 +155,7 @@ namespace rfm
         if (x < (two_ends ? -1.0 : 0.0) - 1e-12 || x > 1.0 + 1e-12)
           continue;
         const double xc = std::clamp(x, -1.0, 1.0);
-        chebyshev(xc, v);
+        basis(xc, v);
         double sum = 0.0;
         for (int k = 0; k < n_phi; ++k)
           sum += b[k] * v[degree(k)];
