@@ -61,7 +61,7 @@ namespace rfm
         v[m + 1] = 2.0 * x * v[m] - v[m - 1];
     };
     // A rounded flat punch on an end face about the axis (one free end, c > b): X_0 is the
-    // half-space pressure's shape of its profile instead of U_0 (half_space_shape below; it
+    // half-space pressure's shape of its profile instead of U_0 (half_space_shape above; it
     // carries the peak at the flat's end, where g0'' jumps and p has an x log x term that the
     // polynomials smooth out). The body's finite size adds a smooth part to it.
     const axisym::DieProfile &profile = problem.body->conditions.at(zone.part).die.profile;
