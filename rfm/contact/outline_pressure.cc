@@ -154,7 +154,8 @@ namespace rfm
         const double x = two_ends ? (s[i] - mid) / h : side * s[i] / h;
         if (x < (two_ends ? -1.0 : 0.0) - 1e-12 || x > 1.0 + 1e-12)
           continue;
-        const double xc = std::clamp(x, -1.0, 1.0);
+        // (One free end: x in [0, 1]; a point a rounding error across the centre is at 0.)
+        const double xc = std::clamp(x, two_ends ? -1.0 : 0.0, 1.0);
         basis(xc, v);
         double sum = 0.0;
         for (int k = 0; k < n_phi; ++k)
