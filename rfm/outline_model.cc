@@ -391,6 +391,40 @@ namespace rfm
       }
   }
 
+  void OutlineModel::combine_indentations(const std::vector<const OutlineModel *> &others,
+                                         const std::vector<double> &t)
+  {
+    if (others.size() != t.size())
+      throw std::invalid_argument("OutlineModel::combine_indentations: one weight per model");
+    std::vector<double> delta;
+    for (const DieZone &z : zones_)
+      delta.push_back(z.indentation);
+    const Eigen::VectorXd q_s0 = q_s_, q_u0 = q_u_;
+    for (std::size_t j = 0; j < others.size(); ++j)
+      {
+        const OutlineModel &o = *others[j];
+        bool same = o.zones_.size() == zones_.size() && o.q_s_.size() == q_s0.size() &&
+                    o.q_u_.size() == q_u0.size() && o.ok() && ok();
+        for (std::size_t i = 0; same && i < zones_.size(); ++i)
+          same = o.zones_[i].part == zones_[i].part && o.zones_[i].s_lo == zones_[i].s_lo &&
+                 o.zones_[i].s_hi == zones_[i].s_hi;
+        if (!same)
+          throw std::invalid_argument("OutlineModel::combine_indentations: the models differ in more "
+                                      "than their indentations");
+        q_s_ += t[j] * (o.q_s_ - q_s0);
+        q_u_ += t[j] * (o.q_u_ - q_u0);
+        for (std::size_t i = 0; i < zones_.size(); ++i)
+          delta[i] += t[j] * (o.zones_[i].indentation - zones_[i].indentation);
+      }
+    for (std::size_t i = 0; i < zones_.size(); ++i)
+      zones_[i].indentation = delta[i];
+    for (ZoneEdge &e : edges_)
+      for (const DieZone &z : zones_)
+        if (z.part == e.zone.part)
+          e.zone.indentation = z.indentation;
+    structures_.set_indentations(delta);
+  }
+
   std::array<Eigen::MatrixXd, 2> OutlineModel::displacement_grams() const
   {
     // Values / l^2 plus gradients (l the size of the section, so both terms weigh alike).

@@ -186,6 +186,15 @@ namespace rfm
     const std::string &zone_edge_part(std::size_t i) const { return edges_.at(i).zone.part; }
     /// The contact zones of the solve, as given.
     const std::vector<DieZone> &zones() const { return zones_; }
+    /// The solution at other indentations by linearity. `others` are models of the same
+    /// problem, options and zones (the same local boxes) that differ from this one only in
+    /// their zones' indentations: this model becomes the one at delta = delta_0 + sum_j t_j
+    /// (delta_j - delta_0), with coefficients q = q_0 + sum_j t_j (q_j - q_0). Exact up to
+    /// rounding: the system's matrix and the orthonormalizing transform do not depend on
+    /// delta, its right-hand side and u0 are affine in it. Throws std::invalid_argument when
+    /// the models' zones or unknowns differ. Precondition: every model ok().
+    void combine_indentations(const std::vector<const OutlineModel *> &others,
+                              const std::vector<double> &t);
     /// The enrichment at zone end i (its frame, cutoff and columns).
     const EdgeEnrichment &zone_edge_enrichment(std::size_t i) const { return enrichments_.at(i); }
     /// The coefficients (in q_s, in q_u) of column j of the enrichment at zone end i.

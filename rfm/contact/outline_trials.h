@@ -99,7 +99,10 @@ namespace rfm::outline_trials
           {
             // Affine in the force-controlled deltas: a solve at 0 and one per such die.
             OutlineDiesStep base;
-            record(*make_model(z, delta), base);
+            std::unique_ptr<OutlineModel> base_model = make_model(z, delta);
+            record(*base_model, base);
+            std::vector<std::unique_ptr<OutlineModel>> unit_models;
+            std::vector<double> unit_deltas;
             const auto n_f = static_cast<Eigen::Index>(by_force.size());
             const auto n_k = static_cast<Eigen::Index>(base.edge_intensities.size());
             Eigen::MatrixXd dp(static_cast<Eigen::Index>(n), n_f), dpt(static_cast<Eigen::Index>(n), n_f),
@@ -114,7 +117,9 @@ namespace rfm::outline_trials
                 std::vector<double> dj = delta;
                 dj[d] = db;
                 OutlineDiesStep b;
-                record(*make_model(z, dj), b);
+                unit_models.push_back(make_model(z, dj));
+                unit_deltas.push_back(db);
+                record(*unit_models.back(), b);
                 for (std::size_t i = 0; i < n; ++i)
                   {
                     dp(static_cast<Eigen::Index>(i), j) = (b.forces[i] - base.forces[i]) / db;
@@ -151,7 +156,14 @@ namespace rfm::outline_trials
             step.edge_intensities = base.edge_intensities;
             for (Eigen::Index i = 0; i < n_k; ++i)
               step.edge_intensities[static_cast<std::size_t>(i)] += dk.row(i).dot(x);
-            result_.model.reset();
+            // The model at these deltas by the same linearity (no third solve: the Hertz
+            // search's 8 steps took 24 solves before).
+            std::vector<const OutlineModel *> others;
+            std::vector<double> t;
+            for (std::size_t j = 0; j < unit_models.size(); ++j)
+              others.push_back(unit_models[j].get()), t.push_back(x[static_cast<Eigen::Index>(j)] / unit_deltas[j]);
+            base_model->combine_indentations(others, t);
+            result_.model = std::move(base_model);
           }
         step.zones = zones(z, delta);
         result_.zones = step.zones;
@@ -159,7 +171,8 @@ namespace rfm::outline_trials
         return step;
       }
 
-      /// The model at the zones of the last solve (force control: one more solve).
+      /// The model at the zones of the last solve (solve() leaves it; this builds it only when
+      /// it is missing).
       void finish()
       {
         if (result_.model)

@@ -533,6 +533,15 @@ namespace rfm
     return {0.0, 0.0};
   }
 
+  void OutlineStructures::set_indentations(const std::vector<double> &delta)
+  {
+    if (delta.size() != zones_.size())
+      throw std::invalid_argument("OutlineStructures::set_indentations: " + std::to_string(delta.size()) +
+                                  " values for " + std::to_string(zones_.size()) + " zones");
+    for (std::size_t i = 0; i < zones_.size(); ++i)
+      zones_[i].indentation = delta[i];
+  }
+
   double OutlineStructures::die_normal_displacement(const int edge, const double r,
                                                     const double z) const
   {

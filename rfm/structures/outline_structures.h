@@ -193,6 +193,10 @@ namespace rfm
     /// Precondition: in_die_zone(e).
     double die_normal_displacement(int edge, double r, double z) const;
     bool in_die_zone(int edge) const { return zone_of_edge_.at(edge) >= 0; }
+    /// Sets the zones' indentations delta [m], in the order the zones were given: u0 is
+    /// affine in them and nothing else depends on them. Throws std::invalid_argument when the
+    /// count differs.
+    void set_indentations(const std::vector<double> &delta);
     /// How far the polynomial degree of displacement component m (0: u_r, 1: u_z) is
     /// lowered in r and in z. Its omega is the product over the edges where u_m is
     /// constrained; an edge along z (r = const) has degree 1 in r, one along r degree 1 in
