@@ -44,11 +44,10 @@ namespace axisym
       "rfm.local_levels", -1, 8, "-1: as many as the zone's size asks for; 0: none"};
     inline constexpr IntRange rfm_local_degree{
       "rfm.local_degree", -1, 12,
-      "per direction, in each local box; -1: 9 about a zone with one free end, 5 with two"};
+      "per direction, in each local box; -1: 9 about a zone with one free end, 7 with two"};
     inline constexpr IntRange rfm_local_stress_degree{
-      "rfm.local_stress_degree", -2, 12,
-      "per direction, the stress-only columns in each local box; -1: none; -2: none about a "
-      "zone with one free end, 5 with two"};
+      "rfm.local_stress_degree", -1, 12,
+      "per direction, the stress-only columns in each local box; -1: none"};
     inline constexpr IntRange fem_degree{"fem.degree", 1, 4, "FE_Q(p)"};
     inline constexpr IntRange fem_refinements{
       "fem.refinements", 0, 8,
@@ -113,26 +112,24 @@ namespace axisym
     /// -1 (the default): 9 when every box is one-sided (a zone with one free end: measured at
     /// the finest FEM's zone of the rounded flat punch, P -1.6e-5 from the FEM's in 4.4 s,
     /// against -3.5e-3 in 1.9 s with degree 5 and the stress-only columns of degree 5, and
-    /// -9.7e-5 in 15.5 s with both 9), 5 when a box is two-sided (2 d + 1 = 19 along the part
-    /// made the ring die's solve at its FEM's zone take 119 s and 3.9 GB).
+    /// -9.7e-5 in 15.5 s with both 9), 7 when a box is two-sided (2 d + 1 = 15 along the part;
+    /// the ring die at its FEM's zone: P -9.4e-5 in 33 s and 1.9 GB, against -4.6e-4 in 27 s
+    /// and 3.1 GB with degree 5 and the stress-only columns, and -4.9e-5 in 119 s and 3.9 GB
+    /// with degree 9; its search: c +0.21 % from the FEM's in 199 s, against +0.44 %).
     int local_degree = -1;
     /// The degree local_degree stands for (two_sided: some die's zone has two free ends).
     int resolved_local_degree(const bool two_sided) const
     {
-      return local_degree >= 0 ? local_degree : two_sided ? 5 : 9;
+      return local_degree >= 0 ? local_degree : two_sided ? 7 : 9;
     }
     /// The stress-only local columns (outline_model.h): in each box, per stress component,
-    /// the tensor Legendre polynomials of this degree on the box, without the cutoff (-1: none).
-    /// -2 (the default): none when every box is one-sided (at local degree 9 they moved the
-    /// rounded punch's P from -1.6e-5 to -9.7e-5 of the FEM's and took 3.5 times as long; they
-    /// lower the indicator, 0.18 -> 0.004, by matching the displacement columns' strains, not
-    /// the force), 5 when a box is two-sided (the ring die at its FEM's zone with degree 5:
-    /// P -4.6e-4 with them, -6.6e-4 without).
-    int local_stress_degree = -2;
-    int resolved_local_stress_degree(const bool two_sided) const
-    {
-      return local_stress_degree >= -1 ? local_stress_degree : two_sided ? 5 : -1;
-    }
+    /// the tensor Legendre polynomials of this degree on the box, without the cutoff (-1: none,
+    /// the default since session 13: at local degree 9 they moved the rounded punch's P from
+    /// -1.6e-5 to -9.7e-5 of the FEM's and took 3.5 times as long, and at 7 the ring die's from
+    /// -9.4e-5 to -1.4e-4 in twice the time and 2.7 times the memory; they lower the indicator,
+    /// 0.18 -> 0.004 on the rounded punch, by matching the displacement columns' strains, not
+    /// the force. With degree 5 they were needed: P -4.6e-4 with them, -6.6e-4 without).
+    int local_stress_degree = -1;
     double local_first_box = 2.0;
     double local_max_box = 0.6;
 

@@ -149,10 +149,7 @@ namespace rfm
     , local_((options.validate(), is_axis_aligned_rectangle(problem.body->outline))
                ? (local ? *local : die_local_basis(problem, zones, options))
                : LocalBasis())
-    , local_stress_degree_(local_.empty() ? -1
-                                          : options.resolved_local_stress_degree(std::any_of(
-                                              local_.patches().begin(), local_.patches().end(),
-                                              [](const LocalPatch &b) { return !b.one_sided; })))
+    , local_stress_degree_(local_.empty() ? -1 : options.local_stress_degree)
     , n_local_stress_(local_stress_degree_ < 0
                         ? 0
                         : 4 * local_.n_functions(local_stress_degree_))
@@ -1524,9 +1521,7 @@ namespace rfm
                        (options.edge_mode_degree + 2.0) / 2.0;
     // The stress-only local columns: four components per box.
     const double n_ls =
-      options.resolved_local_stress_degree(two_sided) < 0
-        ? 0.0
-        : 4.0 * local_columns(options.resolved_local_stress_degree(two_sided));
+      options.local_stress_degree < 0 ? 0.0 : 4.0 * local_columns(options.local_stress_degree);
     const double n_s = 4 * n + n_ls + n_e, n_u = 2 * n + n_e;
     return 8.0 * (14.0 * n_q * n + 20.0 * n_eq * n_s + 4.0 * n_s * n_s + 3.0 * n_s * n_u +
                   4.0 * n_u * n_u);

@@ -131,7 +131,7 @@ namespace
       Case{"vertex_cutoff_zero", with("/rfm", {{"vertex_cutoff", 0.0}}), "rfm.vertex_cutoff"},
       Case{"local_stress_degree_large", with("/rfm", {{"local_stress_degree", 13}}),
            "rfm.local_stress_degree"},
-      Case{"local_stress_degree_low", with("/rfm", {{"local_stress_degree", -3}}),
+      Case{"local_stress_degree_low", with("/rfm", {{"local_stress_degree", -2}}),
            "rfm.local_stress_degree"},
       Case{"local_degree_low", with("/rfm", {{"local_degree", -2}}), "rfm.local_degree"},
       Case{"half_width_beyond", with("/contact", {{"method", "fixed"}, {"half_width", 0.3}}),
