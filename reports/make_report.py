@@ -1298,22 +1298,30 @@ def corners_section(corners, out_dir):
             md.append(f"| FEM Q2 adaptive, tolerance {fa['tolerance']:g} ({fa['dofs']} DoFs, "
                       f"{len(fa['cycles'])} cycles) | {fa['reissner']:.10e} | {fa['energy_error_relative']:.1e} | | | "
                       f"{k_1(fa)} | | {fa['seconds']:.2f} |")
-        for rk, label in (("rfm", "RFM"), ("rfm_without_vertex_columns", "RFM without vertex columns")):
-            rows = c.get(rk, {})
-            ps = sorted(rows, key=lambda k: int(k[1:]))
-            for pk in ps:
-                r = rows[pk]
-                k_err = r.get("intensity_error_relative")
-                md.append(f"| {label} p = {pk[1:]} | {r['reissner']:.10e} | {r['energy_error_relative']:.1e} | "
-                          f"{r['indicator']:.1e} | {r['sample_error_relative']:.1e} | {k_1(r)} | "
-                          f"{'' if k_err is None else f'{k_err:.1e}'} | {r['seconds']:.2f} |")
-            plot_energy_and_indicator(ax, rows, ps, rk == "rfm", label)
+        def cells(r):
+            k_err = r.get("intensity_error_relative")
+            return f"{r['sample_error_relative']:.1e} | {k_1(r)} | {'' if k_err is None else f'{k_err:.1e}'}"
+        degree_rows(md, ax, c, (("rfm", "RFM"), ("rfm_without_vertex_columns", "RFM without vertex columns")),
+                    cells)
         md.append("")
         decorate(ax, "degree p", "Phi_R against the FEM's limit (relative); indicator", key.replace("_", " "))
     md.append(f"![energy error and indicator against p]({save(fig, out_dir, 'corners_convergence.png')})")
     md.append("")
     md += traction_jump_rows(corners, out_dir)
     return md
+
+
+def degree_rows(md, ax, c, variants, cells):
+    """One table row per degree of each RFM variant (key, label) of a corners case: Phi_R, its
+    error, the indicator, the case's own cells(row), the time; and the variant's curves."""
+    for rk, label in variants:
+        rows = {k: v for k, v in c.get(rk, {}).items() if k.startswith("p")}
+        ps = sorted(rows, key=lambda k: int(k[1:]))
+        for pk in ps:
+            r = rows[pk]
+            md.append(f"| {label} p = {pk[1:]} | {r['reissner']:.10e} | {r['energy_error_relative']:.1e} | "
+                      f"{r['indicator']:.1e} | {cells(r)} | {r['seconds']:.2f} |")
+        plot_energy_and_indicator(ax, rows, ps, rk == "rfm", label)
 
 
 def plot_energy_and_indicator(ax, rows, ps, first, label):
@@ -1360,15 +1368,8 @@ def traction_jump_rows(corners, out_dir):
             rel = abs(row["reissner"] - f["extrapolated_energy"]) / abs(f["extrapolated_energy"])
             md.append(f"| FEM Q2 {lk} ({row['dofs']} DoFs) | {row['reissner']:.10e} | {rel:.1e} | | "
                       + " | " * len(points) + f"{row['seconds']:.2f} |")
-        for rk, label in (("rfm", "RFM"), ("rfm_without_jump_field", "RFM without the field")):
-            rows = {k: v for k, v in c.get(rk, {}).items() if k.startswith("p")}
-            ps = sorted(rows, key=lambda k: int(k[1:]))
-            for pk in ps:
-                r = rows[pk]
-                errs = " | ".join(f"{e:.1e}" for e in r["sample_errors_relative"])
-                md.append(f"| {label} p = {pk[1:]} | {r['reissner']:.10e} | {r['energy_error_relative']:.1e} | "
-                          f"{r['indicator']:.1e} | {errs} | {r['seconds']:.2f} |")
-            plot_energy_and_indicator(ax, rows, ps, rk == "rfm", label)
+        degree_rows(md, ax, c, (("rfm", "RFM"), ("rfm_without_jump_field", "RFM without the field")),
+                    lambda r: " | ".join(f"{e:.1e}" for e in r["sample_errors_relative"]))
         md.append("")
         decorate(ax, "degree p", "Phi_R against the FEM's limit (relative); indicator", key.replace("_", " "))
     md.append(f"![traction jumps: energy error and indicator against p]({save(fig, out_dir, 'corners_traction_jumps.png')})")

@@ -29,6 +29,7 @@
 #include <fmt/core.h>
 
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,22 @@ namespace
       for (const double x : s)
         scale = std::max(scale, std::abs(x));
     return scale;
+  }
+
+  // The RFM at degree p (no tolerance), with the vertex modes and traction-jump fields or
+  // without them (rfm.vertex_max_exponent = 0 switches both off). Numerical failure throws.
+  std::unique_ptr<rfm::OutlineModel> solve_at(const axisym::Problem &problem, const std::string &file,
+                                              const int p, const bool with_vertex_terms)
+  {
+    rfm::DiscretizationOptions o = problem.rfm;
+    o.degree = p;
+    o.tolerance.reset();
+    if (!with_vertex_terms)
+      o.vertex_max_exponent = 0.0;
+    auto m = std::make_unique<rfm::OutlineModel>(problem, o);
+    if (!m->ok())
+      throw verification::NumericalFailure(file + ", p = " + std::to_string(p) + ": " + m->summary().message);
+    return m;
   }
 
   // The problem's sample points.
@@ -170,15 +187,8 @@ namespace
         const std::string key = enriched ? "rfm" : "rfm_without_vertex_columns";
         for (const int p : degrees)
           {
-            rfm::DiscretizationOptions o = problem.rfm;
-            o.degree = p;
-            o.tolerance.reset();
-            if (!enriched)
-              o.vertex_max_exponent = 0.0;
-            const rfm::OutlineModel m(problem, o);
-            if (!m.ok())
-              throw verification::NumericalFailure(file + ", p = " + std::to_string(p) + ": " +
-                                                   m.summary().message);
+            const auto model = solve_at(problem, file, p, enriched);
+            const rfm::OutlineModel &m = *model;
             const rfm::Functionals f = m.functionals();
             const rfm::FieldValues v = m.evaluate(r, z);
             double sample_error = 0.0;
@@ -264,14 +274,8 @@ namespace
         bool falling = true;
         for (const int p : degrees)
           {
-            rfm::DiscretizationOptions o = problem.rfm;
-            o.degree = p;
-            o.tolerance.reset();
-            if (!with)
-              o.vertex_max_exponent = 0.0;
-            const rfm::OutlineModel m(problem, o);
-            if (!m.ok())
-              throw verification::NumericalFailure(file + ", p = " + std::to_string(p) + ": " + m.summary().message);
+            const auto model = solve_at(problem, file, p, with);
+            const rfm::OutlineModel &m = *model;
             const rfm::Functionals f = m.functionals();
             const rfm::FieldValues v = m.evaluate(r, z);
             nlohmann::json errors = nlohmann::json::array();
