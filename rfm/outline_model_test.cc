@@ -348,7 +348,7 @@ namespace rfm
         const OutlineModel m(problem, o, {}, {DieZone{"outer", 0.0, c, 1e-6}});
         ASSERT_TRUE(m.ok()) << m.summary().message;
         ASSERT_EQ(m.n_zone_edges(), 1u);
-        EXPECT_EQ(m.n_edge_columns(), 12); // modes 1 and 3 times 6 monomials (degree 2)
+        EXPECT_EQ(m.n_edge_columns(), 30); // modes 1 and 3 times 15 monomials (degree 4)
         EXPECT_NEAR(m.die_force("outer").domain, p_fem, 3e-4 * p_fem) << c;
         EXPECT_GT(m.edge_intensity(0) * k_sign, 0.0) << c; // which way c moves
       }
