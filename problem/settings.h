@@ -117,15 +117,16 @@ namespace axisym
     /// -1 (the default): 9 when every box is one-sided (a zone with one free end: measured at
     /// the finest FEM's zone of the rounded flat punch, P -1.6e-5 from the FEM's in 4.4 s,
     /// against -3.5e-3 in 1.9 s with degree 5 and the stress-only columns of degree 5, and
-    /// -9.7e-5 in 15.5 s with both 9), 7 when a box is two-sided (2 d + 1 = 15 along the part;
-    /// the ring die at its FEM's zone: P -9.4e-5 in 33 s and 1.9 GB, against -4.6e-4 in 27 s
-    /// and 3.1 GB with degree 5 and the stress-only columns, and -4.9e-5 in 119 s and 3.9 GB
-    /// with degree 9; its search: c +0.21 % from the FEM's in 199 s, against +0.44 %).
+    /// -9.7e-5 in 15.5 s with both 9), 8 when a box is two-sided (2 d + 1 = 17 along the part).
+    /// The ring die's search (ring_die_shaft.json, edge_mode_degree 4; session 14), c at both
+    /// ends from the FEM's and P: degree 7 +0.087 %, -1.5e-4 in about 200 s and 2.4 GB; 8
+    /// +0.041 %, -6.9e-5 in 365 s and 3.4 GB; 9 (edge_mode_degree 2) +0.028 %, -5e-5 in 647 s
+    /// and 4.8 GB. (With edge_mode_degree 2, degree 7 gave +0.21 %.)
     int local_degree = -1;
     /// The degree local_degree stands for (two_sided: some die's zone has two free ends).
     int resolved_local_degree(const bool two_sided) const
     {
-      return local_degree >= 0 ? local_degree : two_sided ? 7 : 9;
+      return local_degree >= 0 ? local_degree : two_sided ? 8 : 9;
     }
     /// The stress-only local columns (outline_model.h): in each box, per stress component,
     /// the tensor Legendre polynomials of this degree on the box, without the cutoff (-1: none,
