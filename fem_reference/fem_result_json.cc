@@ -53,7 +53,7 @@ namespace fem
       {"mesh", r.mesh_generator},
       {"refinement_rule", "L global refinements of the gmsh base mesh, new vertices on the "
                           "arcs (manifolds), MappingQ(degree); refined toward the dies' zones "
-                          "and graded toward the singular vertices (graded_vertices)"},
+                          "and graded toward the singular vertices and the traction jumps (graded_vertices; lambda 1 at a jump)"},
       {"base_cells", r.n_base_cells},
       {"base_mesh_size", r.base_mesh_size},
       {"base_cells_on_shortest_edge", options.outline_cells_on_shortest_edge},

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <tuple>
 #include <cmath>
 #include <stdexcept>
@@ -214,6 +215,48 @@ namespace axisym
         std::vector<WedgeMode> modes = w.modes(0.999);
         if (!modes.empty())
           out.push_back({v, angle, a.part, b.part, std::move(modes)});
+      }
+    return out;
+  }
+
+  std::vector<Point> traction_jump_vertices(const Body &body)
+  {
+    const std::vector<OutlineEdge> &edges = body.outline.edges();
+    const double tol = 1e-9 * body.outline.size();
+    using Kind = PartCondition::Kind;
+    // The traction on an edge at parameter t, or nothing for a part that is not a traction
+    // part.
+    auto traction = [&](const OutlineEdge &e, const double t) -> std::optional<Point> {
+      const PartCondition &c = body.conditions.at(e.part);
+      const Point n = e.outward_normal_at(t);
+      switch (c.kind)
+        {
+          case Kind::traction_free: return Point{0.0, 0.0};
+          case Kind::pressure: return Point{-c.pressure * n.r, -c.pressure * n.z};
+          case Kind::traction: return Point{c.traction[0], c.traction[1]};
+          default: return std::nullopt;
+        }
+    };
+    std::vector<Point> out;
+    for (std::size_t i = 0; i < edges.size(); ++i)
+      {
+        const OutlineEdge &a = edges[i], &b = edges[(i + 1) % edges.size()];
+        const Point v = a.end;
+        if (v.r <= tol || a.on_axis(tol) || b.on_axis(tol))
+          continue;
+        const std::optional<Point> ta = traction(a, 1.0), tb = traction(b, 0.0);
+        if (!ta || !tb)
+          continue;
+        const double scale = std::max(std::hypot(ta->r, ta->z), std::hypot(tb->r, tb->z));
+        if (!(scale > 0.0))
+          continue;
+        const Point na = a.outward_normal_at(1.0), nb = b.outward_normal_at(0.0);
+        const bool straight = std::abs(na.r * nb.z - na.z * nb.r) < 1e-9 && na.r * nb.r + na.z * nb.z > 0.0;
+        const bool jump = straight ? std::hypot(ta->r - tb->r, ta->z - tb->z) > 1e-9 * scale
+                                   : std::abs(nb.r * ta->r + nb.z * ta->z - na.r * tb->r - na.z * tb->z) >
+                                       1e-9 * scale;
+        if (jump)
+          out.push_back(v);
       }
     return out;
   }

@@ -119,4 +119,14 @@ namespace axisym
   /// (Re lambda < 1 for some exponent of its wedge), in the outline's order. Where a traction
   /// jumps at a vertex the particular field has logarithms this does not see (issue 24 item 4).
   std::vector<SingularVertex> singular_vertices(const Body &body, double poisson_ratio);
+
+  /// Every vertex of the outline off the axis between two traction parts (traction free,
+  /// pressure, traction) whose tractions there no constant stress meets: with the faces'
+  /// outward normals n_a, n_b and tractions t_a, t_b at the vertex, n_b . t_a != n_a . t_b
+  /// (S n_a = t_a and S n_b = t_b need n_b . S n_a = n_a . S n_b), or, where the boundary runs
+  /// straight on (n_a = n_b), t_a != t_b. The stress there has a term of degree 0 in rho
+  /// whose value depends on the direction, and the displacement a rho log rho term
+  /// (rfm/spaces/traction_jump.h): not singular in the sense above, but no smoother than
+  /// lambda = 1. Relative tolerance 1e-9 of the larger traction.
+  std::vector<Point> traction_jump_vertices(const Body &body);
 } // namespace axisym

@@ -222,4 +222,39 @@ namespace axisym
     EXPECT_EQ(c[0].modes[0].lambda, direct[0].lambda);
     EXPECT_LT(c[0].modes[0].lambda.real(), 1.0);
   }
+
+  // Traction jumps: the pressure band (10 MPa on the lower half of a straight bore) jumps where
+  // it ends, at 180 degrees; at its right-angled corners (pressure or free against symmetry,
+  // free against free) nothing jumps. A uniaxial traction on an end face meets the free side at
+  // 90 degrees with the constant stress sigma_zz = t (no jump); a shear traction there cannot
+  // be met (sigma_rz would have to be t on the end and 0 on the side).
+  TEST(WedgeModes, FindsTheVerticesWhereATractionJumps)
+  {
+    const Problem band = parse_problem(nlohmann::json::parse(R"({
+      "geometry": {"outline": [{"start": [0.5, 0.0]}, {"line_to": [1.0, 0.0], "part": "mid"},
+                               {"line_to": [1.0, 0.5], "part": "outer"}, {"line_to": [0.5, 0.5], "part": "top"},
+                               {"line_to": [0.5, 0.25], "part": "bore_free"},
+                               {"line_to": [0.5, 0.0], "part": "bore_loaded"}]},
+      "boundary": {"mid": {"symmetry": true}, "bore_loaded": {"pressure": 1.0e7}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
+    const std::vector<Point> j = traction_jump_vertices(*band.body);
+    ASSERT_EQ(j.size(), 1u);
+    EXPECT_NEAR(j[0].r, 0.5, 1e-12);
+    EXPECT_NEAR(j[0].z, 0.25, 1e-12);
+    auto end_loaded = [](const double t_r, const double t_z) {
+      nlohmann::json p = nlohmann::json::parse(R"({
+        "geometry": {"outline": [{"start": [0.0, 0.0]}, {"line_to": [0.05, 0.0], "part": "base"},
+                                 {"line_to": [0.05, 0.2], "part": "side"}, {"line_to": [0.0, 0.2], "part": "end"},
+                                 {"line_to": [0.0, 0.0], "part": "axis"}]},
+        "boundary": {"base": {"symmetry": true}},
+        "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})");
+      p["boundary"]["end"]["traction"] = {t_r, t_z};
+      return parse_problem(p);
+    };
+    EXPECT_TRUE(traction_jump_vertices(*end_loaded(0.0, 1.0e6).body).empty());
+    const std::vector<Point> shear = traction_jump_vertices(*end_loaded(1.0e6, 0.0).body);
+    ASSERT_EQ(shear.size(), 1u);
+    EXPECT_NEAR(shear[0].r, 0.05, 1e-12);
+    EXPECT_NEAR(shear[0].z, 0.2, 1e-12);
+  }
 } // namespace axisym

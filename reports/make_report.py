@@ -1347,8 +1347,9 @@ def traction_jump_rows(corners, out_dir):
           "(an Airy function rho^2 f(theta)), mapped onto curved faces, times a cutoff to the particular "
           "stress, and the displacement of its log term to the particular displacement "
           "(`rfm/spaces/traction_jump.h`); 'without' switches it off (`rfm.vertex_max_exponent = 0`, "
-          "which also drops any vertex's modes). The FEM refines uniformly there (the jump is not a "
-          "singular vertex); its energy limit is Richardson's from the last three levels. Sample errors "
+          "which also drops any vertex's modes). The FEM grades its mesh toward the jump as toward a "
+          "vertex with lambda = 1 (`axisym::traction_jump_vertices`: the displacement's rho log rho "
+          "term); its energy limit is Richardson's from the last three levels. Sample errors "
           "are per point, the largest component's difference from the FEM's finest level over the "
           "largest sample stress; points on a symmetry line (z = 0) converge more slowly than the rest "
           "(as on the axis: issue 24 item 5).", ""]
