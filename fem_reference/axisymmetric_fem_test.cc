@@ -651,13 +651,7 @@ namespace fem
   // 2.8e-5.
   TEST(AxisymmetricFemOutline, GradingTowardATractionJumpRecoversTheEnergy)
   {
-    const axisym::Problem p = axisym::parse_problem(nlohmann::json::parse(R"({
-      "geometry": {"outline": [{"start": [0.5, 0.0]}, {"line_to": [1.0, 0.0], "part": "mid"},
-                               {"line_to": [1.0, 0.5], "part": "outer"}, {"line_to": [0.5, 0.5], "part": "top"},
-                               {"line_to": [0.5, 0.25], "part": "bore_free"},
-                               {"line_to": [0.5, 0.0], "part": "bore_loaded"}]},
-      "boundary": {"mid": {"symmetry": true}, "bore_loaded": {"pressure": 1.0e7}},
-      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
+    const axisym::Problem p = axisym::parse_problem(axisym::testing::pressure_band());
     const double limit = -18.6658441;
     FemOptions o = quiet(2, 2);
     const FemResult graded = solve(p, o);

@@ -230,17 +230,18 @@ namespace axisym
   // be met (sigma_rz would have to be t on the end and 0 on the side).
   TEST(WedgeModes, FindsTheVerticesWhereATractionJumps)
   {
-    const Problem band = parse_problem(nlohmann::json::parse(R"({
-      "geometry": {"outline": [{"start": [0.5, 0.0]}, {"line_to": [1.0, 0.0], "part": "mid"},
-                               {"line_to": [1.0, 0.5], "part": "outer"}, {"line_to": [0.5, 0.5], "part": "top"},
-                               {"line_to": [0.5, 0.25], "part": "bore_free"},
-                               {"line_to": [0.5, 0.0], "part": "bore_loaded"}]},
-      "boundary": {"mid": {"symmetry": true}, "bore_loaded": {"pressure": 1.0e7}},
-      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
+    const Problem band = parse_problem(testing::pressure_band());
     const std::vector<Point> j = traction_jump_vertices(*band.body);
     ASSERT_EQ(j.size(), 1u);
     EXPECT_NEAR(j[0].r, 0.5, 1e-12);
     EXPECT_NEAR(j[0].z, 0.25, 1e-12);
+    // Issue 24's hub: the inner arc's pressure ends at the free bore (133.4 degrees, an arc and
+    // a line); its other vertices are free against free or meet a symmetry line.
+    const Problem hub = parse_problem(testing::tapered_hub());
+    const std::vector<Point> h = traction_jump_vertices(*hub.body);
+    ASSERT_EQ(h.size(), 1u);
+    EXPECT_NEAR(h[0].r, 0.55, 1e-12);
+    EXPECT_NEAR(h[0].z, 0.5809475019311126, 1e-12);
     auto end_loaded = [](const double t_r, const double t_z) {
       nlohmann::json p = nlohmann::json::parse(R"({
         "geometry": {"outline": [{"start": [0.0, 0.0]}, {"line_to": [0.05, 0.0], "part": "base"},
