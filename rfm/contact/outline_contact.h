@@ -13,8 +13,8 @@
 // not bracketed inside the part is a numerical failure. A zone with two free ends (the centre
 // inside the part: a ring die on a shaft) has two unknowns and two intensities (K_lo, K_hi):
 // Broyden's method from a finite-difference Jacobian (two extra solves), each step limited to a
-// quarter of the zone's width, until both ends move less than root_tolerance times the zone's
-// half-width.
+// quarter of the zone's width, until both ends move, or the next step would move them, less
+// than root_tolerance times the zone's half-width.
 // A flat punch with a sharp edge keeps its face as the zone (one or two edges; K is the
 // intensity of its singular edge pressure). The hollow-cylinder form's search (contact.h) also
 // takes the stationary point of P(c) next to the root; on the outline path c is the root itself.
