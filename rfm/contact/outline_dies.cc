@@ -160,6 +160,13 @@ namespace rfm
               const auto zi = zones_at(xi, c_fixed);
               jac.col(i) = (residual(solver.solve(zi, "jacobian"), zi) - k) / h;
             }
+          bool solved_at_x = false; // the last solve was at x (not at a Jacobian's column)
+          auto below_tolerance = [&](const Eigen::VectorXd &step) {
+            for (Eigen::Index i = 0; i < n_x; ++i)
+              if (!(std::abs(step[i]) < options.root_tolerance * half_width(ends[static_cast<std::size_t>(i)].die, z)))
+                return false;
+            return true;
+          };
           while (true)
             {
               if (static_cast<int>(result.history.size()) >= options.max_solves * static_cast<int>(n))
@@ -180,6 +187,10 @@ namespace rfm
                   x_new[i] = std::clamp(x_new[i], d.frame.s_min * (1 - 1e-3), d.frame.s_max * (1 - 1e-3));
                 }
               dx = x_new - x;
+              // The next step is below the tolerance: x, solved last, is the answer (without
+              // the solve that would only confirm it; outline_contact.cc stops one die alike).
+              if (solved_at_x && below_tolerance(dx))
+                return x;
               const auto z_new = zones_at(x_new, c_fixed);
               for (std::size_t d = 0; d < n; ++d)
                 if (!(z_new[d][1] - z_new[d][0] > 1e-3 * dies[d].extent))
@@ -190,11 +201,8 @@ namespace rfm
               if (dx.norm() > 0.0)
                 jac += ((k_new - k) - jac * dx) * dx.transpose() / dx.squaredNorm();
               x = x_new, k = k_new, z = z_new;
-              bool done = true;
-              for (Eigen::Index i = 0; i < n_x; ++i)
-                done = done && std::abs(dx[i]) < options.root_tolerance *
-                                                   half_width(ends[static_cast<std::size_t>(i)].die, z);
-              if (done)
+              solved_at_x = true;
+              if (below_tolerance(dx))
                 return x;
             }
         };
