@@ -219,24 +219,26 @@ namespace axisym
     return out;
   }
 
+  std::optional<Point> edge_traction(const Body &body, const OutlineEdge &e, const double t)
+  {
+    const PartCondition &c = body.conditions.at(e.part);
+    switch (c.kind)
+      {
+        case PartCondition::Kind::traction_free: return Point{0.0, 0.0};
+        case PartCondition::Kind::pressure:
+          {
+            const Point n = e.outward_normal_at(t);
+            return Point{-c.pressure * n.r, -c.pressure * n.z};
+          }
+        case PartCondition::Kind::traction: return Point{c.traction[0], c.traction[1]};
+        default: return std::nullopt;
+      }
+  }
+
   std::vector<Point> traction_jump_vertices(const Body &body)
   {
     const std::vector<OutlineEdge> &edges = body.outline.edges();
     const double tol = 1e-9 * body.outline.size();
-    using Kind = PartCondition::Kind;
-    // The traction on an edge at parameter t, or nothing for a part that is not a traction
-    // part.
-    auto traction = [&](const OutlineEdge &e, const double t) -> std::optional<Point> {
-      const PartCondition &c = body.conditions.at(e.part);
-      const Point n = e.outward_normal_at(t);
-      switch (c.kind)
-        {
-          case Kind::traction_free: return Point{0.0, 0.0};
-          case Kind::pressure: return Point{-c.pressure * n.r, -c.pressure * n.z};
-          case Kind::traction: return Point{c.traction[0], c.traction[1]};
-          default: return std::nullopt;
-        }
-    };
     std::vector<Point> out;
     for (std::size_t i = 0; i < edges.size(); ++i)
       {
@@ -244,7 +246,7 @@ namespace axisym
         const Point v = a.end;
         if (v.r <= tol || a.on_axis(tol) || b.on_axis(tol))
           continue;
-        const std::optional<Point> ta = traction(a, 1.0), tb = traction(b, 0.0);
+        const std::optional<Point> ta = edge_traction(body, a, 1.0), tb = edge_traction(body, b, 0.0);
         if (!ta || !tb)
           continue;
         const double scale = std::max(std::hypot(ta->r, ta->z), std::hypot(tb->r, tb->z));

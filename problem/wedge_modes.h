@@ -37,6 +37,7 @@
 #include <Eigen/Core>
 
 #include <complex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -119,6 +120,11 @@ namespace axisym
   /// (Re lambda < 1 for some exponent of its wedge), in the outline's order. Where a traction
   /// jumps at a vertex the particular field has logarithms this does not see (issue 24 item 4).
   std::vector<SingularVertex> singular_vertices(const Body &body, double poisson_ratio);
+
+  /// The traction [Pa] that a traction part (traction free, pressure, traction) prescribes on
+  /// edge e at its parameter t (a pressure p: -p n with n the outward normal there); nothing
+  /// for any other condition.
+  std::optional<Point> edge_traction(const Body &body, const OutlineEdge &e, double t);
 
   /// Every vertex of the outline off the axis between two traction parts (traction free,
   /// pressure, traction) whose tractions there no constant stress meets: with the faces'

@@ -1036,19 +1036,13 @@ namespace rfm
     const double tol = 1e-9 * body.outline.size();
     using Kind = axisym::PartCondition::Kind;
     auto load = [&](const axisym::OutlineEdge &e, const double t) -> std::optional<TractionJump::FaceLoad> {
-      const axisym::PartCondition &c = body.conditions.at(e.part);
-      const axisym::Point n = e.outward_normal_at(t);
-      switch (c.kind)
-        {
-          case Kind::traction_free:
-            return TractionJump::FaceLoad{{0.0, 0.0}, true};
-          case Kind::pressure:
-            return TractionJump::FaceLoad{{-c.pressure * n.r, -c.pressure * n.z}, true};
-          case Kind::traction:
-            return TractionJump::FaceLoad{c.traction, false};
-          default:
-            return std::nullopt;
-        }
+      const std::optional<axisym::Point> traction = axisym::edge_traction(body, e, t);
+      if (!traction)
+        return std::nullopt;
+      // A free face's or a pressure's traction turns with the normal on an arc; a fixed
+      // traction vector does not.
+      return TractionJump::FaceLoad{{traction->r, traction->z},
+                                    body.conditions.at(e.part).kind != Kind::traction};
     };
     // The vertices with a jump (v between edges i and i + 1), found with a provisional radius.
     const std::size_t n_edges = edges.size();
