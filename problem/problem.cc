@@ -180,6 +180,33 @@ namespace axisym
     return 0.0;
   }
 
+  double DieProfile::slope(const double s) const
+  {
+    switch (shape)
+      {
+        case Shape::paraboloid: return s / radius;
+        case Shape::flat_rounded: return s <= flat_radius ? 0.0 : (s - flat_radius) / edge_radius;
+        case Shape::flat: return 0.0;
+      }
+    return 0.0;
+  }
+
+  double DieProfile::curvature(const double s) const
+  {
+    switch (shape)
+      {
+        case Shape::paraboloid: return 1.0 / radius;
+        case Shape::flat_rounded: return s < flat_radius ? 0.0 : 1.0 / edge_radius;
+        case Shape::flat: return 0.0;
+      }
+    return 0.0;
+  }
+
+  std::vector<double> DieProfile::kinks() const
+  {
+    return shape == Shape::flat_rounded ? std::vector<double>{flat_radius} : std::vector<double>{};
+  }
+
   double DieProfile::extent() const
   {
     return shape == Shape::flat ? radius : std::numeric_limits<double>::infinity();

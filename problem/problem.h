@@ -43,6 +43,7 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -87,8 +88,17 @@ namespace axisym
 
     /// g0(s) [m] for s >= 0; +infinity beyond a flat punch's edge (no die surface there).
     double gap(double s) const;
+    /// g0'(s) and g0''(s) [1/m] for 0 <= s < extent() (at a kink: the values beyond it).
+    double slope(double s) const;
+    double curvature(double s) const;
+    /// The distances s > 0 where g0'' jumps (the rounded punch's flat radius; none for the
+    /// paraboloid), increasing: quadratures of g0 split there.
+    std::vector<double> kinks() const;
     /// Where the die's surface ends: the flat punch's radius; +infinity otherwise.
     double extent() const;
+    /// The die's surface ends at a sharp edge (finite extent): the zone is its face, and
+    /// the edge pressure is singular there.
+    bool sharp_edge() const { return std::isfinite(extent()); }
   };
   const char *to_string(DieProfile::Shape shape);
 
@@ -177,6 +187,9 @@ namespace axisym
     /// lies inside the part and not at the part's own end (the one rule of every solver).
     bool free_low_end(double s_lo) const { return s_lo > s_min + tolerance; }
     bool free_high_end(double s_hi) const { return s_hi < s_max - tolerance; }
+    /// The centre on the axis and the part across it (an end face): the die is an
+    /// axisymmetric punch, its zone a disc of radius s_max at most (half_space.h).
+    bool about_axis() const { return std::abs(center.r) <= tolerance && std::abs(tangent.z) <= 1e-12; }
     /// The signed distance s of x along the part from the centre [m].
     double coordinate(Point x) const
     {

@@ -160,25 +160,17 @@ namespace rfm
   /// falls like a square root at a free end), w = 1 / sqrt(1 - x^2) and the first kind T_j for
   /// a flat punch's sharp edge (p is infinite there: +infinity at |x| = 1). One free end takes
   /// the even degrees 0, 2, .., 2 (n_moments - 1) (p is even about the axis or a symmetry
-  /// edge), two free ends every degree up to that. A rounded flat punch about the axis (one
-  /// free end on an end face, c > b) takes X_0 = half_space_shape(b / c, x) instead of U_0:
-  /// its pressure peaks at the flat's end, where g0'' jumps and p has an x log x term that the
-  /// polynomials smooth out (measured on the finest FEM's p(s): that shape alone fits it to
-  /// 0.6 % of its peak, sqrt(1 - x^2) times even polynomials to 11 %, 3.8 % and 2.9 % with
-  /// 3, 6 and 9 terms). The b_j solve G b = m with the moments m_k
+  /// edge), two free ends every degree up to that. A die about the axis on an end face (one
+  /// free end, a smooth edge) takes X_0 = half_space::pressure_shape of its profile
+  /// (half_space.h) instead of U_0: the rounded flat punch's pressure peaks at the flat's end,
+  /// where g0'' jumps and p has an x log x term that the polynomials smooth out (measured on
+  /// the finest FEM's p(s): that shape alone fits it to 0.6 % of its peak, sqrt(1 - x^2) times
+  /// even polynomials to 11 %, 3.8 % and 2.9 % with 3, 6 and 9 terms); the paraboloid's is U_0
+  /// times a constant. The b_j solve G b = m with the moments m_k
   /// of OutlineModel::die_moments for test fields phi_k (the .cc file: die_force's for k = 0,
   /// so the pressure carries P exactly, and bumps of the zone next to it beyond) and
   /// G_kj = int_zone w X_j phi_k r ds. Precondition: model.ok() solved on `zone`,
   /// n_moments >= 1.
-  /// The half-space pressure of a rigid axisymmetric punch whose gap is 0 for r <= b and
-  /// (r - b)^2 / (2 rho) beyond, with a smooth edge at r = c (Sneddon's integral:
-  /// p(r) = E* / (pi rho) int_max(r, b)^c H'(t) / sqrt(t^2 - r^2) dt with
-  /// H'(t) = 2 sqrt(t^2 - b^2) - b arccos(b / t)), divided by sqrt(1 - x^2) and up to the
-  /// factor E* c / (pi rho): a function of x = r / c in [0, 1] and kink = b / c in (0, 1),
-  /// bounded, equal to H'(c) / c at x = 1 and to 2 for kink -> 0 (the paraboloid). Throws
-  /// std::invalid_argument outside those ranges.
-  double half_space_shape(double kink, double x);
-
   std::vector<double> consistent_die_pressure(const OutlineModel &model, const axisym::Problem &problem,
                                               const DieZone &zone, const std::vector<double> &s,
                                               int n_moments);

@@ -1,6 +1,7 @@
 // The consistent contact pressure of a die's zone on an outline part (outline_contact.h).
 #include "rfm/contact/outline_contact.h"
 
+#include "rfm/contact/half_space.h"
 #include "rfm/quadrature/quadrature.h"
 
 #include <Eigen/Dense>
@@ -13,28 +14,6 @@
 
 namespace rfm
 {
-  double half_space_shape(const double kink, const double x)
-  {
-    if (!(kink > 0.0 && kink < 1.0) || !(x >= 0.0 && x <= 1.0))
-      throw std::invalid_argument("half_space_shape: needs 0 < kink < 1 and 0 <= x <= 1");
-    // In units of c: H'(t) = 2 sqrt(t^2 - k^2) - k arccos(k / t) for t > k (0 below), and with
-    // t = sqrt(x^2 + w^2) the integral is int H'(t) / t dw over w0 = sqrt(max(x, k)^2 - x^2)
-    // to w1 = sqrt(1 - x^2); w = w0 + (w1 - w0) u^2 takes away the square root H' has at t = k.
-    const double lo = std::max(x, kink), w0 = std::sqrt(std::max(0.0, lo * lo - x * x)),
-                 w1 = std::sqrt(std::max(0.0, 1.0 - x * x));
-    static const GaussRule1D rule = gauss_legendre(48);
-    double integral = 0.0;
-    for (Eigen::Index i = 0; i < rule.nodes.size(); ++i)
-      {
-        const double u = 0.5 * (rule.nodes[i] + 1.0), w = w0 + (w1 - w0) * u * u;
-        const double t = std::sqrt(x * x + w * w);
-        const double dh = t > kink ? 2.0 * std::sqrt(t * t - kink * kink) - kink * std::acos(kink / t) : 0.0;
-        integral += 0.5 * rule.weights[i] * dh / t * 2.0 * u;
-      }
-    // Over sqrt(1 - x^2): (w1 - w0) / w1 is 1 beyond the kink (w0 = 0), where w1 may vanish.
-    return x >= kink ? integral : (w1 - w0) / w1 * integral;
-  }
-
   std::vector<double> consistent_die_pressure(const OutlineModel &model, const axisym::Problem &problem,
                                               const DieZone &zone, const std::vector<double> &s,
                                               const int n_moments)
@@ -42,8 +21,7 @@ namespace rfm
     if (n_moments < 1)
       throw std::invalid_argument("consistent_die_pressure: n_moments must be >= 1");
     const axisym::DieFrame frame = axisym::die_frame(*problem.body, zone.part);
-    const bool sharp =
-      problem.body->conditions.at(zone.part).die.profile.shape == axisym::DieProfile::Shape::flat;
+    const bool sharp = problem.body->conditions.at(zone.part).die.profile.sharp_edge();
     const bool two_ends = frame.runs_up() && frame.runs_down();
     // The zone's coordinate x(s): one free end x = |s| / h, two x = (s - mid) / h.
     const double mid = two_ends ? 0.5 * (zone.s_lo + zone.s_hi) : 0.0;
@@ -60,20 +38,25 @@ namespace rfm
       for (int m = 1; m < m_max; ++m)
         v[m + 1] = 2.0 * x * v[m] - v[m - 1];
     };
-    // A rounded flat punch on an end face about the axis (one free end, c > b): X_0 is the
-    // half-space pressure's shape of its profile instead of U_0 (half_space_shape above; it
-    // carries the peak at the flat's end, where g0'' jumps and p has an x log x term that the
-    // polynomials smooth out). The body's finite size adds a smooth part to it.
+    // A die about the axis on an end face (one free end): X_0 is the half-space pressure's
+    // shape of its profile (half_space.h) instead of U_0. For the rounded flat punch (c > b)
+    // it carries the peak at the flat's end, where g0'' jumps and p has an x log x term that
+    // the polynomials smooth out; for the paraboloid it is U_0 times 2 c / R (the same span).
+    // The body's finite size adds a smooth part to it. Not where the zone lies inside a flat
+    // (psi'(c) = 0: no smooth edge there).
     const axisym::DieProfile &profile = problem.body->conditions.at(zone.part).die.profile;
-    const bool on_axis = std::abs(frame.center.r) <= frame.tolerance && std::abs(frame.tangent.z) < 1e-12;
-    const bool kinked = !two_ends && on_axis && profile.shape == axisym::DieProfile::Shape::flat_rounded &&
-                        h > profile.flat_radius * (1.0 + 1e-9);
-    const double kink = kinked ? profile.flat_radius / h : 0.0;
+    const bool shaped = !two_ends && !sharp && frame.about_axis() && h > 0.0 &&
+                        half_space::psi_slope(profile, h) > 0.0;
+    std::vector<double> kinks;
+    if (shaped)
+      for (const double k : profile.kinks())
+        if (k < h * (1.0 - 1e-9))
+          kinks.push_back(k / h);
     std::vector<double> v;
     auto basis = [&](double x, std::vector<double> &values) {
       chebyshev(x, values);
-      if (kinked)
-        values[0] = half_space_shape(kink, x);
+      if (shaped)
+        values[0] = half_space::pressure_shape(profile, h, x);
     };
     // The test fields: V_0 = (1 - d / D) n (die_force's: m_0 = P / 2 pi), and for k >= 1 the
     // bumps (1 - x^2)^3 x^e of the zone (C2, zero at its ends and beyond; e = 2 (k - 1) with
@@ -124,11 +107,13 @@ namespace rfm
     // zone's side of the centre (one).
     const double side = two_ends || zone.s_hi > frame.tolerance ? 1.0 : -1.0;
     const double theta_a = two_ends ? -0.5 * M_PI : 0.0, theta_b = 0.5 * M_PI;
-    // (With the half-space shape, in two pieces split at its kink x = b / c.)
+    // (With the half-space shape, in pieces split at the profile's kinks x = k / c.)
     const GaussRule1D rule = gauss_legendre(2 * m_max + 24);
-    std::vector<std::array<double, 2>> pieces{{theta_a, theta_b}};
-    if (kinked)
-      pieces = {{theta_a, std::asin(kink)}, {std::asin(kink), theta_b}};
+    std::vector<std::array<double, 2>> pieces;
+    double theta_lo = theta_a;
+    for (const double k : kinks)
+      pieces.push_back({theta_lo, std::asin(k)}), theta_lo = std::asin(k);
+    pieces.push_back({theta_lo, theta_b});
     Eigen::MatrixXd g = Eigen::MatrixXd::Zero(n_phi, n_phi);
     for (const auto &[t0, t1] : pieces)
       for (Eigen::Index i = 0; i < rule.nodes.size(); ++i)
