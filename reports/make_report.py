@@ -1064,12 +1064,13 @@ def dies_section(dies, out_dir):
           "(`fem_reference/README.md`). The RFM's outline contact (`rfm/contact/outline_contact.h`: the "
           "edge modes in the frame of the zone's end, the zone's end where K vanishes, a force by "
           "the linearity in the indentation) runs at its defaults beside the FEM on Hertz (7.1), "
-          "the rounded flat punch (7.2), the sharp flat punch (7.3) and the paper's die written as "
-          "an outline (7.5), and searches two dies at once (7.6). Its pressure p(s) is the consistent reactions "
+          "the rounded flat punch (7.2), the sharp flat punch (7.3), the ring die at the FEM's zone "
+          "(7.4) and the paper's die written as an outline (7.5), and searches two dies at once (7.6). Its pressure p(s) is the consistent reactions "
           "(`rfm::consistent_die_pressure`: weak equilibrium against test fields of the zone); the "
           "error columns give max |p - p_FEM| over the FEM's points relative to the FEM's peak, for "
-          "p and for the trace -sigma_nn. The ring die's search (two free ends, 6 minutes at the "
-          "defaults) is not run here: its numbers are in the README.", ""]
+          "p and for the trace -sigma_nn. The ring die (7.4) is solved once, at the FEM's zone: "
+          "its own search of both ends takes eight solves of that size, beyond this report's time "
+          "(`rfm_solve verification/problems/ring_die_shaft.json` runs it).", ""]
     h = dies["hertz"]
     hz = h["hertz"]
     levels = sorted((k for k in h["fem"] if k.startswith("L")), key=lambda k: int(k[1:]))
@@ -1193,6 +1194,37 @@ def dies_section(dies, out_dir):
               f"Hertz for the ring's line load gives b = {g['plane_strain_hertz_half_width'] * 1e3:.6f} mm "
               "(the shaft's curvature and finite size enter at the per cent level).")
     md.append("")
+    rr = g.get("rfm")
+    if rr:
+        md.append(f"The RFM at its defaults (p = {rr['degree']}) on the whole shaft's FEM zone, one solve. "
+                  "K at each end says where the RFM would put that end: to first order an end moved by dc "
+                  "adds -A dc sqrt(pi / 2) to K where the pressure falls like A sqrt(c - s), and "
+                  "A = p_max sqrt(2 / h) for the elliptic pressure of a line contact of half-width h, "
+                  "so dc / h = -K / (A sqrt(pi / 2) h) (K < 0: the zone is too short there).")
+        md.append("")
+        md.append("| P [N] | P vs FEM | K low, high end [Pa m^1/2] | ends' offset from the FEM's, estimated | "
+                  "p(s) error | trace error | indicator | time [s] |")
+        md.append("|---|---|---|---|---|---|---|---|")
+        k = rr["edge_intensity"]
+        e = rr["end_offset_estimate_relative"]
+        md.append(f"| {rr['force']:.2f} | {rr['force_vs_fem']:+.2e} | {k[0]:.4g}, {k[1]:.4g} | "
+                  f"{e[0]:+.2e}, {e[1]:+.2e} | {rr['pressure_error_relative']:.3f} | "
+                  f"{rr['pressure_trace_error_relative']:.2f} | {rr['indicator']:.2e} | {rr['seconds']:.1f} |")
+        md.append("")
+        fig, ax = plt.subplots(figsize=(6.4, 4.2))
+        fp = sorted((q["s"], q["p"], q["p_trace"]) for q in g["fem_pressure"])
+        ax.plot([t[0] * 1e3 for t in fp], [t[1] / 1e6 for t in fp], "o", ms=3,
+                label=f"FEM L = {g['level']}: penalty pressure")
+        ax.plot([t[0] * 1e3 for t in fp], [t[2] / 1e6 for t in fp], ".", ms=2, alpha=0.5,
+                label="FEM trace -sigma_nn")
+        rp = sorted((q["s"], q["p"]) for q in rr["pressure"] if q["p"] is not None)
+        ax.plot([t[0] * 1e3 for t in rp], [t[1] / 1e6 for t in rp], "-", color="tab:red", lw=1.5,
+                label=f"RFM p = {rr['degree']}: consistent pressure (FEM's zone)")
+        lo, hi = g["whole"]["zone"]
+        ax.set_xlim(1.4 * lo * 1e3, 1.4 * hi * 1e3)
+        decorate(ax, "distance from the die's centre along the shaft s [mm]", "p [MPa]",
+                 "Ring die on a shaft (whole): contact pressure")
+        md += [f"![ring]({save(fig, out_dir, 'die_ring_pressure.png')})", ""]
     o = dies.get("paper_die_outline")
     if o:
         md.append(f"### 7.5 The paper's die written as an outline (`{o['problem_file']}`)")

@@ -31,7 +31,7 @@ namespace rfm
         field + " = \"" + problem.contact.method + "\": it searches a zone with one free end, and " +
         "the die on part " + part + " has two (its centre is inside the part, not on the axis or a " +
         "symmetry edge); use \"edge-intensity\" (the default) or \"fixed\"");
-    if (die.profile.shape == axisym::DieProfile::Shape::flat)
+    if (die.profile.sharp_edge())
       throw axisym::InputError(field + " = \"" + problem.contact.method +
                                "\": a flat punch with a sharp edge (boundary." + part +
                                ".die.profile.shape = \"flat\") has its face as the zone; use "

@@ -27,7 +27,7 @@ namespace rfm
     const axisym::DieCondition &die = problem.body->conditions.at(part).die;
     const bool up = f.runs_up(), down = f.runs_down(), two_ends = up && down;
     const axisym::DieProfile &profile = die.profile;
-    const bool flat = profile.shape == axisym::DieProfile::Shape::flat;
+    const bool flat = profile.sharp_edge();
     // The extent: the part's length from the centre on the free side(s).
     const double extent = two_ends ? std::min(f.s_max, -f.s_min) : (up ? f.s_max : -f.s_min);
     auto zone_of = [&](const double c) {

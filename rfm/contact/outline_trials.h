@@ -54,7 +54,7 @@ namespace rfm::outline_trials
           d.up = d.frame.runs_up(), d.down = d.frame.runs_down();
           d.extent = d.up && d.down ? std::min(d.frame.s_max, -d.frame.s_min)
                                     : (d.up ? d.frame.s_max : -d.frame.s_min);
-          d.flat = d.die->profile.shape == axisym::DieProfile::Shape::flat;
+          d.flat = d.die->profile.sharp_edge();
           out.push_back(d);
         }
       return out;
