@@ -7,7 +7,10 @@
 //
 // Method ("edge-intensity", the default of contact.method): from where the die's surface
 // reaches the undeformed part (g0(c) = delta: the zone of the overlapping shapes, above the
-// true one), steps by a factor 1 + 2 first_step in the direction K asks for until K changes
+// true one; a die about the axis on an end face: from the contact radius of the half-space
+// punch of its profile, half_space.h, with a first step of 1 %, three solves on Hertz and on
+// the rounded punch instead of eight and nine), steps by a factor 1 + 2 first_step in the
+// direction K asks for until K changes
 // sign, each step after the first to the secant's root and a tenth beyond (a bracket), then the
 // Illinois method until the bracket or its next step is below root_tolerance times c. A root
 // not bracketed inside the part is a numerical failure. A zone with two free ends (the centre
@@ -23,7 +26,8 @@
 // in delta, so the force, the intensities and the fields are affine in delta. Two solves at
 // delta_a = 0 and delta_b (the gap at the zone's end) give delta = delta_a + (P* - P_a) (delta_b
 // - delta_a) / (P_b - P_a) and the intensities there: no outer iteration. The search starts
-// from a zone of a tenth of the part, takes delta there, and then the zone of g0 = delta; the
+// (unless the half-space gives its first zone) from a zone of a tenth of the part, takes
+// delta there, and then the zone of g0 = delta; the
 // zone found is solved once more at its delta for the fields and functionals (the history's
 // functionals of force-controlled steps are null: they are quadratic in delta).
 //
