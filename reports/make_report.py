@@ -1200,7 +1200,8 @@ def dies_section(dies, out_dir):
                   "K at each end says where the RFM would put that end: to first order an end moved by dc "
                   "adds -A dc sqrt(pi / 2) to K where the pressure falls like A sqrt(c - s), and "
                   "A = p_max sqrt(2 / h) for the elliptic pressure of a line contact of half-width h, "
-                  "so dc / h = -K / (A sqrt(pi / 2) h) (K < 0: the zone is too short there).")
+                  "so dc / h = -K / (A sqrt(pi / 2) h) (K < 0: the zone is too short there; a positive offset "
+                  "is an end the RFM would put farther out than the FEM's).")
         md.append("")
         md.append("| P [N] | P vs FEM | K low, high end [Pa m^1/2] | ends' offset from the FEM's, estimated | "
                   "p(s) error | trace error | indicator | time [s] |")
