@@ -192,30 +192,42 @@ namespace axisym
       }
   }
 
+  namespace
+  {
+    /// f(a, b) for every vertex of the outline off the axis, where edge a ends and edge b
+    /// starts (neither of them on the axis).
+    template <typename F>
+    void for_each_vertex_off_axis(const Body &body, const F &f)
+    {
+      const std::vector<OutlineEdge> &edges = body.outline.edges();
+      const double tol = 1e-9 * body.outline.size();
+      for (std::size_t i = 0; i < edges.size(); ++i)
+        {
+          const OutlineEdge &a = edges[i], &b = edges[(i + 1) % edges.size()];
+          if (!(a.end.r <= tol || a.on_axis(tol) || b.on_axis(tol)))
+            f(a, b);
+        }
+    }
+  } // namespace
+
   std::vector<SingularVertex> singular_vertices(const Body &body, const double poisson_ratio)
   {
-    const std::vector<OutlineEdge> &edges = body.outline.edges();
-    const double tol = 1e-9 * body.outline.size();
     std::vector<SingularVertex> out;
-    for (std::size_t i = 0; i < edges.size(); ++i)
-      {
-        const OutlineEdge &a = edges[i], &b = edges[(i + 1) % edges.size()];
+    for_each_vertex_off_axis(body, [&](const OutlineEdge &a, const OutlineEdge &b) {
         const Point v = a.end;
-        if (v.r <= tol || a.on_axis(tol) || b.on_axis(tol))
-          continue;
         const Point ta = a.tangent_at(1.0), tb = b.tangent_at(0.0);
         // The turn from a to b (+ to the left); outlines run counter-clockwise with the body on
         // the left (the parser's rule), so the interior angle is pi minus the turn.
         const double turn = std::atan2(ta.r * tb.z - ta.z * tb.r, ta.r * tb.r + ta.z * tb.z);
         const double angle = pi - turn;
         if (!(angle > 1e-9))
-          continue; // a cusp: no wedge
+          return; // a cusp: no wedge
         const PartCondition &ca = body.conditions.at(a.part), &cb = body.conditions.at(b.part);
         const Wedge w(angle, wedge_face(ca), wedge_face(cb), poisson_ratio);
         std::vector<WedgeMode> modes = w.modes(0.999);
         if (!modes.empty())
           out.push_back({v, angle, a.part, b.part, std::move(modes)});
-      }
+      });
     return out;
   }
 
@@ -237,29 +249,22 @@ namespace axisym
 
   std::vector<Point> traction_jump_vertices(const Body &body)
   {
-    const std::vector<OutlineEdge> &edges = body.outline.edges();
-    const double tol = 1e-9 * body.outline.size();
     std::vector<Point> out;
-    for (std::size_t i = 0; i < edges.size(); ++i)
-      {
-        const OutlineEdge &a = edges[i], &b = edges[(i + 1) % edges.size()];
-        const Point v = a.end;
-        if (v.r <= tol || a.on_axis(tol) || b.on_axis(tol))
-          continue;
+    for_each_vertex_off_axis(body, [&](const OutlineEdge &a, const OutlineEdge &b) {
         const std::optional<Point> ta = edge_traction(body, a, 1.0), tb = edge_traction(body, b, 0.0);
         if (!ta || !tb)
-          continue;
+          return;
         const double scale = std::max(std::hypot(ta->r, ta->z), std::hypot(tb->r, tb->z));
         if (!(scale > 0.0))
-          continue;
+          return;
         const Point na = a.outward_normal_at(1.0), nb = b.outward_normal_at(0.0);
         const bool straight = std::abs(na.r * nb.z - na.z * nb.r) < 1e-9 && na.r * nb.r + na.z * nb.z > 0.0;
         const bool jump = straight ? std::hypot(ta->r - tb->r, ta->z - tb->z) > 1e-9 * scale
                                    : std::abs(nb.r * ta->r + nb.z * ta->z - na.r * tb->r - na.z * tb->z) >
                                        1e-9 * scale;
         if (jump)
-          out.push_back(v);
-      }
+          out.push_back(a.end);
+      });
     return out;
   }
 } // namespace axisym

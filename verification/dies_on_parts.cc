@@ -148,6 +148,16 @@ namespace
     return out;
   }
 
+  /// The largest p of a pressure profile (rfm_profile's; null at a sharp edge).
+  double profile_peak(const nlohmann::json &profile)
+  {
+    double peak = 0;
+    for (const nlohmann::json &q : profile)
+      if (q["p"].is_number())
+        peak = std::max(peak, q["p"].get<double>());
+    return peak;
+  }
+
   /// The RFM on a die of one free end at the defaults: in quick mode at the FEM's zone (c_fem,
   /// by the problem's indentation or force: P or delta against the FEM's, p(s) against the
   /// FEM's p; 3 s), in full mode its own zone search (c, P, delta against the FEM's; 16-20 s).
@@ -181,11 +191,7 @@ namespace
                   {"solves", r.history.size()},
                   {"seconds", seconds},
                   {"pressure", rfm_profile(*r.model, problem, r.zone)}};
-      double peak = 0;
-      for (const nlohmann::json &q : out[key]["pressure"])
-        if (q["p"].is_number())
-          peak = std::max(peak, q["p"].get<double>());
-      out[key]["peak_pressure"] = peak;
+      out[key]["peak_pressure"] = profile_peak(out[key]["pressure"]);
       fmt::print("           {:>10} {:>13.6e} {:>10.2e} {:>12.6e} {:>10.2e} {:>9.2e} {:>9.2e} {:>9.2e} {:>8.2f}\n",
                  key, c, c / c_fem - 1, force, force / fem.force - 1,
                  r.zone.indentation / fem.indentation - 1, p_err, trace_err, seconds);
@@ -433,10 +439,7 @@ nlohmann::json run(const verification::DriverContext &context)
         const double force = r.model->die_force("side").domain;
         const auto [p_err, trace_err] = pressure_errors(*r.model, whole, r.zone, *fw.contact);
         const nlohmann::json pressure = rfm_profile(*r.model, whole, r.zone);
-        double p_max = 0;
-        for (const nlohmann::json &q : pressure)
-          if (q["p"].is_number())
-            p_max = std::max(p_max, q["p"].get<double>());
+        const double p_max = profile_peak(pressure);
         const double h = 0.5 * (hi - lo), slope = p_max * std::sqrt(2 / h) * std::sqrt(pi / 2);
         const double k_lo = r.model->edge_intensity(0), k_hi = r.model->edge_intensity(1);
         c["rfm"] = {{"degree", whole.rfm.degree},
