@@ -253,8 +253,8 @@ nlohmann::json run(const verification::DriverContext &context)
   results["grooved_shaft"] =
     full ? shaft("filleted_groove_shaft_tension.json", {12, 14, 16, 18, 20, 22}, {0, 1, 2})
          : shaft("filleted_groove_shaft_tension.json", {18, 20}, {0, 1});
-  // The sharp lip: p = 24 is 13 s; the indicator there is 1.4e-4 (28: 1.7e-5, 32: 1.9e-6, 36:
-  // 1.9e-7, measured outside the report in 34 to 190 s a solve).
+  // The sharp lip: p = 24 takes 10 s; the indicator there is 1.4e-4 (28: 1.7e-5, 32: 1.9e-6,
+  // 36: 1.9e-7, measured outside the report; 92 and 190 s a solve at 32 and 36).
   if (full)
     results["sharp_groove_shaft"] = shaft("grooved_shaft_tension.json", {16, 20, 24}, {2, 3});
   return results;
