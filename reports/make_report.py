@@ -80,6 +80,12 @@ def decorate(ax, xlabel, ylabel, title=None, legend_size=8):
     ax.legend(fontsize=legend_size)
 
 
+def numbered(d, prefix):
+    """The keys of d that are prefix and a number ("p12", "L3"), in the numbers' order."""
+    return sorted((k for k in d if k.startswith(prefix) and k[len(prefix):].isdigit()),
+                  key=lambda k: int(k[len(prefix):]))
+
+
 def degrees_of(case):
     rows = sorted(case["degrees"].values(), key=lambda d: d["degree"])
     return rows
@@ -787,7 +793,7 @@ def fem_error_rows(fem, first_header):
     md = [f"| {first_header} | DoFs | L2 stress err | observed order | max stress err | time [s] |",
           "|---|---|---|---|---|---|"]
     prev = None
-    for k in sorted([k for k in fem if k.startswith("L")], key=lambda k: int(k[1:])):
+    for k in numbered(fem, "L"):
         r = fem[k]
         order = "" if prev is None else f"{np.log2(prev / r['l2_error_relative']):.2f}"
         md.append(f"| {k[1:]} | {r['dofs']} | {r['l2_error_relative']:.3e} | {order} | "
@@ -888,8 +894,8 @@ def bodies_section(bor, out_dir):
 
     def axis_text(case):
         # sigma_zz on the axis in the notch plane: the RFM's last degree against the FEM's finest level.
-        p_last = max((k for k in case["rfm"] if k.startswith("p")), key=lambda k: int(k[1:]))
-        levels = sorted((k for k in case["fem"] if k.startswith("L")), key=lambda k: int(k[1:]))
+        p_last = numbered(case["rfm"], "p")[-1]
+        levels = numbered(case["fem"], "L")
         r, f, f0 = case["rfm"][p_last], case["fem"][levels[-1]], case["fem"][levels[-2]]
         if "axis_stress_relative" not in r or "axis_stress_relative" not in f:
             return ""
@@ -932,9 +938,9 @@ def bodies_section(bor, out_dir):
         md.append("")
         md += shaft_rows(sg)
         md.append("")
-        sg_ps = sorted(int(k[1:]) for k in sg["rfm"] if k.startswith("p"))
+        sg_ps = [int(k[1:]) for k in numbered(sg["rfm"], "p")]
         sg_falls = [1 / indicator_factor(sg["rfm"], a, b) for a, b in zip(sg_ps, sg_ps[1:])]
-        sg_ls = sorted(int(k[1:]) for k in sg["fem"] if k.startswith("L"))
+        sg_ls = [int(k[1:]) for k in numbered(sg["fem"], "L")]
         e_fem = sg["fem"][f"L{sg_ls[-1]}"]["reissner"]
         e_rfm = sg["rfm"][f"p{sg_ps[-1]}"]["reissner"]
         md.append(f"The RFM converges here, but slowly: its indicator falls by a factor of "
@@ -1106,7 +1112,7 @@ def dies_section(dies, out_dir):
           "(`rfm_solve verification/problems/ring_die_shaft.json` runs it).", ""]
     h = dies["hertz"]
     hz = h["hertz"]
-    levels = sorted((k for k in h["fem"] if k.startswith("L")), key=lambda k: int(k[1:]))
+    levels = numbered(h["fem"], "L")
     md.append(f"### 7.1 Hertz: a paraboloid pressed by a force on the end face of a solid cylinder "
               f"(`{h['problem_file']}`)")
     md.append("")
@@ -1146,7 +1152,7 @@ def dies_section(dies, out_dir):
 
     def punch(key, title, extra):
         c = dies[key]
-        lv = sorted((k for k in c["fem"] if k.startswith("L")), key=lambda k: int(k[1:]))
+        lv = numbered(c["fem"], "L")
         out = [f"### {title} (`{c['problem_file']}`)", ""] + extra + [
             "| L | DoFs | c [mm] | P [N] | p(0) [MPa] | time [s] |", "|---|---|---|---|---|---|"]
         for k in lv:
@@ -1270,7 +1276,7 @@ def dies_section(dies, out_dir):
         md.append("")
         md.append("| p | c outline [m] | P outline [N] | solves | time [s] | c rectangle [m] | P rectangle / 2 [N] | time [s] |")
         md.append("|---|---|---|---|---|---|---|---|")
-        for k in sorted((k for k in o["rfm"] if k.startswith("p")), key=lambda k: int(k[1:])):
+        for k in numbered(o["rfm"], "p"):
             r = o["rfm"][k]
             md.append(f"| {k[1:]} | {r['outline_half_width']:.7f} | {r['outline_force']:.2f} | "
                       f"{r['outline_solves']} | {r['outline_seconds']:.2f} | {r['rectangle_half_width']:.7f} | "
@@ -1296,7 +1302,7 @@ def dies_section(dies, out_dir):
         md.append("")
         md.append("| solver | c bottom [mm] | c top [mm] | P bottom [N] | P top [N] | c vs FEM | P vs FEM | solves | time [s] |")
         md.append("|---|---|---|---|---|---|---|---|---|")
-        for k in sorted((k for k in t["fem"] if k.startswith("L")), key=lambda k: int(k[1:])):
+        for k in numbered(t["fem"], "L"):
             f = t["fem"][k]
             md.append(f"| FEM {k} ({f['dofs']} DoFs) | {f['half_width_bottom'] * 1e3:.6f} | "
                       f"{f['half_width_top'] * 1e3:.6f} | {f['force_bottom']:.1f} | {f['force_top']:.1f} | | | | "
@@ -1363,7 +1369,7 @@ def corners_section(corners, out_dir):
         md.append("| solver | Phi_R [J/rad] | vs FEM limit | indicator | samples vs FEM | "
                   + ("axis vs FEM | " if axis else "") + "K_1 | K vs FEM | time [s] |")
         md.append("|---|---|---|---|---|" + ("---|" if axis else "") + "---|---|---|")
-        for lk in sorted((k for k in f if k.startswith("L")), key=lambda k: int(k[1:])):
+        for lk in numbered(f, "L"):
             row = f[lk]
             rel = abs(row["reissner"] - f["extrapolated_energy"]) / abs(f["extrapolated_energy"])
             md.append(f"| FEM Q2 {lk} ({row['dofs']} DoFs) | {row['reissner']:.10e} | {rel:.1e} | | | "
@@ -1382,7 +1388,7 @@ def corners_section(corners, out_dir):
                     cells)
         md.append("")
         if axis:
-            last = max((k for k in c["rfm"] if k.startswith("p")), key=lambda k: int(k[1:]))
+            last = numbered(c["rfm"], "p")[-1]
             r = c["rfm"][last]
             md.append(f"At p = {last[1:]} the intensities are {r['intensity_error_relative']:.1e} from the FEM's "
                       f"(issue 24 asks 1 %), Phi_R {r['energy_error_relative']:.1e} from its limit (the issue asks "
@@ -1447,10 +1453,10 @@ def traction_jump_rows(corners, out_dir):
                   f"(observed order {f['observed_order_energy']:.2f}; the finest level {f['estimated_error_relative']:.1e} "
                   "from it).")
         md.append("")
-        points = [f"({x['r']:g}, {x['z']:g})" for x in f[max((k for k in f if k.startswith('L')), key=lambda k: int(k[1:]))]["samples"]]
+        points = [f"({x['r']:g}, {x['z']:g})" for x in f[numbered(f, 'L')[-1]]["samples"]]
         md.append("| solver | Phi_R [J/rad] | vs FEM limit | indicator | " + " | ".join(points) + " | time [s] |")
         md.append("|---|---|---|---|" + "---|" * len(points) + "---|")
-        for lk in sorted((k for k in f if k.startswith("L")), key=lambda k: int(k[1:])):
+        for lk in numbered(f, "L"):
             row = f[lk]
             rel = abs(row["reissner"] - f["extrapolated_energy"]) / abs(f["extrapolated_energy"])
             md.append(f"| FEM Q2 {lk} ({row['dofs']} DoFs) | {row['reissner']:.10e} | {rel:.1e} | | "

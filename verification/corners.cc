@@ -182,6 +182,7 @@ namespace
     }
     const double scale = largest_component(fem_samples);
     const auto [r, z] = sample_points(problem);
+    const bool on_axis = (r.array() == 0.0).any();
     for (const bool enriched : {true, false})
       {
         const std::string key = enriched ? "rfm" : "rfm_without_vertex_columns";
@@ -202,7 +203,6 @@ namespace
               }
             sample_error /= scale;
             axis_error /= scale;
-            const bool on_axis = (r.array() == 0.0).any();
             const double seconds = m.assembly_seconds() + m.solve_seconds();
             const double energy_error = std::abs(f.reissner - limit) / std::abs(limit);
             // The intensities against the finest FEM level's, each relative to its own K.
