@@ -106,6 +106,11 @@ namespace axisym
     /// The vertex's smooth stress-only columns: the cutoff times the monomials up to this
     /// degree times the tensors that meet both faces' conditions (-1: none).
     int vertex_local_degree = 4;
+    /// Axis parity (rfm/outline_model.h, issue 24 item 5): on a rectangular section on the
+    /// axis, coordinate functions in (r^2, z) and structures even in r, so that values on the
+    /// axis converge like the rest. Used where OutlineModel::axis_parity_obstacle finds
+    /// nothing against it; false: never (the plain polynomials in r, as before).
+    bool axis_parity = true;
     /// Local resolution near a die's zone (rfm/spaces/local_basis.h): nested boxes of half sizes
     /// local_first_box c, twice that, ... up to local_max_box times the section's extent
     /// along the die's part (c the zone's extent from its centre), each with the tensor

@@ -430,7 +430,10 @@ namespace
       {"dropped_directions", {model->n_dropped_directions()[0], model->n_dropped_directions()[1]}},
       {"quadrature_points", model->n_quadrature_points()},
       {"section", "the outline as given (no mirroring)"},
+      {"axis_parity", model->axis_parity()},
       {"degree_policy", target_indicator ? "tolerance" : "fixed"}};
+    if (!model->axis_parity())
+      result["discretization"]["axis_parity_obstacle"] = model->axis_parity_obstacle();
     if (sequence)
       record_sequence(result["discretization"], *target_indicator, sequence->steps);
     result["timing"] = {{"assembly_s", model->assembly_seconds()},

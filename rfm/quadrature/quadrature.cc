@@ -235,9 +235,10 @@ namespace rfm
   }
 
   Quadrature2D tensor_gauss(const std::vector<double> &r_cells,
-                            const std::vector<double> &z_cells, const int n_points)
+                            const std::vector<double> &z_cells, const int n_points,
+                            const int n_points_r)
   {
-    const GaussRule1D rr = gauss_on_cells(r_cells, n_points);
+    const GaussRule1D rr = gauss_on_cells(r_cells, n_points_r > 0 ? n_points_r : n_points);
     const GaussRule1D zz = gauss_on_cells(z_cells, n_points);
     Quadrature2D q;
     const Eigen::Index n = rr.nodes.size() * zz.nodes.size();

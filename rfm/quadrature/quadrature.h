@@ -50,9 +50,10 @@ namespace rfm
   };
 
   /// Tensor-product Gauss rule with n_points x n_points points on every cell of the
-  /// grid r_cells x z_cells (cell ends as returned by graded_partition).
+  /// grid r_cells x z_cells (cell ends as returned by graded_partition); n_points_r > 0:
+  /// that many in r instead.
   Quadrature2D tensor_gauss(const std::vector<double> &r_cells,
-                            const std::vector<double> &z_cells, int n_points);
+                            const std::vector<double> &z_cells, int n_points, int n_points_r = 0);
 
   /// Gauss rule on the cells of a 1-D partition: nodes and plain length weights.
   /// A cell with an end at one of `sqrt_points` is mapped by x = x_s + (x_o - x_s) t^2,

@@ -14,19 +14,24 @@ namespace rfm
                                                  const double z_min, const double z_max,
                                                  const Eigen::Ref<const Eigen::VectorXd> &r,
                                                  const Eigen::Ref<const Eigen::VectorXd> &z,
-                                                 const Eigen::Ref<const Eigen::VectorXd> &w)
+                                                 const Eigen::Ref<const Eigen::VectorXd> &w,
+                                                 const bool even_in_r)
     : degree_r_(degree_r)
     , degree_z_(degree_z)
     , r_mid_(0.5 * (r_min + r_max))
     , r_scale_(2.0 / (r_max - r_min))
     , z_mid_(0.5 * (z_min + z_max))
     , z_scale_(2.0 / (z_max - z_min))
+    , even_r_(even_in_r)
+    , r_max_(r_max)
   {
     const Eigen::Index n = r.size(), n_f = n_basis_functions();
     if (degree_r < 0 || degree_z < 0 || !(r_max > r_min) || !(z_max > z_min) || z.size() != n ||
-        w.size() != n || n < n_f)
+        w.size() != n || n < n_f || (even_in_r && r_min != 0.0))
       throw std::invalid_argument("SectionPolynomialBasis: bad degrees, box or sample points");
-    const Eigen::ArrayXd xi = (r.array() - r_mid_) * r_scale_, eta = (z.array() - z_mid_) * z_scale_;
+    const Eigen::ArrayXd xi = even_r_ ? Eigen::ArrayXd(2.0 * (r.array() / r_max_).square() - 1.0)
+                                      : Eigen::ArrayXd((r.array() - r_mid_) * r_scale_),
+                         eta = (z.array() - z_mid_) * z_scale_;
     // Weighted values sqrt(w) q_k at the samples: the Gram-Schmidt inner products are dot
     // products of these columns.
     Eigen::MatrixXd qw(n, n_f);
@@ -105,8 +110,9 @@ namespace rfm
                                                           const Eigen::Ref<const Eigen::VectorXd> &z,
                                                           const Eigen::Ref<const Eigen::VectorXd> &w) const
   {
-    if (sub.degree_r_ > degree_r_ || sub.degree_z_ > degree_z_)
-      throw std::invalid_argument("SectionPolynomialBasis::coefficients_of: the sub-basis has a higher degree");
+    if (sub.degree_r_ > degree_r_ || sub.degree_z_ > degree_z_ || sub.even_r_ != even_r_)
+      throw std::invalid_argument("SectionPolynomialBasis::coefficients_of: the sub-basis has a "
+                                  "higher degree or the other parity");
     const Eigen::VectorXd sw = w.cwiseSqrt();
     const Eigen::MatrixXd a = sw.asDiagonal() * evaluate(r, z, false).value;
     const Eigen::MatrixXd b = sw.asDiagonal() * sub.evaluate(r, z, false).value;
@@ -140,7 +146,12 @@ namespace rfm
     for (Eigen::Index start = 0; start < n; start += chunk)
       {
         const Eigen::Index m = std::min(chunk, n - start);
-        const Array xi = (r.segment(start, m).cast<T>().array() - T(r_mid_)) * T(r_scale_),
+        // xi and its derivative d xi / dr.
+        const Array rs = r.segment(start, m).cast<T>().array();
+        const Array xi = even_r_ ? Array(T(2) * (rs / T(r_max_)).square() - T(1))
+                                 : Array((rs - T(r_mid_)) * T(r_scale_)),
+                    xi_r = even_r_ ? Array(T(4) / (T(r_max_) * T(r_max_)) * rs)
+                                   : Array(Array::Constant(m, T(r_scale_))),
                     eta = (z.segment(start, m).cast<T>().array() - T(z_mid_)) * T(z_scale_);
         auto v = q.topRows(m);
         v.col(0).setConstant(T(q0_));
@@ -154,7 +165,7 @@ namespace rfm
             if (derivatives)
               {
                 auto vr = q_r.topRows(m), vz = q_z.topRows(m);
-                vr.col(k) = (xi * vr.col(k - 1).array()).matrix() + T(r_scale_) * v.col(k - 1);
+                vr.col(k) = (xi * vr.col(k - 1).array() + xi_r * v.col(k - 1).array()).matrix();
                 vz.col(k) = (xi * vz.col(k - 1).array()).matrix();
                 vr.col(k) = (vr.col(k) - vr.leftCols(k) * hk) * inv;
                 vz.col(k) = (vz.col(k) - vz.leftCols(k) * hk) * inv;

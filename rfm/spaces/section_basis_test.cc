@@ -13,7 +13,10 @@
 
 #include <Eigen/QR>
 
+#include <array>
+#include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <vector>
 
 namespace
@@ -169,4 +172,61 @@ TEST(SectionBasis, LoweredBasisIsRebuiltExactlyFromTheFullOne)
         }
       }
     }
+}
+
+// Even in r (axis parity): on the rectangle [0, 0.2] x [0, 0.1], the basis of degree (3, 2)
+// in (r^2, z) is orthonormal at its samples, spans the monomials r^(2i) z^j (i <= 3, j <= 2)
+// with the derivatives of the same fit, and not r (odd) nor r^8 (degree 4 in r^2).
+TEST(SectionBasis, EvenInRSpansThePolynomialsInRSquared)
+{
+  const axisym::Outline outline = axisym::parse_problem(nlohmann::json::parse(R"({
+      "geometry": {"outline": [{"start": [0.0, 0.0]}, {"line_to": [0.2, 0.0], "part": "bottom"},
+        {"line_to": [0.2, 0.1], "part": "outer"}, {"line_to": [0.0, 0.1], "part": "top"},
+        {"line_to": [0.0, 0.0], "part": "axis"}]},
+      "boundary": {"bottom": {"symmetry": true}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})")).body->outline;
+  rfm::SectionQuadratureOptions qo;
+  qo.n_points = 8;
+  const rfm::Quadrature2D s = rfm::section_gauss(outline, qo);
+  const Eigen::VectorXd w = s.weights.cwiseProduct(s.r);
+  const rfm::SectionPolynomialBasis basis(3, 2, 0.0, 0.2, 0.0, 0.1, s.r, s.z, w, true);
+  EXPECT_TRUE(basis.even_in_r());
+  EXPECT_EQ(basis.n_basis_functions(), 12);
+  const rfm::BasisValues v = basis.evaluate(s.r, s.z);
+  const Eigen::MatrixXd g = v.value.transpose() * w.asDiagonal() * v.value;
+  EXPECT_LT((g - Eigen::MatrixXd::Identity(12, 12)).cwiseAbs().maxCoeff(), 1e-12);
+  const Eigen::VectorXd sw = w.cwiseSqrt();
+  const auto qr = (sw.asDiagonal() * v.value).householderQr();
+  // The weighted least-squares residual of f, relative; with its derivatives from the fit.
+  auto fit = [&](auto f, auto f_r, auto f_z) {
+    Eigen::VectorXd y(s.r.size()), y_r(s.r.size()), y_z(s.r.size());
+    for (Eigen::Index k = 0; k < y.size(); ++k)
+      y[k] = f(s.r[k], s.z[k]), y_r[k] = f_r(s.r[k], s.z[k]), y_z[k] = f_z(s.r[k], s.z[k]);
+    const Eigen::VectorXd c = qr.solve(sw.asDiagonal() * y);
+    return std::array<double, 3>{(v.value * c - y).norm() / y.norm(),
+                                 (v.d_r * c - y_r).norm() / std::max(y_r.norm(), 1e-300),
+                                 (v.d_z * c - y_z).norm() / std::max(y_z.norm(), 1e-300)};
+  };
+  for (int i = 0; i <= 3; ++i)
+    for (int j = 0; j <= 2; ++j)
+      {
+        const auto res = fit([&](double r, double z) { return std::pow(r, 2 * i) * std::pow(z, j); },
+                             [&](double r, double z) {
+                               return i == 0 ? 0.0 : 2 * i * std::pow(r, 2 * i - 1) * std::pow(z, j);
+                             },
+                             [&](double r, double z) {
+                               return j == 0 ? 0.0 : std::pow(r, 2 * i) * j * std::pow(z, j - 1);
+                             });
+        EXPECT_LT(res[0], 1e-12) << i << " " << j;
+        if (i > 0)
+          EXPECT_LT(res[1], 1e-10) << i << " " << j;
+        if (j > 0)
+          EXPECT_LT(res[2], 1e-10) << i << " " << j;
+      }
+  auto zero = [](double, double) { return 0.0; };
+  EXPECT_GT(fit([](double r, double) { return r; }, zero, zero)[0], 1e-3);
+  EXPECT_GT(fit([](double r, double) { return std::pow(r, 8); }, zero, zero)[0], 1e-3);
+  // Not on a box off the axis.
+  EXPECT_THROW(rfm::SectionPolynomialBasis(3, 2, 0.01, 0.2, 0.0, 0.1, s.r, s.z, w, true),
+               std::invalid_argument);
 }

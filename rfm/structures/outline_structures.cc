@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace rfm
 {
@@ -55,15 +56,20 @@ namespace rfm
   } // namespace
 
   // 1. Edge omegas.
-  EdgeOmega::EdgeOmega(const axisym::Outline &outline, const int edge, const bool one_sided)
+  EdgeOmega::EdgeOmega(const axisym::Outline &outline, const int edge, const bool one_sided,
+                       const bool even_in_r)
     : edge_(outline.edges().at(edge))
+    , even_(even_in_r)
   {
+    if (even_ && (edge_.kind != OutlineEdge::Kind::line || one_sided))
+      throw std::invalid_argument("EdgeOmega: even in r for a line along r or z only");
     const bool arc = edge_.kind == OutlineEdge::Kind::arc;
     sign_ = arc && edge_.sweep() < 0 ? -1.0 : 1.0;
     {
       const axisym::Point d = minus(edge_.end, edge_.start);
       const double length = std::sqrt(dot(d, d));
       const axisym::BoundingBox b = outline.bounding_box();
+      r_box_max_ = b.r_max;
       s_min_ = std::numeric_limits<double>::infinity();
       s_max_ = -s_min_;
       for (const axisym::Point corner :
@@ -147,6 +153,12 @@ namespace rfm
     if (edge_.kind == OutlineEdge::Kind::line)
       {
         const axisym::Point n = edge_.outward_normal_at(0.5);
+        if (even_ && std::abs(n.z) < 1e-12 && edge_.start.r > 0.0)
+          {
+            // The cylinder r = a: -n_r (r^2 - a^2) / (2 a).
+            const double a = edge_.start.r;
+            return {-n.r * (r * r - a * a) / (2.0 * a), -n.r * r / a, 0.0};
+          }
         const double f = -(n.r * (r - edge_.start.r) + n.z * (z - edge_.start.z));
         return {f, -n.r, -n.z};
       }
@@ -168,7 +180,16 @@ namespace rfm
         const double tr = d.r / length, tz = d.z / length;
         const double s = (r - 0.5 * (edge_.start.r + edge_.end.r)) * tr +
                          (z - 0.5 * (edge_.start.z + edge_.end.z)) * tz;
-        if (trim_side_ > 0) // trimmed at the end only: t = L/2 - s
+        if (even_ && std::abs(tz) < 1e-12)
+          {
+            // Along r from r1 to r2: the coaxial cylinders' functions, even in r.
+            const double r1 = std::min(edge_.start.r, edge_.end.r),
+                         r2 = std::max(edge_.start.r, edge_.end.r);
+            const RValue outer{(r2 * r2 - r * r) / (2.0 * r2), -r / r2, 0.0};
+            t = r1 <= 0.0 ? outer
+                          : r_conjunction({(r * r - r1 * r1) / (2.0 * r1), r / r1, 0.0}, outer);
+          }
+        else if (trim_side_ > 0) // trimmed at the end only: t = L/2 - s
           t = {0.5 * length - s, -tr, -tz};
         else if (trim_side_ < 0) // at the start only: t = s + L/2
           t = {s + 0.5 * length, tr, tz};
@@ -203,6 +224,12 @@ namespace rfm
         return {scale * phi, -scale * dz / rho2, scale * dr / rho2};
       }
     const axisym::Point d = minus(edge_.end, edge_.start);
+    if (even_ && std::abs(d.z) < 1e-12 * std::abs(d.r))
+      {
+        // Along r: 2 r^2 / r_max^2 - 1 (the box starts on the axis; monotone on r >= 0).
+        const double c = 2.0 / (r_box_max_ * r_box_max_);
+        return {c * r * r - 1.0, 2.0 * c * r, 0.0};
+      }
     const double length = std::sqrt(dot(d, d)), scale = 2.0 / ((s_max_ - s_min_) * length);
     const double s = (r - edge_.start.r) * d.r + (z - edge_.start.z) * d.z; // times length
     return {scale * (s - s_min_ * length) - 1.0, scale * d.r, scale * d.z};
@@ -284,10 +311,36 @@ namespace rfm
   } // namespace
 
   // 2. Edge sets and the checks of what the structures support.
-  OutlineStructures::OutlineStructures(const axisym::Body &body, const int degree,
-                                       const std::vector<DieZone> &zones)
-    : body_(split_at_zones(body, zones)), degree_(degree)
+  std::string OutlineStructures::axis_parity_obstacle(const axisym::Body &body)
   {
+    bool on_axis = false;
+    for (const OutlineEdge &e : body.outline.edges())
+      {
+        const PartCondition &c = body.conditions.at(e.part);
+        on_axis |= c.kind == PartCondition::Kind::axis;
+        const axisym::Point n = e.outward_normal_at(0.5);
+        const bool normal_r = std::abs(std::abs(n.r) - 1.0) < 1e-12;
+        const bool normal_z = std::abs(std::abs(n.z) - 1.0) < 1e-12;
+        if (e.kind != OutlineEdge::Kind::line || !(normal_r || normal_z))
+          return "part " + e.part + " is not a line along r or z (even omegas of cones and tori "
+                                    "are not done)";
+        if (c.kind == PartCondition::Kind::die)
+          return "part " + e.part + " carries a die";
+        if (c.kind == PartCondition::Kind::traction && c.traction[normal_r ? 1 : 0] != 0.0)
+          return "the traction on part " + e.part + " has a shear component";
+        if (c.kind == PartCondition::Kind::displacement && c.displacement[0] != 0.0)
+          return "part " + e.part + " prescribes u_r other than 0";
+      }
+    return on_axis ? "" : "the section has no edge on the axis";
+  }
+
+  OutlineStructures::OutlineStructures(const axisym::Body &body, const int degree,
+                                       const std::vector<DieZone> &zones, const bool axis_parity)
+    : body_(split_at_zones(body, zones)), degree_(degree), axis_parity_(axis_parity)
+  {
+    if (axis_parity && (!zones.empty() || !axis_parity_obstacle(body).empty()))
+      throw std::invalid_argument("OutlineStructures: no axis parity here: " +
+                                  (zones.empty() ? axis_parity_obstacle(body) : "a die's zone"));
     const auto &edges = body_.outline.edges();
     zone_of_edge_.assign(edges.size(), -1);
     for (const DieZone &z : zones)
@@ -334,7 +387,7 @@ namespace rfm
           zone_of_edge_[e] >= 0 ||
           std::any_of(zones.begin(), zones.end(),
                       [&](const DieZone &z) { return edges[e].part == z.part + "#free"; });
-        omegas_.emplace_back(body_.outline, e, die_sub_edge);
+        omegas_.emplace_back(body_.outline, e, die_sub_edge, axis_parity_);
         const PartCondition &c = body_.condition_of_edge(e);
         const axisym::Point n = edges[e].outward_normal_at(0.5);
         const bool along_r = std::abs(std::abs(n.r) - 1.0) < 1e-12;

@@ -54,6 +54,22 @@
 //    symmetry lines); omega_uz on the D edges and the Y edges with normal e_z. u0 is the
 //    transfinite blend of the prescribed values over the same edges (0 on Y edges).
 //
+// Axis parity (OutlineModel, issue 24 item 5). On a section on the axis the structures can be
+// made even in r across it, so that with coordinate functions in (r^2, z)
+// (section_basis.h: even_in_r) sigma_rr, sigma_zz, sigma_tt and u_z are even and u_r and
+// sigma_rz odd, as the smooth fields of a body of revolution are. The omega of the axis, r,
+// is odd and stays; every other carrier and trimming function becomes even in r:
+//   * a line along z at r = a > 0: f = +-(a^2 - r^2) / (2 a) (the cylinder r = a; unit
+//     gradient on the edge, positive on the body's side for r >= 0);
+//   * a trimmed line along r from r1 to r2: t = (r2^2 - r^2) / (2 r2) if r1 = 0, else the R0
+//     conjunction of (r^2 - r1^2) / (2 r1) and (r2^2 - r^2) / (2 r2) (the two coaxial
+//     cylinders, each normalized at its radius);
+//   * the edge coordinate of a line along r: 2 r^2 / r_max^2 - 1 (monotone on r >= 0).
+// Lines along r (z = c) and trimming in z are even already. axis_parity_obstacle() says what
+// rules it out: arcs and inclined lines (cones and tori: not done), a die, a traction with
+// a shear component (a constant sigma_rz blended up to the axis is not odd), a prescribed u_r
+// other than 0.
+//
 // A smooth chain is a run of S edges that follow one another with a continuous tangent
 // (a circle split into two arcs, an arc running into a tangent line); a lone S edge is a
 // chain of one. omega_C is the R0 conjunction of its edges' omegas, x + y - sqrt(x^2 + y^2):
@@ -88,7 +104,9 @@ namespace rfm
     /// `one_sided` (a die part's sub-edges): a line trimmed at one end only, where its
     /// carrier goes on in the section, is a ray beyond the other end (t linear), smooth at a
     /// corner there instead of non-smooth.
-    EdgeOmega(const axisym::Outline &outline, int edge, bool one_sided = false);
+    /// `even_in_r`: the even forms of the header's axis parity (lines along r or z only).
+    EdgeOmega(const axisym::Outline &outline, int edge, bool one_sided = false,
+              bool even_in_r = false);
 
     RValue operator()(double r, double z) const;
     /// The carrier function f (line or circle), normalized, positive on the body's side.
@@ -120,6 +138,8 @@ namespace rfm
     /// 1 / s^2 factor).
     bool conjunction_ends_ = false;
     double sign_ = 1.0; ///< arcs: +1 when the body is inside the circle
+    bool even_ = false;  ///< even in r (axis parity)
+    double r_box_max_ = 1.0;
     double s_min_ = 0.0, s_max_ = 1.0; ///< the box's extent along the chord from the start
     bool angular_ = false;
   };
@@ -173,7 +193,15 @@ namespace rfm
     /// body (the zone keeps the part's name, the free sub-edges are part "<part>#free").
     /// Throws InputError for conditions the structures do not support (a symmetry edge or a
     /// die part not along r or z, a die without a zone).
-    OutlineStructures(const axisym::Body &body, int degree, const std::vector<DieZone> &zones = {});
+    /// `axis_parity`: the even forms of the header (precondition: axis_parity_obstacle(body)
+    /// is empty and there are no zones; std::invalid_argument otherwise).
+    OutlineStructures(const axisym::Body &body, int degree, const std::vector<DieZone> &zones = {},
+                      bool axis_parity = false);
+
+    /// Why the structures of `body` cannot be even in r (the header's axis parity): empty
+    /// when they can, which needs an edge on the axis.
+    static std::string axis_parity_obstacle(const axisym::Body &body);
+    bool axis_parity() const { return axis_parity_; }
 
     OutlineStressValues stress(const Eigen::Ref<const Eigen::VectorXd> &r,
                                const Eigen::Ref<const Eigen::VectorXd> &z) const;
@@ -243,6 +271,7 @@ namespace rfm
 
     axisym::Body body_;
     int degree_;
+    bool axis_parity_ = false;
     std::vector<EdgeOmega> omegas_;
     std::vector<int> stress_edges_, symmetry_edges_, u_r_edges_, u_z_edges_;
     /// For each S edge (index into stress_edges_), its smooth chain: S edges that follow one

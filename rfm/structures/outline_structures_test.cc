@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <random>
+#include <stdexcept>
+#include <tuple>
 
 namespace rfm
 {
@@ -38,6 +40,30 @@ namespace rfm
           {"line_to": [0.0, 0.0], "part": "axis"}]},
         "boundary": {"mid": {"symmetry": true}, "taper": {"traction": [2.0e6, -1.0e6]},
                      "end": {"displacement": [1.0e-6, -2.0e-6]}, "surface": {"pressure": 3.0e6}},
+        "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
+    }
+
+    // A stepped solid shaft for the axis parity: lines along r and z only, a pressure, a
+    // normal traction, a smooth chain of two collinear free/pressure edges (boundary
+    // columns), an end split into a loaded part from the axis and a part with u_z prescribed
+    // (trimmed lines along r from r = 0 and from r1 > 0).
+    axisym::Problem stepped_shaft()
+    {
+      return axisym::parse_problem(nlohmann::json::parse(R"({
+        "geometry": {"outline": [
+          {"start": [0.0, 0.0]},
+          {"line_to": [0.05, 0.0], "part": "mid"},
+          {"line_to": [0.05, 0.1], "part": "large"},
+          {"line_to": [0.03, 0.1], "part": "shoulder"},
+          {"line_to": [0.03, 0.15], "part": "small"},
+          {"line_to": [0.03, 0.2], "part": "small_loaded"},
+          {"line_to": [0.015, 0.2], "part": "end_outer"},
+          {"line_to": [0.0, 0.2], "part": "end_inner"},
+          {"line_to": [0.0, 0.0], "part": "axis"}]},
+        "boundary": {"mid": {"symmetry": true}, "large": {"pressure": 3.0e6},
+                     "shoulder": {"traction": [0.0, 2.0e6]}, "small_loaded": {"pressure": 1.0e6},
+                     "end_outer": {"displacement": [0.0, -2.0e-6]},
+                     "end_inner": {"traction": [0.0, 1.0e7]}},
         "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
     }
 
@@ -156,16 +182,17 @@ namespace rfm
   {
     std::mt19937 rng(11);
     std::normal_distribution<double> coef(0.0, 1.0);
-    std::vector<std::pair<axisym::Problem, std::vector<DieZone>>> cases;
+    std::vector<std::tuple<axisym::Problem, std::vector<DieZone>, bool>> cases;
     for (const axisym::Problem &p :
          {sphere({{"traction", {1.0e6, -3.0e6}}}), sphere(nlohmann::json::object()),
-          grooved_shaft(), ring()})
-      cases.emplace_back(p, std::vector<DieZone>{});
-    for (const auto &c : die_cases())
-      cases.push_back(c);
-    for (const auto &[p, zones] : cases)
+          grooved_shaft(), ring(), stepped_shaft()})
+      cases.emplace_back(p, std::vector<DieZone>{}, false);
+    cases.emplace_back(stepped_shaft(), std::vector<DieZone>{}, true); // axis parity
+    for (const auto &[p, zones] : die_cases())
+      cases.emplace_back(p, zones, false);
+    for (const auto &[p, zones, parity] : cases)
       {
-        const OutlineStructures s(*p.body, 6, zones);
+        const OutlineStructures s(*p.body, 6, zones, parity);
         const axisym::Body &body = s.body(); // split at the zones' ends
         Eigen::VectorXd q_b(s.n_boundary_columns());
         for (Eigen::Index j = 0; j < q_b.size(); ++j)
@@ -240,6 +267,65 @@ namespace rfm
               }
           }
       }
+  }
+
+  // Axis parity: every omega but the axis' (r) and every edge coordinate is even in r, and the
+  // stress structures give even rr, zz, tt and odd rz parts, the displacement omegas an odd u_r
+  // and an even u_z factor; without it the cylinders' omegas are not even. Not for arcs, dies
+  // or a shear traction.
+  TEST(OutlineStructures, AxisParityMakesTheStructuresEvenInR)
+  {
+    const axisym::Problem p = stepped_shaft();
+    EXPECT_EQ(OutlineStructures::axis_parity_obstacle(*p.body), "");
+    const OutlineStructures s(*p.body, 6, {}, true), plain(*p.body, 6);
+    ASSERT_TRUE(s.axis_parity());
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> ur(0.001, 0.03), uz(0.0, 0.2);
+    Eigen::VectorXd r(40), z(40);
+    for (Eigen::Index k = 0; k < r.size(); ++k)
+      r[k] = ur(rng), z[k] = uz(rng);
+    const Eigen::VectorXd minus_r = -r;
+    bool plain_even = true;
+    for (std::size_t e = 0; e < s.omegas().size(); ++e)
+      {
+        if (p.body->condition_of_edge(static_cast<int>(e)).kind == PartCondition::Kind::axis)
+          continue;
+        for (Eigen::Index k = 0; k < r.size(); ++k)
+          {
+            const RValue a = s.omegas()[e](r[k], z[k]), b = s.omegas()[e](-r[k], z[k]);
+            EXPECT_NEAR(a.value, b.value, 1e-15) << e;
+            EXPECT_NEAR(a.d_r, -b.d_r, 1e-13) << e;
+            EXPECT_NEAR(a.d_z, b.d_z, 1e-13) << e;
+            if (s.omegas()[e].edge().kind == axisym::OutlineEdge::Kind::line)
+              EXPECT_NEAR(s.omegas()[e].edge_coordinate(r[k], z[k]).value,
+                          s.omegas()[e].edge_coordinate(-r[k], z[k]).value, 1e-14) << e;
+            plain_even &= std::abs(plain.omegas()[e](r[k], z[k]).value -
+                                   plain.omegas()[e](-r[k], z[k]).value) < 1e-15;
+          }
+      }
+    EXPECT_FALSE(plain_even);
+    ASSERT_GT(s.n_boundary_columns(), 0);
+    const OutlineStressValues a = s.stress(r, z), b = s.stress(minus_r, z);
+    for (const int c : {rr, zz, tt})
+      {
+        EXPECT_LT((a.omega.col(c) - b.omega.col(c)).cwiseAbs().maxCoeff(), 1e-15) << c;
+        EXPECT_LT((a.s0.col(c) - b.s0.col(c)).cwiseAbs().maxCoeff(), 1e-8) << c;
+        EXPECT_LT((a.boundary[c] - b.boundary[c]).cwiseAbs().maxCoeff(), 1e-14) << c;
+      }
+    EXPECT_LT((a.omega.col(rz) + b.omega.col(rz)).cwiseAbs().maxCoeff(), 1e-15);
+    EXPECT_LT((a.s0.col(rz) + b.s0.col(rz)).cwiseAbs().maxCoeff(), 1e-8);
+    EXPECT_LT((a.boundary[rz] + b.boundary[rz]).cwiseAbs().maxCoeff(), 1e-14);
+    const OutlineDisplacementValues u = s.displacement(r, z), v = s.displacement(minus_r, z);
+    EXPECT_LT((u.omega.col(0) + v.omega.col(0)).cwiseAbs().maxCoeff(), 1e-15);
+    EXPECT_LT((u.omega.col(1) - v.omega.col(1)).cwiseAbs().maxCoeff(), 1e-15);
+    EXPECT_LT((u.u0.col(1) - v.u0.col(1)).cwiseAbs().maxCoeff(), 1e-20);
+
+    EXPECT_NE(OutlineStructures::axis_parity_obstacle(*grooved_shaft().body), "");
+    EXPECT_NE(OutlineStructures::axis_parity_obstacle(*sphere({}).body), "");
+    nlohmann::json shear = nlohmann::json::parse(p.source.dump());
+    shear["boundary"]["end_inner"] = {{"traction", {1.0e6, 1.0e7}}};
+    EXPECT_NE(OutlineStructures::axis_parity_obstacle(*axisym::parse_problem(shear).body), "");
+    EXPECT_THROW(OutlineStructures(*grooved_shaft().body, 6, {}, true), std::invalid_argument);
   }
 
   // The boundary columns carry the tangential normal stress of their edge: on the outer
