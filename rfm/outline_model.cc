@@ -228,7 +228,10 @@ namespace rfm
     // The near-edge rules: the half disc of each enrichment's support, polar with
     // rho = rho_0 s^2 (quadrature.h), placed in its frame.
     {
-      const int n_near = options.degree + options.extra_gauss_points + options.edge_extra_points;
+      // The polynomials' degree in r: 2 p with the axis parity (on the clamped cylinder at
+      // p = 16 the vertex rule for degree p left the indicator at 9.3e-6, 7.2e-9 with 2 p).
+      const int n_near = (structures_.axis_parity() ? 2 : 1) * options.degree +
+                         options.extra_gauss_points + options.edge_extra_points;
       std::vector<Quadrature2D> rules;
       Eigen::Index total = 0;
       for (const EdgeEnrichment &e : enrichments_)
