@@ -12,7 +12,10 @@
 //      |s_FEM - s_RFM|, relative to max |s_RFM|), and the RFM's indicator.
 //   5. Hollow column on a frictionless plane under its own weight: the reaction on the plane
 //      (domain-independent: rho g V) and the indicator, RFM and FEM.
-//   6. The tolerance gate (verification/tolerances.json, entry "body_loads").
+//   6. Values on the axis (issue 24 item 5): a spinning solid cylinder with free ends (no
+//      closed form), the RFM with and without the axis parity (rfm.axis_parity) against the
+//      FEM's finest level at samples on the axis and off it.
+//   7. The tolerance gate (verification/tolerances.json, entry "body_loads").
 //
 // Sample run:
 //   build/bin/body_loads --mode quick --output-dir build/verification-output
@@ -27,6 +30,7 @@
 #include <fmt/core.h>
 
 #include <cmath>
+#include <stdexcept>
 
 namespace
 {
@@ -216,6 +220,83 @@ namespace
       }
     return c;
   }
+
+  // Case 6: the RFM with and without the axis parity against the FEM's finest level at the
+  // problem's samples, those on the axis (r = 0) and the others apart, each as the largest
+  // stress component's difference relative to the largest |sigma| of the FEM's samples.
+  nlohmann::json axis_case(const verification::DriverContext &context, const std::string &file,
+                           const std::string &title, const std::vector<int> &degrees,
+                           const std::vector<int> &levels)
+  {
+    const axisym::Problem problem = axisym::read_problem_file(context.problem_path(file));
+    nlohmann::json c = {{"problem_file", "verification/problems/" + file}};
+    fmt::print("\n== {} ==\n", title);
+    std::vector<std::array<double, 4>> reference, previous;
+    for (const int level : levels)
+      {
+        const fem::FemResult f = solve_fem(problem, level, title, {});
+        previous = reference;
+        reference.clear();
+        for (const fem::FieldSample &s : f.samples)
+          reference.push_back(s.sigma);
+        c["fem"]["L" + std::to_string(level)] = {{"dofs", f.n_dofs},
+                                                 {"reissner", f.functionals.reissner},
+                                                 {"seconds", f.total_seconds}};
+        fmt::print("FEM Q2 L = {}: {} dofs, Phi_R {:.12e} J/rad ({:.1f} s)\n", level, f.n_dofs,
+                   f.functionals.reissner, f.total_seconds);
+      }
+    double scale = 0;
+    for (const auto &s : reference)
+      for (const double x : s)
+        scale = std::max(scale, std::abs(x));
+    Eigen::VectorXd r(static_cast<Eigen::Index>(problem.samples.size())), z(r.size());
+    for (Eigen::Index k = 0; k < r.size(); ++k)
+      r[k] = problem.samples[static_cast<std::size_t>(k)][0],
+      z[k] = problem.samples[static_cast<std::size_t>(k)][1];
+    // Largest difference from the reference on the axis and off it, relative to scale.
+    auto errors = [&](auto sigma) {
+      std::array<double, 2> e{0, 0};
+      for (Eigen::Index k = 0; k < r.size(); ++k)
+        for (int m = 0; m < 4; ++m)
+          {
+            double &x = e[r[k] == 0.0 ? 0 : 1];
+            x = std::max(x, std::abs(sigma(k, m) - reference[static_cast<std::size_t>(k)][m]) / scale);
+          }
+      return e;
+    };
+    const auto fem_change = errors([&](Eigen::Index k, int m) { return previous[static_cast<std::size_t>(k)][m]; });
+    c["fem"]["change_last_axis_relative"] = fem_change[0];
+    c["fem"]["change_last_off_axis_relative"] = fem_change[1];
+    fmt::print("FEM: change between the last two levels, on the axis {:.2e}, off it {:.2e} of max "
+               "|sigma| = {:.4g} MPa\n", fem_change[0], fem_change[1], scale / 1e6);
+    for (const bool parity : {true, false})
+      {
+        axisym::Problem pr = problem;
+        pr.rfm.axis_parity = parity;
+        const std::string key = parity ? "rfm" : "rfm_without_axis_parity";
+        for (const int p : degrees)
+          {
+            const rfm::OutlineModel m = solve_rfm(pr, p, title);
+            if (m.axis_parity() != parity)
+              throw std::logic_error(title + ": the axis parity is " + (parity ? "off: " : "on") +
+                                     m.axis_parity_obstacle());
+            const rfm::FieldValues v = m.evaluate(r, z);
+            const auto e = errors([&](Eigen::Index k, int comp) { return v.sigma(k, comp); });
+            const rfm::Functionals phi = m.functionals();
+            fmt::print("RFM{} p = {:>2}: samples on the axis {:.2e}, off it {:.2e} of max |sigma| "
+                       "from the FEM's; indicator {:.2e} ({:.2f} s)\n",
+                       parity ? "" : " without axis parity", p, e[0], e[1], phi.indicator(),
+                       m.assembly_seconds() + m.solve_seconds());
+            c[key]["p" + std::to_string(p)] = {{"axis_sample_error_relative", e[0]},
+                                               {"sample_error_relative", e[1]},
+                                               {"axis_to_off_axis_ratio", e[0] / e[1]},
+                                               {"indicator", phi.indicator()},
+                                               {"reissner", phi.reissner},
+                                               {"seconds", m.assembly_seconds() + m.solve_seconds()}};
+          }
+      }
+    return c;
+  }
 } // namespace
 
 nlohmann::json run(const verification::DriverContext &context)
@@ -277,6 +358,13 @@ nlohmann::json run(const verification::DriverContext &context)
       }
     results["self_weight"] = c;
   }
+
+  // 6. Values on the axis.
+  results["axis_values"] = axis_case(
+    context, "spinning_solid_cylinder_free_ends.json",
+    "Values on the axis: spinning solid cylinder with free ends (b = 0.2 m, h = 0.1 m, 500 rad/s)",
+    full ? std::vector<int>{8, 12, 16} : std::vector<int>{8, 12},
+    full ? std::vector<int>{3, 4, 5} : std::vector<int>{3, 4});
   return results;
 }
 
