@@ -185,13 +185,14 @@ namespace rfm
       bool reduced = false;
       for (int m = 0; m < 2; ++m)
         reduced |= structures_.displacement_degree_reduction(m) != std::array<int, 2>{0, 0};
-      if (structures_.axis_parity())
-        return basis_of(o, options.degree, options.degree, true);
       if (is_axis_aligned_rectangle(o) && !reduced)
         {
           const axisym::BoundingBox b = o.bounding_box();
-          return TensorLegendreBasis(options.degree, b.r_min, b.r_max, b.z_min, b.z_max);
+          return TensorLegendreBasis(options.degree, b.r_min, b.r_max, b.z_min, b.z_max,
+                                     structures_.axis_parity());
         }
+      if (structures_.axis_parity())
+        return basis_of(o, options.degree, options.degree, true);
       return basis_of(o, options.degree, options.degree);
     }())
   {

@@ -44,9 +44,10 @@
 // where polynomials in r projected in r-weighted norms are weakest (section_basis.h). On a
 // rectangle along r and z with an edge on the axis, and nothing against it
 // (axis_parity_obstacle), the coordinate functions are the polynomials of degree <= p in r^2
-// and <= p in z, orthonormal on the section (the same count, (p + 1)^2), the structures are
-// even in r (outline_structures.h), and the tensor rule has 2 p + extra_gauss_points points in
-// r. Measured on a spinning solid cylinder with free ends (b = 0.2 m, h = 0.1 m, 500 rad/s),
+// and <= p in z (the same count, (p + 1)^2: the tensor Legendre polynomials in
+// 2 (r / r_max)^2 - 1 and z, orthogonal in the r-weighted measure, or where a displacement
+// degree is lowered the ones orthonormal on the section), the structures are even in r
+// (outline_structures.h), and the tensor rule has 2 p + extra_gauss_points points in r. Measured on a spinning solid cylinder with free ends (b = 0.2 m, h = 0.1 m, 500 rad/s),
 // the largest stress error at the axis point of the free end, (0, 0.1), against p = 24:
 // 9.2e-2, 4.7e-2, 1.6e-2 MPa at p = 8, 12, 16 with polynomials in r, 3.1e-3, 5.7e-4, 8.2e-5
 // with the parity; the indicator 1.2e-8, 5.2e-10, 2.3e-11 against 1.3e-9, 1.6e-11, 1.8e-13.
@@ -306,9 +307,9 @@ namespace rfm
     std::string axis_parity_obstacle_;
     OutlineStructures structures_;
     /// The coordinate functions: the tensor Legendre polynomials of the box on a rectangle
-    /// with sides along r and z (orthogonal there; their values cost no N x N transform) when
-    /// no displacement component is reduced in degree, else the polynomials orthonormal on the
-    /// section.
+    /// with sides along r and z (orthogonal there; their values cost no N x N transform; in
+    /// r^2 with the axis parity) when no displacement component is reduced in degree, else the
+    /// polynomials orthonormal on the section.
     std::variant<TensorLegendreBasis, SectionPolynomialBasis> basis_;
     /// The global and the local coordinate functions side by side.
     BasisValues basis_values(const Eigen::Ref<const Eigen::VectorXd> &r,

@@ -22,13 +22,15 @@ namespace rfm
 
   TensorLegendreBasis::TensorLegendreBasis(const int degree, const double r_min,
                                            const double r_max, const double z_min,
-                                           const double z_max)
-    : degree_(degree), r_min_(r_min), r_max_(r_max), z_min_(z_min), z_max_(z_max)
+                                           const double z_max, const bool even_in_r)
+    : degree_(degree), r_min_(r_min), r_max_(r_max), z_min_(z_min), z_max_(z_max), even_r_(even_in_r)
   {
     if (degree < 0)
       throw std::invalid_argument("TensorLegendreBasis: degree must be >= 0");
     if (!(r_max > r_min) || !(z_max > z_min))
       throw std::invalid_argument("TensorLegendreBasis: empty bounding box");
+    if (even_in_r && r_min != 0.0)
+      throw std::invalid_argument("TensorLegendreBasis: even in r needs a box from the axis");
   }
 
   BasisValues TensorLegendreBasis::evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
@@ -44,9 +46,17 @@ namespace rfm
     // operation (the per-point loop wrote rows of column-major matrices: stride n_points).
     Eigen::MatrixXd pr(n_points, m), dpr(n_points, m), pz(n_points, m), dpz(n_points, m);
     Eigen::VectorXd p1(m), dp1(m);
+    const double se = 2.0 / (r_max_ * r_max_);
     for (Eigen::Index k = 0; k < n_points; ++k)
       {
-        legendre_values(degree_, sr * (r[k] - r_min_) - 1.0, p1, dp1);
+        if (even_r_)
+          {
+            // xi = se r^2 - 1, d xi / dr = 2 se r (sr is applied below).
+            legendre_values(degree_, se * r[k] * r[k] - 1.0, p1, dp1);
+            dp1 *= 2.0 * se * r[k] / sr;
+          }
+        else
+          legendre_values(degree_, sr * (r[k] - r_min_) - 1.0, p1, dp1);
         pr.row(k) = p1.transpose(), dpr.row(k) = dp1.transpose();
         legendre_values(degree_, sz * (z[k] - z_min_) - 1.0, p1, dp1);
         pz.row(k) = p1.transpose(), dpz.row(k) = dp1.transpose();

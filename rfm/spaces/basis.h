@@ -7,6 +7,11 @@
 // complete in the polynomials of degree <= p in each variable and linearly independent:
 // N = (p + 1)^2 functions per unknown component (the paper's Table 1 uses N = 1, 9, 64).
 // Ordering: index = j * (p + 1) + i (r fastest).
+//
+// Even in r (a box on the axis, r_min = 0; the axis parity of outline_model.h): xi =
+// 2 (r / r_max)^2 - 1, so that the functions are the polynomials of degree <= p in r^2. Since
+// r dr = r_max^2 / 4 d xi, they are orthogonal in the r-weighted inner product of the
+// functionals on the box, as the plain ones are in dr dz.
 #pragma once
 
 #include <Eigen/Core>
@@ -23,8 +28,9 @@ namespace rfm
   class TensorLegendreBasis
   {
   public:
-    /// Precondition: degree >= 0, r_max > r_min, z_max > z_min.
-    TensorLegendreBasis(int degree, double r_min, double r_max, double z_min, double z_max);
+    /// Precondition: degree >= 0, r_max > r_min, z_max > z_min, and r_min = 0 if even_in_r.
+    TensorLegendreBasis(int degree, double r_min, double r_max, double z_min, double z_max,
+                        bool even_in_r = false);
 
     int degree() const { return degree_; }
     Eigen::Index n_basis_functions() const { return (degree_ + 1) * (degree_ + 1); }
@@ -32,9 +38,12 @@ namespace rfm
     BasisValues evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
                          const Eigen::Ref<const Eigen::VectorXd> &z) const;
 
+    bool even_in_r() const { return even_r_; }
+
   private:
     int degree_;
     double r_min_, r_max_, z_min_, z_max_;
+    bool even_r_ = false;
   };
 
   /// P_0..P_p and their derivatives at x (three-term recurrence and

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <stdexcept>
 
 namespace rfm
 {
@@ -64,5 +65,43 @@ namespace rfm
         EXPECT_NEAR(gram(j * m + i, j * m + i), 4.0 / ((2 * i + 1) * (2 * j + 1)), 1e-14);
     const Eigen::MatrixXd off = gram - Eigen::MatrixXd(gram.diagonal().asDiagonal());
     EXPECT_LT(off.cwiseAbs().maxCoeff(), 1e-14);
+  }
+
+  // Even in r: the functions are P_i(2 (r / R)^2 - 1) P_j(eta), even in r with derivatives
+  // that match finite differences, and orthogonal in the r-weighted measure on [0, R] x
+  // [z0, z1]: int_0^R P_i P_k r dr = R^2 / 4 int P_i P_k d xi = R^2 / (2 (2 i + 1)) delta_ik.
+  TEST(TensorLegendreBasis, EvenInROrthogonalInTheRWeightedMeasure)
+  {
+    const int p = 5, m = p + 1;
+    const double R = 0.2, z0 = 0.0, z1 = 0.1;
+    const TensorLegendreBasis b(p, 0.0, R, z0, z1, true);
+    EXPECT_TRUE(b.even_in_r());
+    EXPECT_THROW(TensorLegendreBasis(p, 0.05, R, z0, z1, true), std::invalid_argument);
+    // Gauss in r with 2 m points (degree 4 p + 1 with the weight r), m in z.
+    const GaussRule1D gr = gauss_on_cells({0.0, R}, 2 * m), gz = gauss_on_cells({z0, z1}, m);
+    const Eigen::Index nr = gr.nodes.size(), nz = gz.nodes.size();
+    Eigen::VectorXd r(nr * nz), z(nr * nz), w(nr * nz);
+    for (Eigen::Index j = 0; j < nz; ++j)
+      for (Eigen::Index i = 0; i < nr; ++i)
+        r[j * nr + i] = gr.nodes[i], z[j * nr + i] = gz.nodes[j],
+                   w[j * nr + i] = gr.weights[i] * gz.weights[j] * gr.nodes[i];
+    const BasisValues v = b.evaluate(r, z);
+    const Eigen::MatrixXd gram = v.value.transpose() * w.asDiagonal() * v.value;
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i)
+        EXPECT_NEAR(gram(j * m + i, j * m + i),
+                    R * R / (2.0 * (2 * i + 1)) * (z1 - z0) / (2 * j + 1), 1e-15);
+    const Eigen::MatrixXd off = gram - Eigen::MatrixXd(gram.diagonal().asDiagonal());
+    EXPECT_LT(off.cwiseAbs().maxCoeff(), 1e-16);
+    Eigen::VectorXd rp(3), zp(3);
+    rp << 0.01, 0.093, 0.19;
+    zp << 0.01, 0.05, 0.09;
+    const double h = 1e-7;
+    const BasisValues at = b.evaluate(rp, zp), mirror = b.evaluate(-rp, zp);
+    EXPECT_LT((at.value - mirror.value).cwiseAbs().maxCoeff(), 1e-13);
+    EXPECT_LT((at.d_r + mirror.d_r).cwiseAbs().maxCoeff(), 1e-10);
+    const Eigen::MatrixXd fd_r =
+      (b.evaluate((rp.array() + h).matrix(), zp).value - b.evaluate((rp.array() - h).matrix(), zp).value) / (2 * h);
+    EXPECT_LT((fd_r - at.d_r).cwiseAbs().maxCoeff(), 1e-5 * at.d_r.cwiseAbs().maxCoeff());
   }
 } // namespace rfm
