@@ -699,7 +699,7 @@ int main(int argc, char **argv)
       int degree = -1;
       double tolerance = -1.0;
       app.add_option("problem", problem_path, "problem file (JSON, SI units)")->required();
-      app.add_option("--degree", degree, "polynomial degree p per variable: N = (p+1)^2")
+      app.add_option("--degree", degree, "polynomial degree p per variable (r^2 and z with the axis parity): N = (p+1)^2")
         ->check(CLI::Range(axisym::ranges::rfm_degree.lo, axisym::ranges::rfm_degree.hi));
       app.add_option("--tolerance", tolerance,
                      "raise p (2, 4, ...) until |Phi_L - Phi_C| / |Phi_R| < this; without "
