@@ -234,11 +234,34 @@ namespace rfm
     return q;
   }
 
+  GaussRule1D gauss_in_square_on_cells(const std::vector<double> &cells, const int n_points)
+  {
+    assert(cells.size() >= 2 && cells.front() >= 0.0);
+    const GaussRule1D ref = gauss_legendre(n_points);
+    const Eigen::Index n_cells = static_cast<Eigen::Index>(cells.size()) - 1;
+    GaussRule1D rule;
+    rule.nodes.resize(n_cells * n_points);
+    rule.weights.resize(n_cells * n_points);
+    for (Eigen::Index c = 0; c < n_cells; ++c)
+      {
+        const double s0 = cells[c] * cells[c], s1 = cells[c + 1] * cells[c + 1];
+        for (int k = 0; k < n_points; ++k)
+          {
+            // int f x dx = int f ds / 2 on [s0, s1]: the Gauss weight (s1 - s0) w / 4 of x f.
+            const double x = std::sqrt(s0 + 0.5 * (s1 - s0) * (1.0 + ref.nodes[k]));
+            rule.nodes[c * n_points + k] = x;
+            rule.weights[c * n_points + k] = 0.25 * (s1 - s0) * ref.weights[k] / x;
+          }
+      }
+    return rule;
+  }
+
   Quadrature2D tensor_gauss(const std::vector<double> &r_cells,
                             const std::vector<double> &z_cells, const int n_points,
-                            const int n_points_r)
+                            const bool r_in_square)
   {
-    const GaussRule1D rr = gauss_on_cells(r_cells, n_points_r > 0 ? n_points_r : n_points);
+    const GaussRule1D rr = r_in_square ? gauss_in_square_on_cells(r_cells, n_points)
+                                       : gauss_on_cells(r_cells, n_points);
     const GaussRule1D zz = gauss_on_cells(z_cells, n_points);
     Quadrature2D q;
     const Eigen::Index n = rr.nodes.size() * zz.nodes.size();

@@ -50,10 +50,18 @@ namespace rfm
   };
 
   /// Tensor-product Gauss rule with n_points x n_points points on every cell of the
-  /// grid r_cells x z_cells (cell ends as returned by graded_partition); n_points_r > 0:
-  /// that many in r instead.
+  /// grid r_cells x z_cells (cell ends as returned by graded_partition); r_in_square: in r,
+  /// gauss_in_square_on_cells (cells in r >= 0).
   Quadrature2D tensor_gauss(const std::vector<double> &r_cells,
-                            const std::vector<double> &z_cells, int n_points, int n_points_r = 0);
+                            const std::vector<double> &z_cells, int n_points,
+                            bool r_in_square = false);
+
+  /// Gauss rule in s = x^2 on the cells of a partition of x >= 0: nodes x_k = sqrt(s_k) and
+  /// plain length weights w_k such that sum_k w_k x_k f(x_k) = int f(x) x dx (= int f ds / 2)
+  /// exactly for f a polynomial in x^2 of degree <= 2 n_points - 1 on each cell: the
+  /// r-weighted integrals of the axis parity's functions (polynomials in r^2, section_basis.h)
+  /// with the points of a degree-p rule instead of a degree-2p one.
+  GaussRule1D gauss_in_square_on_cells(const std::vector<double> &cells, int n_points);
 
   /// Gauss rule on the cells of a 1-D partition: nodes and plain length weights.
   /// A cell with an end at one of `sqrt_points` is mapped by x = x_s + (x_o - x_s) t^2,

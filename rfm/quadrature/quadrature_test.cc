@@ -150,4 +150,20 @@ namespace rfm
     EXPECT_NEAR(q.weights.dot((q.z.array() - zc).matrix()), moment,
                 1e-13 * std::pow(rho0, 3));
   }
+  // Gauss in x^2 (the axis parity): sum w x f(x) = int f(x) x dx exactly for f = x^(2k),
+  // k <= 2 n - 1, on cells of [0, 1]; not for k = 2 n, nor for an odd power.
+  TEST(GaussInSquare, ExactForPolynomialsInXSquaredWithTheWeightX)
+  {
+    const int n = 4;
+    const GaussRule1D g = gauss_in_square_on_cells({0.0, 0.3, 1.0}, n);
+    ASSERT_EQ(g.nodes.size(), 2 * n);
+    EXPECT_GT(g.nodes.minCoeff(), 0.0);
+    auto moment = [&](const double power) {
+      return (g.weights.array() * g.nodes.array() * g.nodes.array().pow(power)).sum();
+    };
+    for (int k = 0; k <= 2 * n - 1; ++k)
+      EXPECT_NEAR(moment(2 * k), 1.0 / (2 * k + 2), 1e-15) << k;
+    EXPECT_GT(std::abs(moment(4 * n) - 1.0 / (4 * n + 2)), 1e-12);
+    EXPECT_GT(std::abs(moment(1) - 1.0 / 3.0), 1e-6);
+  }
 } // namespace rfm

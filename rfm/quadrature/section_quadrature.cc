@@ -368,7 +368,7 @@ namespace rfm
   Quadrature2D rectangle_gauss(const axisym::Outline &outline, const int n_points,
                                const RectangleCells &cells,
                                const std::array<std::vector<double>, 2> &extra_ends,
-                               const int n_points_r)
+                               const bool even_in_r)
   {
     if (!is_axis_aligned_rectangle(outline) || n_points < 1)
       throw std::invalid_argument("rectangle_gauss: not an axis-aligned rectangle, or n_points < 1");
@@ -402,6 +402,6 @@ namespace rfm
                         with_ends(section_cells(b.z_min, b.z_max, cells.n_uniform_z, z_breaks,
                                                 cells.n_graded_layers, cells.grading_ratio),
                                   extra_ends[1], b.z_min, b.z_max),
-                        n_points, n_points_r);
+                        n_points, even_in_r);
   }
 } // namespace rfm

@@ -104,11 +104,12 @@ namespace rfm
   /// their products times r and the structures' low-degree factors exactly on every cell with
   /// (p + 4)^2 points instead of the triangles' 2 (2 p + 4)^2. `extra_ends`: more cell ends
   /// in r and in z, not graded (the sides of local boxes, local_basis.h; those outside the
-  /// section are ignored). `n_points_r` > 0: that many points in r instead (coordinate
-  /// functions of degree 2 p in r: section_basis.h, even_in_r). Precondition:
-  /// is_axis_aligned_rectangle(outline), n_points >= 1.
+  /// section are ignored). `even_in_r` (the axis parity, coordinate functions polynomial in
+  /// r^2): Gauss in r^2 on the cells in r (quadrature.h: gauss_in_square_on_cells), exact for
+  /// their products with the same n_points. Precondition: is_axis_aligned_rectangle(outline),
+  /// n_points >= 1, r >= 0.
   Quadrature2D rectangle_gauss(const axisym::Outline &outline, int n_points,
                                const RectangleCells &cells = {},
                                const std::array<std::vector<double>, 2> &extra_ends = {},
-                               int n_points_r = 0);
+                               bool even_in_r = false);
 } // namespace rfm
