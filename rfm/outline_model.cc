@@ -219,8 +219,8 @@ namespace rfm
         {options.n_cells_r, options.n_cells_z, options.n_graded_layers, options.grading_ratio},
         local_.breaks(),
         // Axis parity: Gauss in r^2, exact for products of the polynomials of degree p in r^2
-        // with the same points (the clamped cylinder at p = 16: the functionals within 1e-14
-        // of a rule of 2 p + 4 points in r, which took twice the assembly time).
+        // with the same points (the clamped cylinder at p = 12 and 16: the functionals within
+        // 1e-14 of a rule of 2 p + 4 points in r, 400 points instead of 720 at p = 16).
         structures_.axis_parity());
     else
       quadrature_ = section_gauss(split, qo);

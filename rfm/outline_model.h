@@ -49,8 +49,9 @@
 // degree is lowered the ones orthonormal on the section), the structures are even in r
 // (outline_structures.h), the tensor rule is Gauss in r^2 in r (quadrature.h:
 // gauss_in_square_on_cells, exact for their r-weighted products with the plain rule's
-// points), and the near-vertex rules are sized for the degree 2 p in r. Measured on a spinning solid cylinder with free ends (b = 0.2 m, h = 0.1 m, 500 rad/s),
-// the largest stress error at the axis point of the free end, (0, 0.1), against p = 24:
+// points), and the near-vertex rules are sized for the degree 2 p in r. Measured on a
+// spinning solid cylinder with free ends (b = 0.2 m, h = 0.1 m, 500 rad/s), the largest
+// stress error at the axis point of the free end, (0, 0.1), against p = 24:
 // 9.2e-2, 4.7e-2, 1.6e-2 MPa at p = 8, 12, 16 with polynomials in r, 3.1e-3, 5.7e-4, 8.2e-5
 // with the parity; the indicator 1.2e-8, 5.2e-10, 2.3e-11 against 1.3e-9, 1.6e-11, 1.8e-13.
 // Not on other sections yet: their recurrence in r^2 is too noisy beyond p = 16

@@ -150,6 +150,7 @@ namespace rfm
     EXPECT_NEAR(q.weights.dot((q.z.array() - zc).matrix()), moment,
                 1e-13 * std::pow(rho0, 3));
   }
+
   // Gauss in x^2 (the axis parity): sum w x f(x) = int f(x) x dx exactly for f = x^(2k),
   // k <= 2 n - 1, on cells of [0, 1]; not for k = 2 n, nor for an odd power.
   TEST(GaussInSquare, ExactForPolynomialsInXSquaredWithTheWeightX)
