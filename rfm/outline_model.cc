@@ -144,16 +144,13 @@ namespace rfm
     }
   } // namespace
 
-  std::string axis_parity_obstacle(const axisym::Problem &problem, const std::vector<DieZone> &zones,
-                                   const DiscretizationOptions &options)
+  std::string axis_parity_obstacle(const axisym::Problem &problem, const DiscretizationOptions &options)
   {
     if (!options.axis_parity)
       return "rfm.axis_parity is false";
     const std::string structures = OutlineStructures::axis_parity_obstacle(*problem.body);
     if (!structures.empty())
       return structures;
-    if (!zones.empty())
-      return "a die's zone";
     if (!is_axis_aligned_rectangle(problem.body->outline))
       return "the section is not a rectangle along r and z (the recurrence in r^2 is too noisy "
              "on other sections beyond p = 16)";
@@ -177,7 +174,7 @@ namespace rfm
     , material_(problem.material)
     , loads_(problem.body_loads)
     , mirrored_(problem.body->mirrored)
-    , axis_parity_obstacle_(rfm::axis_parity_obstacle(problem, zones, options))
+    , axis_parity_obstacle_(rfm::axis_parity_obstacle(problem, options))
     , structures_(*problem.body, options.degree, faded_zones(*problem.body, zones, local_),
                   axis_parity_obstacle_.empty())
     , basis_([&]() -> std::variant<TensorLegendreBasis, SectionPolynomialBasis> {

@@ -97,10 +97,10 @@ namespace rfm
   /// 2.2 s.
   inline constexpr double raw_min_rcond = 1e-12;
 
-  /// Why OutlineModel does not use axis parity (the header) for `problem` with `zones`:
-  /// empty when it does.
-  std::string axis_parity_obstacle(const axisym::Problem &problem, const std::vector<DieZone> &zones,
-                                   const DiscretizationOptions &options);
+  /// Why OutlineModel does not use axis parity (the header) for `problem`: empty when it
+  /// does (a die's zone lies on a die part, which OutlineStructures::axis_parity_obstacle
+  /// names).
+  std::string axis_parity_obstacle(const axisym::Problem &problem, const DiscretizationOptions &options);
 
   class OutlineModel
   {

@@ -245,24 +245,13 @@ namespace
         fmt::print("FEM Q2 L = {}: {} dofs, Phi_R {:.12e} J/rad ({:.1f} s)\n", level, f.n_dofs,
                    f.functionals.reissner, f.total_seconds);
       }
-    double scale = 0;
-    for (const auto &s : reference)
-      for (const double x : s)
-        scale = std::max(scale, std::abs(x));
-    Eigen::VectorXd r(static_cast<Eigen::Index>(problem.samples.size())), z(r.size());
-    for (Eigen::Index k = 0; k < r.size(); ++k)
-      r[k] = problem.samples[static_cast<std::size_t>(k)][0],
-      z[k] = problem.samples[static_cast<std::size_t>(k)][1];
+    const double scale = verification::largest_component(reference);
+    const std::array<Eigen::VectorXd, 2> points = verification::sample_points(problem);
+    const Eigen::VectorXd &r = points[0], &z = points[1];
     // Largest difference from the reference on the axis and off it, relative to scale.
     auto errors = [&](auto sigma) {
-      std::array<double, 2> e{0, 0};
-      for (Eigen::Index k = 0; k < r.size(); ++k)
-        for (int m = 0; m < 4; ++m)
-          {
-            double &x = e[r[k] == 0.0 ? 0 : 1];
-            x = std::max(x, std::abs(sigma(k, m) - reference[static_cast<std::size_t>(k)][m]) / scale);
-          }
-      return e;
+      auto e = verification::axis_and_off_axis_differences(r, reference, sigma);
+      return std::array<double, 2>{e[0] / scale, e[1] / scale};
     };
     const auto fem_change = errors([&](Eigen::Index k, int m) { return previous[static_cast<std::size_t>(k)][m]; });
     c["fem"]["change_last_axis_relative"] = fem_change[0];

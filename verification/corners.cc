@@ -25,6 +25,7 @@
 #include "rfm/outline_model.h"
 #include "verification/driver.h"
 #include "verification/fem_samples.h"
+#include "verification/outline_errors.h"
 
 #include <fmt/core.h>
 
@@ -35,6 +36,9 @@
 
 namespace
 {
+  using verification::largest_component;
+  using verification::sample_points;
+
   // Richardson's limit of the last three of the FEM's energies (which must converge
   // monotonically), written into fem with the observed order and the finest level's distance
   // from it, and printed.
@@ -55,16 +59,6 @@ namespace
     return limit;
   }
 
-  // The samples' scale: the largest stress component at any sample of the finest level.
-  double largest_component(const std::vector<std::array<double, 4>> &samples)
-  {
-    double scale = 0.0;
-    for (const auto &s : samples)
-      for (const double x : s)
-        scale = std::max(scale, std::abs(x));
-    return scale;
-  }
-
   // The RFM at degree p (no tolerance), with the vertex modes and traction-jump fields or
   // without them (rfm.vertex_max_exponent = 0 switches both off). Numerical failure throws.
   std::unique_ptr<rfm::OutlineModel> solve_at(const axisym::Problem &problem, const std::string &file,
@@ -79,16 +73,6 @@ namespace
     if (!m->ok())
       throw verification::NumericalFailure(file + ", p = " + std::to_string(p) + ": " + m->summary().message);
     return m;
-  }
-
-  // The problem's sample points.
-  std::array<Eigen::VectorXd, 2> sample_points(const axisym::Problem &problem)
-  {
-    const Eigen::Index n = static_cast<Eigen::Index>(problem.samples.size());
-    std::array<Eigen::VectorXd, 2> x{Eigen::VectorXd(n), Eigen::VectorXd(n)};
-    for (Eigen::Index k = 0; k < n; ++k)
-      x[0][k] = problem.samples[static_cast<std::size_t>(k)][0], x[1][k] = problem.samples[static_cast<std::size_t>(k)][1];
-    return x;
   }
 
   nlohmann::json corner_case(const verification::DriverContext &context, const std::string &file,
@@ -194,15 +178,9 @@ namespace
             const rfm::FieldValues v = m.evaluate(r, z);
             // Samples on the axis apart (issue 24 item 5: values there are not controlled by the
             // r-weighted norms).
-            double sample_error = 0.0, axis_error = 0.0;
-            for (Eigen::Index k = 0; k < r.size(); ++k)
-              {
-                double &e = r[k] == 0.0 ? axis_error : sample_error;
-                for (int comp = 0; comp < 4; ++comp)
-                  e = std::max(e, std::abs(v.sigma(k, comp) - fem_samples[static_cast<std::size_t>(k)][comp]));
-              }
-            sample_error /= scale;
-            axis_error /= scale;
+            const auto differences = verification::axis_and_off_axis_differences(
+              r, fem_samples, [&](Eigen::Index k, int comp) { return v.sigma(k, comp); });
+            const double axis_error = differences[0] / scale, sample_error = differences[1] / scale;
             const double seconds = m.assembly_seconds() + m.solve_seconds();
             const double energy_error = std::abs(f.reissner - limit) / std::abs(limit);
             // The intensities against the finest FEM level's, each relative to its own K.

@@ -338,9 +338,9 @@ namespace rfm
                                        const std::vector<DieZone> &zones, const bool axis_parity)
     : body_(split_at_zones(body, zones)), degree_(degree), axis_parity_(axis_parity)
   {
-    if (axis_parity && (!zones.empty() || !axis_parity_obstacle(body).empty()))
-      throw std::invalid_argument("OutlineStructures: no axis parity here: " +
-                                  (zones.empty() ? axis_parity_obstacle(body) : "a die's zone"));
+    if (axis_parity)
+      if (const std::string obstacle = axis_parity_obstacle(body); !obstacle.empty())
+        throw std::invalid_argument("OutlineStructures: no axis parity here: " + obstacle);
     const auto &edges = body_.outline.edges();
     zone_of_edge_.assign(edges.size(), -1);
     for (const DieZone &z : zones)

@@ -194,7 +194,7 @@ namespace rfm
     /// Throws InputError for conditions the structures do not support (a symmetry edge or a
     /// die part not along r or z, a die without a zone).
     /// `axis_parity`: the even forms of the header (precondition: axis_parity_obstacle(body)
-    /// is empty and there are no zones; std::invalid_argument otherwise).
+    /// is empty, so no die; std::invalid_argument otherwise).
     OutlineStructures(const axisym::Body &body, int degree, const std::vector<DieZone> &zones = {},
                       bool axis_parity = false);
 
