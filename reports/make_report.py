@@ -1377,61 +1377,108 @@ def corners_section(corners, out_dir):
     cases = [(k, t) for k, t in cases if k in corners]
     fig, axes = plt.subplots(1, len(cases), figsize=(5 * len(cases), 4))
     for (key, title), ax in zip(cases, axes):
-        c = corners.get(key)
-        if not c:
-            continue
-        f = c["fem"]
-        md.append(f"### {title}")
-        md.append("")
-        md.append(f"Problem: `{c['problem_file']}`. FEM energy limit {f['extrapolated_energy']:.10e} J/rad "
-                  f"(observed order {f['observed_order_energy']:.2f} in energy; the finest level "
-                  f"{f['estimated_error_relative']:.1e} from it).")
-        md.append("")
-        def k_1(row):
-            k = row.get("intensities")
-            return f"{k[0]['K'][0]:.6e}" if k else ""
-
-        axis = any("axis_sample_error_relative" in r for r in c.get("rfm", {}).values())
-        if axis:
-            md.append("The samples on the axis (r = 0) are shown apart ('axis vs FEM', the same measure); the "
-                      "others lie off it.")
-            md.append("")
-        md.append("| solver | Phi_R [J/rad] | vs FEM limit | indicator | samples vs FEM | "
-                  + ("axis vs FEM | " if axis else "") + "K_1 | K vs FEM | time [s] |")
-        md.append("|---|---|---|---|---|" + ("---|" if axis else "") + "---|---|---|")
-        for lk in numbered(f, "L"):
-            row = f[lk]
-            rel = abs(row["reissner"] - f["extrapolated_energy"]) / abs(f["extrapolated_energy"])
-            md.append(f"| FEM Q2 {lk} ({row['dofs']} DoFs) | {row['reissner']:.10e} | {rel:.1e} | | | "
-                      + ("| " if axis else "") + f"{k_1(row)} | | {row['seconds']:.2f} |")
-        fa = c.get("fem_adaptive")
-        if fa:
-            md.append(f"| FEM Q2 adaptive, tolerance {fa['tolerance']:g} ({fa['dofs']} DoFs, "
-                      f"{len(fa['cycles'])} cycles) | {fa['reissner']:.10e} | {fa['energy_error_relative']:.1e} | | | "
-                      + ("| " if axis else "") + f"{k_1(fa)} | | {fa['seconds']:.2f} |")
-        def cells(r, axis=axis):
-            k_err = r.get("intensity_error_relative")
-            on_axis = f"{r['axis_sample_error_relative']:.1e} | " if axis else ""
-            return (f"{r['sample_error_relative']:.1e} | {on_axis}{k_1(r)} | "
-                    f"{'' if k_err is None else f'{k_err:.1e}'}")
-        degree_rows(md, ax, c, (("rfm", "RFM"), ("rfm_without_vertex_columns", "RFM without vertex columns")),
-                    cells)
-        md.append("")
-        if axis:
-            last = numbered(c["rfm"], "p")[-1]
-            r = c["rfm"][last]
-            md.append(f"At p = {last[1:]} the intensities are {r['intensity_error_relative']:.1e} from the FEM's "
-                      f"(issue 24 asks 1 %), Phi_R {r['energy_error_relative']:.1e} from its limit (the issue asks "
-                      f"1e-6: not reached), the samples off the axis {r['sample_error_relative']:.1e} and those on "
-                      f"the axis {r['axis_sample_error_relative']:.1e} of the largest sample stress: the axis values "
-                      "do not converge with p. The section is not a rectangle, so the axis parity of 6.7 is off "
-                      "(issue 24 item 5, open here).")
-            md.append("")
-        decorate(ax, "degree p", "Phi_R against the FEM's limit (relative); indicator", key.replace("_", " "))
+        corner_case_rows(md, ax, key, title, corners[key])
     md.append(f"![energy error and indicator against p]({save(fig, out_dir, 'corners_convergence.png')})")
     md.append("")
     md += traction_jump_rows(corners, out_dir)
+    md += hub_temperature_rows(corners, out_dir)
     return md
+
+
+def hub_temperature_rows(corners, out_dir):
+    """Section 9.5: issue 24's tapered hub under a temperature field (full mode): the corner
+    case's table, and sigma_zz at the issue's two samples from both solvers."""
+    c = corners.get("tapered_hub_temperature")
+    if not c:
+        return []
+    md = []
+    fig, ax = plt.subplots(1, 1, figsize=(5, 4))
+    corner_case_rows(md, ax, "tapered_hub_temperature",
+                     "9.5 Issue 24's tapered hub under the temperature T = 100 r + 100 z [K]", c)
+    md.append(f"![energy error and indicator against p]({save(fig, out_dir, 'corners_hub_temperature.png')})")
+    md.append("")
+    finest = numbered(c["fem"], "L")[-1]
+    reference = c["fem"][finest]["samples"][:2]
+    where = [f"({s['r']:g}, {s['z']:g})" for s in reference]
+    md.append(f"sigma_zz [MPa] at the issue's two samples; the RFM's difference from the FEM's {finest} in "
+              "brackets (issue 24 asks 0.2 % at the defaults). The first sample is the vertex where the "
+              "symmetry plane meets the inner arc; the second lies inside.")
+    md.append("")
+    md.append(f"| solver | sigma_zz {where[0]} | sigma_zz {where[1]} |")
+    md.append("|---|---|---|")
+    for lk in numbered(c["fem"], "L"):
+        s = c["fem"][lk]["samples"][:2]
+        md.append(f"| FEM Q2 {lk} | {s[0]['sigma'][1] / 1e6:.3f} | {s[1]['sigma'][1] / 1e6:.3f} |")
+    for rk, label in (("rfm", "RFM"), ("rfm_without_vertex_columns", "RFM without vertex columns")):
+        for pk in numbered(c.get(rk, {}), "p"):
+            s = c[rk][pk]["samples"][:2]
+            cells = [f"{x['sigma'][1] / 1e6:.3f} ({(x['sigma'][1] - y['sigma'][1]) / abs(y['sigma'][1]):+.2%})"
+                     for x, y in zip(s, reference)]
+            md.append(f"| {label} p = {pk[1:]} | {cells[0]} | {cells[1]} |")
+    md.append("")
+    last = numbered(c["rfm"], "p")[-1]
+    off = [(x["sigma"][1] - y["sigma"][1]) / abs(y["sigma"][1]) for x, y in zip(c["rfm"][last]["samples"][:2], reference)]
+    held = [abs(x) <= 2e-3 for x in off]
+    md.append(f"At p = {last[1:]}: {off[0]:+.2%} at {where[0]} and {off[1]:+.2%} at {where[1]}; the issue's 0.2 % "
+              + ("holds at both." if all(held) else
+                 "does not hold at " + " or ".join(w for w, h in zip(where, held) if not h) + ".")
+              + " The vertex's K and the energy converge; the value at the symmetry plane's vertex does not follow "
+              "them (issue 24, open).")
+    md.append("")
+    return md
+
+
+def corner_case_rows(md, ax, key, title, c):
+    """One case of section 9 (`corners`' corner_case): the FEM's levels and adaptive row, the RFM
+    with and without the vertex's columns against p (table rows and curves on ax)."""
+    f = c["fem"]
+    md.append(f"### {title}")
+    md.append("")
+    md.append(f"Problem: `{c['problem_file']}`. FEM energy limit {f['extrapolated_energy']:.10e} J/rad "
+              f"(observed order {f['observed_order_energy']:.2f} in energy; the finest level "
+              f"{f['estimated_error_relative']:.1e} from it).")
+    md.append("")
+    def k_1(row):
+        k = row.get("intensities")
+        return f"{k[0]['K'][0]:.6e}" if k else ""
+
+    axis = any("axis_sample_error_relative" in r for r in c.get("rfm", {}).values())
+    if axis:
+        md.append("The samples on the axis (r = 0) are shown apart ('axis vs FEM', the same measure); the "
+                  "others lie off it.")
+        md.append("")
+    md.append("| solver | Phi_R [J/rad] | vs FEM limit | indicator | samples vs FEM | "
+              + ("axis vs FEM | " if axis else "") + "K_1 | K vs FEM | time [s] |")
+    md.append("|---|---|---|---|---|" + ("---|" if axis else "") + "---|---|---|")
+    for lk in numbered(f, "L"):
+        row = f[lk]
+        rel = abs(row["reissner"] - f["extrapolated_energy"]) / abs(f["extrapolated_energy"])
+        md.append(f"| FEM Q2 {lk} ({row['dofs']} DoFs) | {row['reissner']:.10e} | {rel:.1e} | | | "
+                  + ("| " if axis else "") + f"{k_1(row)} | | {row['seconds']:.2f} |")
+    fa = c.get("fem_adaptive")
+    if fa:
+        md.append(f"| FEM Q2 adaptive, tolerance {fa['tolerance']:g} ({fa['dofs']} DoFs, "
+                  f"{len(fa['cycles'])} cycles) | {fa['reissner']:.10e} | {fa['energy_error_relative']:.1e} | | | "
+                  + ("| " if axis else "") + f"{k_1(fa)} | | {fa['seconds']:.2f} |")
+    def cells(r, axis=axis):
+        k_err = r.get("intensity_error_relative")
+        on_axis = f"{r['axis_sample_error_relative']:.1e} | " if axis else ""
+        return (f"{r['sample_error_relative']:.1e} | {on_axis}{k_1(r)} | "
+                f"{'' if k_err is None else f'{k_err:.1e}'}")
+    degree_rows(md, ax, c, (("rfm", "RFM"), ("rfm_without_vertex_columns", "RFM without vertex columns")),
+                cells)
+    md.append("")
+    if axis:
+        last = numbered(c["rfm"], "p")[-1]
+        r = c["rfm"][last]
+        md.append(f"At p = {last[1:]} the intensities are {r['intensity_error_relative']:.1e} from the FEM's "
+                  f"(issue 24 asks 1 %), Phi_R {r['energy_error_relative']:.1e} from its limit (the issue asks "
+                  f"1e-6: not reached), the samples off the axis {r['sample_error_relative']:.1e} and those on "
+                  f"the axis {r['axis_sample_error_relative']:.1e} of the largest sample stress: the axis values "
+                  "do not converge with p. The section is not a rectangle, so the axis parity of 6.7 is off "
+                  "(issue 24 item 5, open here).")
+        md.append("")
+    decorate(ax, "degree p", "Phi_R against the FEM's limit (relative); indicator", key.replace("_", " "))
 
 
 def degree_rows(md, ax, c, variants, cells):

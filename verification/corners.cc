@@ -8,6 +8,7 @@
 //   3. Traction jumps (issue 24 item 4): a ring whose bore carries a pressure on its lower
 //      half (the jump on a straight face), and issue 24's tapered hub (the pressure on the
 //      inner arc ends at the bore), with and without the loaded wedge's field.
+//   4. The tapered hub under a temperature field instead of the pressure (full mode).
 //
 // For each: the RFM at the default settings (the vertex's modes and local columns,
 // rfm/spaces/vertex_enrichment.h) and without the vertex's columns, against p; the FEM (Q2 on
@@ -199,8 +200,14 @@ namespace
                        f.indicator(), sample_error,
                        on_axis ? fmt::format(" (on the axis {:.2e})", axis_error) : std::string(), k_error,
                        m.n_vertex_columns(), seconds);
+            nlohmann::json samples = nlohmann::json::array();
+            for (Eigen::Index i = 0; i < r.size(); ++i)
+              samples.push_back({{"r", r[i]},
+                                 {"z", z[i]},
+                                 {"sigma", {v.sigma(i, 0), v.sigma(i, 1), v.sigma(i, 2), v.sigma(i, 3)}}});
             c[key]["p" + std::to_string(p)] = {{"intensities", rfm::to_json(k)},
                                                {"intensity_error_relative", k_error},
+                                               {"samples", samples},
                                                {"reissner", f.reissner},
                                                {"lagrange", f.lagrange},
                                                {"castigliano", f.castigliano},
@@ -324,6 +331,12 @@ nlohmann::json run(const verification::DriverContext &context)
               full ? std::vector<int>{2, 3, 4} : std::vector<int>{1, 2, 3});
   if (full)
     results["tapered_hub"] = jump_case("tapered_hub_pressure.json", context, {8, 10, 12, 14}, {1, 2, 3});
+  // The same hub under the temperature T = 100 r + 100 z [K] instead of the pressure (issue 24
+  // item 8; no traction jump, the taper-neck vertex enriched), full mode only: FEM L = 1, 2, 3
+  // on graded meshes (0.4, 0.5 and 1.1 s alone), the RFM to p = 16.
+  if (full)
+    results["tapered_hub_temperature"] =
+      corner_case(context, "tapered_hub_temperature.json", degrees, {1, 2, 3});
   return results;
 }
 
