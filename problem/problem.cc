@@ -672,7 +672,8 @@ namespace axisym
                               "edge_extra_points", "edge_mode_degree", "local_levels",
                               "local_degree", "local_stress_degree", "local_first_box",
                               "local_max_box", "vertex_max_exponent", "vertex_mode_degree",
-                              "vertex_cutoff", "vertex_local_degree", "axis_parity"});
+                              "vertex_cutoff", "vertex_local_degree",
+                              "vertex_local_displacement_degree", "axis_parity"});
         if (r.has("degree") && r.has("tolerance"))
           fail("rfm", top.at("rfm"), "give rfm.degree (fixed p) or rfm.tolerance (p rises "
                                      "until the indicator is below it), not both");
@@ -722,6 +723,9 @@ namespace axisym
           p.rfm.vertex_mode_degree = r.integer("vertex_mode_degree", ranges::rfm_vertex_mode_degree);
         if (r.has("vertex_local_degree"))
           p.rfm.vertex_local_degree = r.integer("vertex_local_degree", ranges::rfm_vertex_local_degree);
+        if (r.has("vertex_local_displacement_degree"))
+          p.rfm.vertex_local_displacement_degree =
+            r.integer("vertex_local_displacement_degree", ranges::rfm_vertex_local_displacement_degree);
         if (r.has("axis_parity"))
           {
             if (!r.at("axis_parity").is_boolean())

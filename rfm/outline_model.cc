@@ -1045,7 +1045,9 @@ namespace rfm
         const axisym::Point t = leaving->tangent_at(0.0);
         vertices_.emplace_back(v.at, std::array<double, 2>{t.r, t.z}, wedge, std::move(modes),
                                options.vertex_cutoff * room, material_, options.vertex_mode_degree,
-                               options.vertex_local_degree);
+                               options.vertex_local_degree,
+                               std::min(options.vertex_local_displacement_degree,
+                                        options.vertex_local_degree));
         // The traces on the faces integrate graded toward v.
         for (std::size_t e = 0; e < split.edges().size(); ++e)
           {

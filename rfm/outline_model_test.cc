@@ -363,8 +363,9 @@ namespace rfm
   // 2^-1.09 to -0.4283127; sigma_zz(0.125, 0.05) = -1.50080 MPa at level 5, 0.04 % from level
   // 4). Without the vertex's columns Phi_R drifts away from it as p rises (-0.42856, -0.42908,
   // -0.42921 at p = 8, 12, 16; the sample 22 % off at p = 16); with them (the defaults: modes
-  // with Re lambda < 3 times 1, xi, eta and the smooth local columns of degree 4) Phi_R is
-  // within 1.9e-6 of it at p = 12, Phi_L within 2.3e-5, the sample within 0.04 %.
+  // with Re lambda < 3 times 1, xi, eta and the smooth local columns of degree 8 in the
+  // stresses, 4 in the displacements) Phi_R is within 1.0e-6 of it at p = 12 and Phi_L within
+  // 7.8e-6 (both local degrees 4: 1.9e-6 and 2.3e-5).
   TEST(OutlineModel, VertexModesMakeTheSteppedRingConverge)
   {
     axisym::Problem problem = axisym::parse_problem(axisym::testing::stepped_ring());
@@ -385,6 +386,38 @@ namespace rfm
     ASSERT_TRUE(without.ok()) << without.summary().message;
     EXPECT_EQ(without.n_vertex_columns(), 0);
     EXPECT_GT(std::abs(without.functionals().reissner / fem_energy - 1.0), 1e-3);
+  }
+
+  // The vertex's smooth stress columns outrank its displacement columns (degrees 8 and 4 by
+  // default; vertex_enrichment.h). The stepped ring moved to r = 10 m (plane strain, no hoop
+  // terms) under an end traction of 10 MPa on its top, against the FEM (fem_solve, Q2 graded
+  // toward the vertex, levels 3 and 4: Phi = -22.34210827, -22.34210946 J/rad). Measured at
+  // p = 12: Phi_L 9.9e-6 from it and the indicator 1.2e-5 with the defaults; with both
+  // degrees 8, 6.9e-5 and 5.3e-5; with both 4 (the defaults before), 8.0e-5 and 9.2e-5.
+  TEST(OutlineModel, VertexStressColumnsOutrankTheDisplacementOnes)
+  {
+    nlohmann::json j = axisym::testing::stepped_ring();
+    for (nlohmann::json &e : j["geometry"]["outline"])
+      for (const char *k : {"start", "line_to"})
+        if (e.contains(k))
+          e[k][0] = e[k][0].get<double>() + 10.0;
+    j["boundary"] = nlohmann::json::parse(R"({"top": {"traction": [0.0, 1.0e7]}, "bottom": {"symmetry": true}})");
+    const axisym::Problem problem = axisym::parse_problem(j);
+    const double fem_energy = -22.3421095;
+    DiscretizationOptions o = problem.rfm;
+    o.degree = 12;
+    ASSERT_EQ(o.vertex_local_degree, 8);
+    ASSERT_EQ(o.vertex_local_displacement_degree, 4);
+    const OutlineModel defaults(problem, o);
+    ASSERT_TRUE(defaults.ok()) << defaults.summary().message;
+    const Functionals f = defaults.functionals();
+    EXPECT_LT(std::abs(f.lagrange / fem_energy - 1.0), 2e-5);
+    EXPECT_LT(f.indicator(), 2.5e-5);
+    o.vertex_local_displacement_degree = 8;
+    const OutlineModel equal(problem, o);
+    ASSERT_TRUE(equal.ok()) << equal.summary().message;
+    EXPECT_GT(std::abs(equal.functionals().lagrange / fem_energy - 1.0), 4e-5);
+    EXPECT_GT(equal.functionals().indicator(), 4e-5);
   }
 
   // Issue 24 item 4: a pressure ending on a straight bore. The FEM's energy (Q2, uniform

@@ -16,7 +16,8 @@ namespace rfm
                                      const std::array<double, 2> leaving_direction,
                                      const Wedge &wedge, std::vector<WedgeMode> modes,
                                      const double cutoff_radius, const Material &material,
-                                     const int multiplier_degree, const int local_degree)
+                                     const int multiplier_degree, const int local_degree,
+                                     const int local_displacement_degree)
     : at_(at)
     , beta_(std::atan2(leaving_direction[1], leaving_direction[0]) + wedge.half_angle())
     , wedge_(wedge)
@@ -25,9 +26,13 @@ namespace rfm
     , material_(material)
     , multiplier_degree_(multiplier_degree)
     , local_degree_(local_degree)
+    , local_displacement_degree_(local_displacement_degree == -2 ? local_degree : local_displacement_degree)
   {
     if (!(cutoff_radius > 0.0))
       throw std::invalid_argument("VertexEnrichment: the cutoff radius must be positive");
+    if (local_displacement_degree_ > local_degree_ || local_displacement_degree_ < -1)
+      throw std::invalid_argument("VertexEnrichment: the local displacement degree must be in "
+                                  "[-1, local_degree]");
     if (multiplier_degree < 0)
       throw std::invalid_argument("VertexEnrichment: the multiplier degree must be >= 0");
     if (!(std::hypot(leaving_direction[0], leaving_direction[1]) > 0.0))
@@ -199,7 +204,7 @@ namespace rfm
               if (b > 0)
                 mono_z = b * std::pow(xi, a_pow) * std::pow(eta, b - 1) / cutoff_radius_;
               const Eigen::Index first = col;
-              for (std::size_t v = 0; v < vector_families_.size(); ++v)
+              for (std::size_t v = 0; v < vector_families_.size() && deg <= local_displacement_degree_; ++v)
                 {
                   const VectorFamily &fam = vector_families_[v];
                   // g = chi mono L, L the product of the scaled line functions.

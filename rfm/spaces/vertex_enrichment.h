@@ -34,6 +34,17 @@
 // stress worse (Phi_R 4.4e-6 -> 2.9e-5 off at p = 16, far samples 0.9 % -> 3.8 % at p = 12):
 // the displacement columns give them equilibrium.
 // With both, Phi_L is 2.3e-5 off at p = 12 and the far samples 0.6 % at p = 8 (4.4 % without).
+// But the displacement columns must stay of lower degree than the stress columns
+// (local_displacement_degree, OutlineModel: rfm.vertex_local_displacement_degree): in the
+// mixed principle the displacement is the multiplier of equilibrium, and where the stress
+// space cannot see a displacement column's strains the mixed solution's displacement falls
+// behind what its own space holds. Measured at p = 16 against the FEM's limit, with a
+// displacement-only Ritz solve on the same displacement space beside it (an experiment, not in
+// the code): on the stepped ring with both degrees 4, Phi_L of the mixed solution 7.7e-6 off,
+// of the Ritz solution 6.4e-7; with stresses of degree 8 or 12 over displacements of degree 4,
+// the mixed Phi_L 1.5e-6 and 1.2e-6. The same ring moved to r = 10 m (plane strain, no hoop
+// terms) under an end traction: both 4, mixed 5.2e-5 and Ritz 2.6e-7; stresses 8 over
+// displacements 4, mixed 1.6e-6; both 8, mixed 2.5e-5 while the Ritz one was 3e-8.
 // The stress families outnumber the displacement ones: the surplus columns pair with a zero
 // displacement column, which the basis transform drops (so the system is always solved in the
 // transformed basis when a vertex has local columns).
@@ -97,7 +108,8 @@ namespace rfm
     /// degree d >= 0.
     VertexEnrichment(axisym::Point at, std::array<double, 2> leaving_direction, const Wedge &wedge,
                      std::vector<WedgeMode> modes, double cutoff_radius, const Material &material,
-                     int multiplier_degree = 0, int local_degree = -1);
+                     int multiplier_degree = 0, int local_degree = -1,
+                     int local_displacement_degree = -2);
 
     const axisym::Point &vertex() const { return at_; }
     double cutoff_radius() const { return cutoff_radius_; }
@@ -118,9 +130,10 @@ namespace rfm
     Eigen::Index n_mode_columns() const { return n_fields() * columns_per_field(); }
     /// The local stress columns after the modes' (local_degree >= 0): chi q T with q a
     /// monomial xi^i eta^j (i + j <= local_degree) and T one of the smooth tensor families
-    /// that meet both face conditions; the first of them pair with the smooth displacement
-    /// columns chi q V (V a constant vector times the line functions of the faces where the
-    /// displacement is constrained), the others have a zero displacement column.
+    /// that meet both face conditions; for i + j <= local_displacement_degree the first of
+    /// them pair with the smooth displacement columns chi q V (V a constant vector times the
+    /// line functions of the faces where the displacement is constrained), the others have a
+    /// zero displacement column.
     Eigen::Index n_local_columns() const;
     Eigen::Index n_columns() const { return n_mode_columns() + n_local_columns(); }
 
@@ -146,6 +159,7 @@ namespace rfm
     Material material_;
     int multiplier_degree_;
     int local_degree_;
+    int local_displacement_degree_; ///< at most local_degree_
     /// A smooth stress family: (rr, zz, rz) tensor constants, the faces whose line function
     /// multiplies it (bit 1: the leaving face, bit 2: the arriving face), or the hoop stress.
     struct Family

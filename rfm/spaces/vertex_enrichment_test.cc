@@ -168,6 +168,43 @@ namespace rfm
       }
   }
 
+  // The smooth displacement columns stop at their own degree (rfm.vertex_local_displacement_
+  // degree): beyond it the local columns are stress columns only, and below it they are the
+  // same as when both degrees are equal.
+  TEST(VertexEnrichment, LocalDisplacementColumnsStopAtTheirDegree)
+  {
+    const Case c;
+    const Wedge w(c.angle, WedgeFace::free, WedgeFace::symmetry, 0.3);
+    const VertexEnrichment both(c.at, c.leaving, w, w.modes(2.5), 0.04, steel(), 1, 4, 4);
+    const VertexEnrichment fewer(c.at, c.leaving, w, w.modes(2.5), 0.04, steel(), 1, 4, 2);
+    ASSERT_EQ(both.n_columns(), fewer.n_columns());
+    const Eigen::VectorXd r = (Eigen::VectorXd(3) << 0.16, 0.13, 0.14).finished();
+    const Eigen::VectorXd z = (Eigen::VectorXd(3) << 0.11, 0.09, 0.075).finished();
+    const EdgeColumns a = both.evaluate(r, z), b = fewer.evaluate(r, z);
+    // Columns per degree of the local monomials: max(stress families, displacement families).
+    const Eigen::Index per_degree_block = both.n_local_columns() / 15; // (4 + 1)(4 + 2) / 2
+    const Eigen::Index first_beyond = both.n_mode_columns() + 6 * per_degree_block; // degree 3
+    Eigen::Index with_u_beyond = 0;
+    for (Eigen::Index j = 0; j < both.n_columns(); ++j)
+      {
+        for (int comp = 0; comp < 4; ++comp)
+          EXPECT_EQ(a.stress[comp].col(j), b.stress[comp].col(j)) << "column " << j;
+        const double ua = a.u[0].col(j).norm() + a.u[1].col(j).norm(), ub = b.u[0].col(j).norm() + b.u[1].col(j).norm();
+        if (j < first_beyond)
+          EXPECT_EQ(ua, ub) << "column " << j;
+        else
+          {
+            EXPECT_EQ(ub, 0.0) << "column " << j;
+            for (int comp = 0; comp < 4; ++comp)
+              EXPECT_EQ(b.strain[comp].col(j).norm(), 0.0) << "column " << j;
+            with_u_beyond += ua > 0.0;
+          }
+      }
+    EXPECT_GT(with_u_beyond, 0); // the equal degrees do have displacement columns there
+    EXPECT_THROW(VertexEnrichment(c.at, c.leaving, w, w.modes(2.5), 0.04, steel(), 1, 2, 3),
+                 std::invalid_argument);
+  }
+
   TEST(VertexEnrichment, ZeroOutsideTheSupportAndSingularAtTheVertex)
   {
     const Case c;
