@@ -106,9 +106,10 @@ namespace axisym
     double vertex_max_exponent = 3.0;
     int vertex_mode_degree = 1;
     double vertex_cutoff = 1.0;
-    /// The vertex's smooth stress columns: the cutoff times the monomials up to this degree
-    /// times the tensors that meet both faces' conditions (-1: none, and no smooth
-    /// displacement columns either).
+    /// The vertex's smooth stress columns: the cutoff times the monomials up to the degree
+    /// p / 2, but at least vertex_local_displacement_degree and at most this, times the
+    /// tensors that meet both faces' conditions (-1: none, and no smooth displacement
+    /// columns either).
     int vertex_local_degree = 8;
     /// The vertex's smooth displacement columns: the cutoff times the monomials up to this
     /// degree (at most vertex_local_degree) times the vectors that meet the faces' kinematic

@@ -193,8 +193,9 @@ namespace rfm
     /// outline off the axis between two straight parts without a die where the field is
     /// singular (singular_vertices: Re lambda < 1), the wedge's modes with Re lambda <
     /// rfm.vertex_max_exponent times the monomials up to rfm.vertex_mode_degree, and the
-    /// smooth local columns of degree rfm.vertex_local_degree (stresses) and
-    /// rfm.vertex_local_displacement_degree (displacements, at most the former), cut off at rfm.vertex_cutoff
+    /// smooth local columns of degree p / 2 within [rfm.vertex_local_displacement_degree,
+    /// rfm.vertex_local_degree] (stresses) and rfm.vertex_local_displacement_degree
+    /// (displacements, at most rfm.vertex_local_degree), cut off at rfm.vertex_cutoff
     /// times the room (each face, half of it where its other end is singular too; the
     /// distance to every other edge; clear of the contact edges' supports), as extra columns
     /// of both spaces after the edge modes; their products are integrated on the near-vertex

@@ -363,9 +363,9 @@ namespace rfm
   // 2^-1.09 to -0.4283127; sigma_zz(0.125, 0.05) = -1.50080 MPa at level 5, 0.04 % from level
   // 4). Without the vertex's columns Phi_R drifts away from it as p rises (-0.42856, -0.42908,
   // -0.42921 at p = 8, 12, 16; the sample 22 % off at p = 16); with them (the defaults: modes
-  // with Re lambda < 3 times 1, xi, eta and the smooth local columns of degree 8 in the
-  // stresses, 4 in the displacements) Phi_R is within 1.0e-6 of it at p = 12 and Phi_L within
-  // 7.8e-6 (both local degrees 4: 1.9e-6 and 2.3e-5).
+  // with Re lambda < 3 times 1, xi, eta and the smooth local columns of degree p / 2 = 6 in
+  // the stresses, 4 in the displacements) Phi_R is within 3.8e-7 of it at p = 12 and Phi_L
+  // within 8.8e-6 (both local degrees 4: 1.9e-6 and 2.3e-5).
   TEST(OutlineModel, VertexModesMakeTheSteppedRingConverge)
   {
     axisym::Problem problem = axisym::parse_problem(axisym::testing::stepped_ring());
@@ -388,12 +388,13 @@ namespace rfm
     EXPECT_GT(std::abs(without.functionals().reissner / fem_energy - 1.0), 1e-3);
   }
 
-  // The vertex's smooth stress columns outrank its displacement columns (degrees 8 and 4 by
-  // default; vertex_enrichment.h). The stepped ring moved to r = 10 m (plane strain, no hoop
-  // terms) under an end traction of 10 MPa on its top, against the FEM (fem_solve, Q2 graded
-  // toward the vertex, levels 3 and 4: Phi = -22.34210827, -22.34210946 J/rad). Measured at
-  // p = 12: Phi_L 9.9e-6 from it and the indicator 1.2e-5 with the defaults; with both
-  // degrees 8, 6.9e-5 and 5.3e-5; with both 4 (the defaults before), 8.0e-5 and 9.2e-5.
+  // The vertex's smooth stress columns outrank its displacement columns (degrees p / 2 and 4
+  // by default; vertex_enrichment.h). The stepped ring moved to r = 10 m (plane strain, no
+  // hoop terms) under an end traction of 10 MPa on its top, against the FEM (fem_solve, Q2
+  // graded toward the vertex, levels 3 and 4: Phi = -22.34210827, -22.34210946 J/rad).
+  // Measured at p = 12 (stresses of degree 6): Phi_L 1.8e-5 from it and the indicator 2.5e-5
+  // with the defaults; with the displacements at 6 too, 8.4e-5 and 8.6e-5; with both 4 (the
+  // defaults before), 8.0e-5 and 9.2e-5. At p = 16 (degree 8): 1.6e-6 and 1.5e-6.
   TEST(OutlineModel, VertexStressColumnsOutrankTheDisplacementOnes)
   {
     nlohmann::json j = axisym::testing::stepped_ring();
@@ -411,13 +412,13 @@ namespace rfm
     const OutlineModel defaults(problem, o);
     ASSERT_TRUE(defaults.ok()) << defaults.summary().message;
     const Functionals f = defaults.functionals();
-    EXPECT_LT(std::abs(f.lagrange / fem_energy - 1.0), 2e-5);
-    EXPECT_LT(f.indicator(), 2.5e-5);
-    o.vertex_local_displacement_degree = 8;
+    EXPECT_LT(std::abs(f.lagrange / fem_energy - 1.0), 3e-5);
+    EXPECT_LT(f.indicator(), 3.5e-5);
+    o.vertex_local_displacement_degree = 6;
     const OutlineModel equal(problem, o);
     ASSERT_TRUE(equal.ok()) << equal.summary().message;
-    EXPECT_GT(std::abs(equal.functionals().lagrange / fem_energy - 1.0), 4e-5);
-    EXPECT_GT(equal.functionals().indicator(), 4e-5);
+    EXPECT_GT(std::abs(equal.functionals().lagrange / fem_energy - 1.0), 6e-5);
+    EXPECT_GT(equal.functionals().indicator(), 6e-5);
   }
 
   // Issue 24 item 4: a pressure ending on a straight bore. The FEM's energy (Q2, uniform

@@ -35,7 +35,8 @@
 // the displacement columns give them equilibrium.
 // With both, Phi_L is 2.3e-5 off at p = 12 and the far samples 0.6 % at p = 8 (4.4 % without).
 // But the displacement columns must stay of lower degree than the stress columns
-// (local_displacement_degree, OutlineModel: rfm.vertex_local_displacement_degree): in the
+// (local_displacement_degree; OutlineModel takes rfm.vertex_local_displacement_degree for
+// them and p / 2 up to rfm.vertex_local_degree for the stresses): in the
 // mixed principle the displacement is the multiplier of equilibrium, and where the stress
 // space cannot see a displacement column's strains the mixed solution's displacement falls
 // behind what its own space holds. Measured at p = 16 against the FEM's limit, with a
