@@ -402,7 +402,8 @@ namespace rfm
       for (const char *k : {"start", "line_to"})
         if (e.contains(k))
           e[k][0] = e[k][0].get<double>() + 10.0;
-    j["boundary"] = nlohmann::json::parse(R"({"top": {"traction": [0.0, 1.0e7]}, "bottom": {"symmetry": true}})");
+    j["boundary"] =
+      nlohmann::json::parse(R"({"top": {"traction": [0.0, 1.0e7]}, "bottom": {"symmetry": true}})");
     const axisym::Problem problem = axisym::parse_problem(j);
     const double fem_energy = -22.3421095;
     DiscretizationOptions o = problem.rfm;

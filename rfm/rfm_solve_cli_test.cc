@@ -294,8 +294,8 @@ namespace
     // axis parity and with the vertex's smooth stress columns of degree 4 (the defaults this
     // test was made from): with the parity the indicator falls 3.7e-8, 6.7e-9 at p = 12, 16;
     // with the polynomials in r it grows from p = 14 to 16. (With today's stress columns of
-    // degree 8 and no parity it levels off instead: 1.6e-8, 2.2e-8, 2.3e-8, 2.6e-8 at p = 10
-    // to 16, growing at each step.)
+    // degree p / 2 and no parity it levels off instead: 7.3e-8, 2.5e-8, 1.9e-8, 2.6e-8 at
+    // p = 10 to 16.)
     std::ofstream(in) << R"({
       "rfm": {"axis_parity": false, "vertex_local_degree": 4},
       "geometry": {"outline": [

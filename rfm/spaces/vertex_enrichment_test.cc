@@ -189,7 +189,8 @@ namespace rfm
       {
         for (int comp = 0; comp < 4; ++comp)
           EXPECT_EQ(a.stress[comp].col(j), b.stress[comp].col(j)) << "column " << j;
-        const double ua = a.u[0].col(j).norm() + a.u[1].col(j).norm(), ub = b.u[0].col(j).norm() + b.u[1].col(j).norm();
+        const double ua = a.u[0].col(j).norm() + a.u[1].col(j).norm();
+        const double ub = b.u[0].col(j).norm() + b.u[1].col(j).norm();
         if (j < first_beyond)
           EXPECT_EQ(ua, ub) << "column " << j;
         else
