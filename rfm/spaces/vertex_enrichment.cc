@@ -26,7 +26,7 @@ namespace rfm
     , material_(material)
     , multiplier_degree_(multiplier_degree)
     , local_degree_(local_degree)
-    , local_displacement_degree_(local_displacement_degree == -2 ? local_degree : local_displacement_degree)
+    , local_displacement_degree_(local_displacement_degree)
   {
     if (!(cutoff_radius > 0.0))
       throw std::invalid_argument("VertexEnrichment: the cutoff radius must be positive");

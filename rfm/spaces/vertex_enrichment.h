@@ -105,12 +105,13 @@ namespace rfm
   public:
     /// The vertex at `at`, the unit direction of the face of the part leaving it (theta =
     /// -alpha), the wedge (its angle and faces, face_minus that of the leaving part), the
-    /// modes to enrich with (Wedge::modes), the cutoff radius rho_0 > 0 and the multiplier
-    /// degree d >= 0.
+    /// modes to enrich with (Wedge::modes), the cutoff radius rho_0 > 0, the multiplier
+    /// degree d >= 0 and the local columns' degrees (stresses; displacements, at most the
+    /// former; -1: none).
     VertexEnrichment(axisym::Point at, std::array<double, 2> leaving_direction, const Wedge &wedge,
                      std::vector<WedgeMode> modes, double cutoff_radius, const Material &material,
                      int multiplier_degree = 0, int local_degree = -1,
-                     int local_displacement_degree = -2);
+                     int local_displacement_degree = -1);
 
     const axisym::Point &vertex() const { return at_; }
     double cutoff_radius() const { return cutoff_radius_; }

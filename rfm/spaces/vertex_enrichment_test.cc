@@ -35,7 +35,8 @@ namespace rfm
                           const int degree, const double rho_0 = 0.04, const int local_degree = 2)
     {
       const Wedge w(c.angle, leaving_face, arriving_face, 0.3);
-      return VertexEnrichment(c.at, c.leaving, w, w.modes(2.5), rho_0, steel(), degree, local_degree);
+      return VertexEnrichment(c.at, c.leaving, w, w.modes(2.5), rho_0, steel(), degree, local_degree,
+                              local_degree);
     }
 
     // Points along a face at the distance t from the vertex, in the face's direction d.
