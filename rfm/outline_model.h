@@ -296,6 +296,12 @@ namespace rfm
     /// Builds vertices_ (after enrichments_) and grades the edge rule toward each vertex.
     void make_vertex_enrichments(const axisym::Problem &problem,
                                  const DiscretizationOptions &options, std::vector<int> &graded);
+    /// Gives `vertex` (at the vertex between the edges `arriving` and `leaving` of the body's
+    /// outline) the section support of its mode columns (VertexEnrichment::
+    /// set_section_support) when the section is star-shaped about it (true); else leaves the
+    /// disc (false).
+    bool set_section_support(VertexEnrichment &vertex, const axisym::Body &body, int arriving,
+                             int leaving);
     /// Builds enrichments_ and edges_; returns, per edge of the split body, which of its ends
     /// (bit 1 start, bit 2 end) is a zone end (the edge rule is graded there).
     std::vector<int> make_enrichments(const axisym::Problem &problem,
@@ -340,6 +346,19 @@ namespace rfm
     std::vector<bool> jump_rules_;
     Quadrature2D near_;      ///< the near-edge and near-vertex rules of all enrichments
     Eigen::MatrixXd gram_e_; ///< Gram matrix of the enrichment's displacement columns
+    /// With a vertex's section support: the Gram matrices of the polynomial displacement
+    /// columns (u_r's, then u_z's) on the near rules, against themselves and against the
+    /// enrichment's columns (values / l^2 and strains, as gram_e_), and the polynomial part
+    /// of the kept vertex columns in the solve's basis.
+    Eigen::MatrixXd gram_pp_, gram_pe_, vertex_projection_;
+    /// A vertex's mode columns cover the section (VertexEnrichment::section_support).
+    bool section_support() const
+    {
+      for (const VertexEnrichment &v : vertices_)
+        if (v.section_support())
+          return true;
+      return false;
+    }
   };
 
   /// Peak memory of one OutlineModel solve at options.degree [bytes], estimated before any

@@ -408,6 +408,7 @@ namespace rfm
     const double fem_energy = -22.3421095;
     DiscretizationOptions o = problem.rfm;
     o.degree = 12;
+    o.vertex_support = DiscretizationOptions::VertexSupport::local; // the disc's columns
     ASSERT_EQ(o.vertex_local_degree, 8);
     ASSERT_EQ(o.vertex_local_displacement_degree, 4);
     const OutlineModel defaults(problem, o);
@@ -420,6 +421,107 @@ namespace rfm
     ASSERT_TRUE(equal.ok()) << equal.summary().message;
     EXPECT_GT(std::abs(equal.functionals().lagrange / fem_energy - 1.0), 6e-5);
     EXPECT_GT(equal.functionals().indicator(), 6e-5);
+  }
+
+  // The section support of the modes (vertex_enrichment.h: set_section_support) on the ring
+  // of the test above, moved to r = 10 m, at p = 12 against the same FEM energy: Phi_L must
+  // stay above it (an admissible displacement: a rule too coarse on the rays can put it
+  // below) and come within 5e-6 of it (measured 2.5e-6), the indicator below 5e-6 (measured
+  // 2.3e-6), where the disc's columns leave 1.8e-5 and 2.5e-5.
+  TEST(OutlineModel, SectionSupportOfTheModesConvergesFaster)
+  {
+#if defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "two solves at p = 12 with 1e4 points of vertex rule: the Release run checks it";
+#endif
+    nlohmann::json j = axisym::testing::stepped_ring();
+    for (nlohmann::json &e : j["geometry"]["outline"])
+      for (const char *k : {"start", "line_to"})
+        if (e.contains(k))
+          e[k][0] = e[k][0].get<double>() + 10.0;
+    j["boundary"] =
+      nlohmann::json::parse(R"({"top": {"traction": [0.0, 1.0e7]}, "bottom": {"symmetry": true}})");
+    const axisym::Problem problem = axisym::parse_problem(j);
+    const double fem_energy = -22.3421095;
+    DiscretizationOptions o = problem.rfm;
+    o.degree = 12;
+    ASSERT_EQ(o.vertex_support, DiscretizationOptions::VertexSupport::section);
+    const OutlineModel section(problem, o);
+    ASSERT_TRUE(section.ok()) << section.summary().message;
+    ASSERT_EQ(section.vertex_enrichments().size(), 1u);
+    EXPECT_TRUE(section.vertex_enrichments()[0].section_support());
+    const Functionals f = section.functionals();
+    EXPECT_GT(f.lagrange, fem_energy * (1.0 + 1e-8));
+    EXPECT_LT(std::abs(f.lagrange / fem_energy - 1.0), 5e-6);
+    EXPECT_LT(f.indicator(), 5e-6);
+    o.vertex_support = DiscretizationOptions::VertexSupport::local;
+    const OutlineModel disc(problem, o);
+    ASSERT_TRUE(disc.ok()) << disc.summary().message;
+    EXPECT_FALSE(disc.vertex_enrichments()[0].section_support());
+    EXPECT_GT(disc.functionals().indicator(), 1e-5);
+  }
+
+  // The section support keeps every boundary condition identically: on the stepped shaft
+  // of issue 24 (the shoulder's vertex sees the whole section) the solved fields at p = 6
+  // (exact conditions hold for any coefficients) have free surfaces free, the end's traction,
+  // the mid-plane's symmetry and the axis' u_r = 0 to rounding.
+  TEST(OutlineModel, SectionSupportKeepsEveryConditionOfTheShaft)
+  {
+    const axisym::Problem problem = axisym::parse_problem(nlohmann::json::parse(R"({
+      "geometry": {"outline": [
+        {"start": [0.0, 0.0]}, {"line_to": [0.05, 0.0], "part": "mid_plane"},
+        {"line_to": [0.05, 0.1], "part": "large_surface"}, {"line_to": [0.03, 0.1], "part": "shoulder"},
+        {"line_to": [0.03, 0.2], "part": "small_surface"}, {"line_to": [0.0, 0.2], "part": "end"},
+        {"line_to": [0.0, 0.0], "part": "axis"}]},
+      "boundary": {"mid_plane": {"symmetry": true}, "end": {"traction": [0.0, 1.0e7]}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
+    DiscretizationOptions o = problem.rfm;
+    o.degree = 6;
+    const OutlineModel m(problem, o);
+    ASSERT_TRUE(m.ok()) << m.summary().message;
+    ASSERT_EQ(m.vertex_enrichments().size(), 1u);
+    ASSERT_TRUE(m.vertex_enrichments()[0].section_support());
+    const Eigen::VectorXd t = Eigen::VectorXd::LinSpaced(7, 0.05, 0.95);
+    const double s_tol = 1e-9 * 1e7, u_tol = 1e-12;
+    // (r, z) on each edge at the parameter t, and the conditions there.
+    auto on = [&](const double r0, const double z0, const double r1, const double z1) {
+      return m.evaluate((r0 + (r1 - r0) * t.array()).matrix(), (z0 + (z1 - z0) * t.array()).matrix());
+    };
+    const FieldValues large = on(0.05, 0.0, 0.05, 0.1), shoulder = on(0.05, 0.1, 0.03, 0.1);
+    const FieldValues small = on(0.03, 0.1, 0.03, 0.2), end = on(0.03, 0.2, 0.0, 0.2);
+    const FieldValues mid = on(0.0, 0.0, 0.05, 0.0), axis = on(0.0, 0.2, 0.0, 0.0);
+    for (Eigen::Index k = 0; k < t.size(); ++k)
+      {
+        EXPECT_NEAR(large.sigma(k, rr), 0.0, s_tol);
+        EXPECT_NEAR(large.sigma(k, rz), 0.0, s_tol);
+        EXPECT_NEAR(small.sigma(k, rr), 0.0, s_tol);
+        EXPECT_NEAR(small.sigma(k, rz), 0.0, s_tol);
+        EXPECT_NEAR(shoulder.sigma(k, zz), 0.0, s_tol);
+        EXPECT_NEAR(shoulder.sigma(k, rz), 0.0, s_tol);
+        EXPECT_NEAR(end.sigma(k, zz), 1e7, s_tol);
+        EXPECT_NEAR(end.sigma(k, rz), 0.0, s_tol);
+        EXPECT_NEAR(mid.sigma(k, rz), 0.0, s_tol);
+        EXPECT_NEAR(mid.u(k, 1), 0.0, u_tol);
+        EXPECT_NEAR(axis.u(k, 0), 0.0, u_tol);
+      }
+  }
+
+  // Where the section is not star-shaped about a re-entrant vertex (the hub of issue 24: the
+  // outer arc hides behind its 186-degree vertex from the taper-neck vertex) the disc stays,
+  // and the default gives the same columns as "local".
+  TEST(OutlineModel, SectionSupportFallsBackWhereTheVertexDoesNotSeeTheSection)
+  {
+    const axisym::Problem problem = axisym::parse_problem(axisym::testing::tapered_hub());
+    DiscretizationOptions o = problem.rfm;
+    o.degree = 6;
+    const OutlineModel section(problem, o);
+    ASSERT_TRUE(section.ok()) << section.summary().message;
+    ASSERT_FALSE(section.vertex_enrichments().empty());
+    for (const VertexEnrichment &v : section.vertex_enrichments())
+      EXPECT_FALSE(v.section_support());
+    o.vertex_support = DiscretizationOptions::VertexSupport::local;
+    const OutlineModel disc(problem, o);
+    ASSERT_TRUE(disc.ok()) << disc.summary().message;
+    EXPECT_EQ(section.functionals().reissner, disc.functionals().reissner);
   }
 
   // Issue 24 item 4: a pressure ending on a straight bore. The FEM's energy (Q2, uniform

@@ -468,7 +468,8 @@ namespace
                 {
                   enrichment = {{"columns", e.n_columns()},
                                 {"modes", e.modes().size()},
-                                {"cutoff_radius", e.cutoff_radius()}};
+                                {"cutoff_radius", e.cutoff_radius()},
+                                {"support", e.section_support() ? "section" : "local"}};
                   // The generalized stress intensities (vertex_intensity.h) over the support.
                   if (model->ok())
                     {

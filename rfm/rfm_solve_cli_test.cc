@@ -129,6 +129,7 @@ namespace
       Case{"vertex_mode_degree_large", with("/rfm", {{"vertex_mode_degree", 7}}),
            "rfm.vertex_mode_degree"},
       Case{"vertex_cutoff_zero", with("/rfm", {{"vertex_cutoff", 0.0}}), "rfm.vertex_cutoff"},
+      Case{"vertex_support_unknown", with("/rfm", {{"vertex_support", "global"}}), "rfm.vertex_support"},
       Case{"vertex_local_displacement_degree_large", with("/rfm", {{"vertex_local_displacement_degree", 13}}),
            "rfm.vertex_local_displacement_degree"},
       Case{"vertex_local_displacement_degree_low", with("/rfm", {{"vertex_local_displacement_degree", -2}}),
@@ -365,7 +366,18 @@ namespace
       ASSERT_FALSE(v.at("enrichment").is_null());
       EXPECT_GE(v.at("enrichment").at("modes").get<int>(), 2);
       EXPECT_GT(v.at("enrichment").at("cutoff_radius").get<double>(), 0.0);
+      // The section is star-shaped about the vertex: its modes cover it (the default).
+      EXPECT_EQ(v.at("enrichment").at("support"), "section");
       EXPECT_EQ(r.at("discretization").at("vertex_columns"), v.at("enrichment").at("columns"));
+    }
+    problem["rfm"] = {{"vertex_support", "local"}};
+    std::ofstream(in) << problem.dump();
+    {
+      const Outcome o = run(in.string() + " --degree 6 --output " + out.string());
+      EXPECT_EQ(o.status, 0) << o.err;
+      std::ifstream f(out);
+      const nlohmann::json r = nlohmann::json::parse(f);
+      EXPECT_EQ(r.at("diagnostics").at("singular_vertices")[0].at("enrichment").at("support"), "local");
     }
     problem["rfm"] = {{"vertex_max_exponent", 0.0}};
     std::ofstream(in) << problem.dump();

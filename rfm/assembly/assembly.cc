@@ -80,9 +80,10 @@ namespace rfm
 
     // 1. R11 border: - int X_all . C X_e, mirrored.
     Eigen::MatrixXd corner = Eigen::MatrixXd::Zero(n_e, n_e);
+    Eigen::MatrixXd top(s_e, n_e);
     for (int k = 0; k < n_stress_components; ++k)
       {
-        sys.r11.block(k * n, s_e, n, n_e) = bg.middleCols(k * n_e, n_e);
+        top.middleRows(k * n, n) = bg.middleCols(k * n_e, n_e);
         corner.noalias() -= e.stress[k].transpose() * cx[k];
       }
     if (n_b > 0)
@@ -90,16 +91,17 @@ namespace rfm
         Eigen::MatrixXd border = Eigen::MatrixXd::Zero(n_b, n_e);
         for (int k = 0; k < n_stress_components; ++k)
           border.noalias() -= (*boundary)[k].transpose() * cx[k];
-        sys.r11.block(4 * n, s_e, n_b, n_e) = border;
+        top.bottomRows(n_b) = border;
       }
-    sys.r11.block(s_e, s_e, n_e, n_e) = corner;
-    sys.r11.block(s_e, 0, n_e, s_e) = sys.r11.block(0, s_e, s_e, n_e).transpose();
+    sys.r11.block(0, s_e, s_e, n_e) += top;
+    sys.r11.block(s_e, 0, n_e, s_e) += top.transpose();
+    sys.r11.block(s_e, s_e, n_e, n_e) += corner;
 
     // 2. R12 borders: int X_all . e(Phi_e) and int X_e . e(Phi_poly).
     corner.setZero();
     for (int k = 0; k < n_stress_components; ++k)
       {
-        sys.r12.block(k * n, u_e, n, n_e) = bg.middleCols((4 + k) * n_e, n_e);
+        sys.r12.block(k * n, u_e, n, n_e) += bg.middleCols((4 + k) * n_e, n_e);
         corner.noalias() += wx[k].transpose() * e.strain[k];
       }
     if (n_b > 0)
@@ -107,12 +109,12 @@ namespace rfm
         Eigen::MatrixXd border = Eigen::MatrixXd::Zero(n_b, n_e);
         for (int k = 0; k < n_stress_components; ++k)
           border.noalias() += (mu.asDiagonal() * (*boundary)[k]).transpose() * e.strain[k];
-        sys.r12.block(4 * n, u_e, n_b, n_e) = border;
+        sys.r12.block(4 * n, u_e, n_b, n_e) += border;
       }
-    sys.r12.block(s_e, u_e, n_e, n_e) = corner;
-    sys.r12.block(s_e, 0, n_e, n) =
+    sys.r12.block(s_e, u_e, n_e, n_e) += corner;
+    sys.r12.block(s_e, 0, n_e, n) +=
       (bg.middleCols(8 * n_e, n_e) + bg_r.leftCols(n_e) + bg_z.leftCols(n_e)).transpose();
-    sys.r12.block(s_e, n, n_e, n) =
+    sys.r12.block(s_e, n, n_e, n) +=
       (bg.middleCols(9 * n_e, n_e) + bg_r.rightCols(n_e) + bg_z.rightCols(n_e)).transpose();
 
     // 3. p_s rows: int X_e . (e(u0) - C s0 - e_th).

@@ -97,7 +97,8 @@ namespace rfm
   /// The products with enrichment columns (edge_modes.h) on a near-edge rule with points r
   /// and per-radian measure mu, where b, s, d and e are the polynomial basis, the structures and
   /// the enrichment columns: the borders of R11 and R12 with every other column and the
-  /// enrichment rows of p_s and p_u, written into `sys` (sized by the caller) in the layout
+  /// enrichment rows of p_s and p_u, added to `sys` (sized by the caller; so a rule may come in
+  /// blocks of points) in the layout
   /// q_s = (4 N polynomial, n_b boundary columns, n_e enrichment), q_u = (2 N, n_e);
   /// `boundary` the outline's boundary columns at the points (nullptr: n_b = 0), and the
   /// thermal strain and body force at the points when there are body loads (nullptr: none).

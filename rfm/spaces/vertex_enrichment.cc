@@ -110,12 +110,19 @@ namespace rfm
       double s[4], e[3], u[2];
     };
     std::vector<Field> fields(static_cast<std::size_t>(n_fields()));
+    const bool wide = section_support();
+    VertexFactors factors;
+    if (wide)
+      factors = factors_(r, z);
+    // The modes' monomials: scaled by rho_0 in the disc, by the section's reach without it.
+    const double mode_scale = wide ? length_scale_ : cutoff_radius_;
     for (Eigen::Index k = 0; k < n; ++k)
       {
         const double dr = r[k] - at_.r, dz = z[k] - at_.z;
         const double rho = std::hypot(dr, dz);
         const Cutoff chi = edge_cutoff(rho, cutoff_radius_);
-        if (chi.value == 0.0 && chi.derivative == 0.0)
+        const bool in_disc = !(chi.value == 0.0 && chi.derivative == 0.0);
+        if (!in_disc && !wide)
           continue;
         const double phi = std::atan2(dz, dr);
         double theta = phi - beta_;
@@ -147,12 +154,17 @@ namespace rfm
         // grad chi = chi'(rho) (dr, dz) / rho (chi'(0) = 0).
         const double chi_r = rho > 0.0 ? chi.derivative * dr / rho : 0.0;
         const double chi_z = rho > 0.0 ? chi.derivative * dz / rho : 0.0;
-        const double xi = dr / cutoff_radius_, eta = dz / cutoff_radius_;
+        // The modes' scalar factor and its gradient: the cutoff, or the section support's
+        // displacement factor (its stress factors per component below).
+        const double f_u = wide ? factors.u[k] : chi.value;
+        const double f_r = wide ? factors.u_r[k] : chi_r;
+        const double f_z = wide ? factors.u_z[k] : chi_z;
+        const double xi_m = dr / mode_scale, eta_m = dz / mode_scale;
         xi_pow[0] = eta_pow[0] = 1.0;
         for (int i = 1; i <= d; ++i)
           {
-            xi_pow[i] = xi_pow[i - 1] * xi;
-            eta_pow[i] = eta_pow[i - 1] * eta;
+            xi_pow[i] = xi_pow[i - 1] * xi_m;
+            eta_pow[i] = eta_pow[i - 1] * eta_m;
           }
         for (std::size_t j = 0; j < fields.size(); ++j)
           {
@@ -161,16 +173,16 @@ namespace rfm
             for (int deg = 0; deg <= d; ++deg)
               for (int b = 0; b <= deg; ++b, ++col)
                 {
-                  // g = chi xi^a eta^b (a + b = deg) and its gradient.
+                  // g = f xi^a eta^b (a + b = deg) and its gradient.
                   const int a = deg - b;
                   const double mono = xi_pow[a] * eta_pow[b];
-                  const double mono_r = a > 0 ? a * xi_pow[a - 1] * eta_pow[b] / cutoff_radius_ : 0.0;
-                  const double mono_z = b > 0 ? b * xi_pow[a] * eta_pow[b - 1] / cutoff_radius_ : 0.0;
-                  const double g = chi.value * mono;
-                  const double g_r = chi_r * mono + chi.value * mono_r;
-                  const double g_z = chi_z * mono + chi.value * mono_z;
+                  const double mono_r = a > 0 ? a * xi_pow[a - 1] * eta_pow[b] / mode_scale : 0.0;
+                  const double mono_z = b > 0 ? b * xi_pow[a] * eta_pow[b - 1] / mode_scale : 0.0;
+                  const double g = f_u * mono;
+                  const double g_r = f_r * mono + f_u * mono_r;
+                  const double g_z = f_z * mono + f_u * mono_z;
                   for (int comp = 0; comp < n_stress_components; ++comp)
-                    out.stress[comp](k, col) = g * fl.s[comp];
+                    out.stress[comp](k, col) = (wide ? factors.stress(k, comp) * mono : g) * fl.s[comp];
                   out.u[0](k, col) = g * fl.u[0];
                   out.u[1](k, col) = g * fl.u[1];
                   // e(g u) = g e(u) + sym(grad g (x) u), engineering shear.
@@ -180,7 +192,10 @@ namespace rfm
                   out.strain[rz](k, col) = g * fl.e[2] + g_z * fl.u[0] + g_r * fl.u[1];
                 }
           }
+        if (!in_disc)
+          continue;
         // The local stress columns: chi q (l_0 / rho_0)^a (l_1 / rho_0)^b T.
+        const double xi = dr / cutoff_radius_, eta = dz / cutoff_radius_;
         Eigen::Index col = n_mode_columns();
         const double l[2] = {(dr * normal_[0][0] + dz * normal_[0][1]) / cutoff_radius_,
                              (dr * normal_[1][0] + dz * normal_[1][1]) / cutoff_radius_};
@@ -301,6 +316,94 @@ namespace rfm
               }
           }
       }
+    return q;
+  }
+
+  void VertexEnrichment::set_section_support(VertexFactorFunction factors,
+                                             std::function<double(double)> reach,
+                                             std::vector<double> ray_breaks, const double length_scale)
+  {
+    if (!factors || !reach || !(length_scale > 0.0))
+      throw std::invalid_argument("VertexEnrichment::set_section_support: factors, reach and a "
+                                  "positive length scale are needed");
+    factors_ = std::move(factors);
+    reach_ = std::move(reach);
+    ray_breaks_ = std::move(ray_breaks);
+    length_scale_ = length_scale;
+  }
+
+  Quadrature2D VertexEnrichment::section_rule(const int n_radial, const int n_angular,
+                                              const int n_layers) const
+  {
+    if (!section_support())
+      throw std::logic_error("VertexEnrichment::section_rule: no section support");
+    const Quadrature2D disc = near_rule(n_radial, n_angular, n_layers);
+    // Angular breaks in theta (about the bisector): the faces, the faces' lines continued into
+    // the body at a reflex vertex, and the directions of the outline's vertices, where the
+    // reach has a kink.
+    const double alpha = wedge_.half_angle();
+    std::vector<double> breaks{-alpha, alpha};
+    if (alpha > 0.5 * pi + 1e-12)
+      breaks.push_back(pi - alpha), breaks.push_back(alpha - pi);
+    for (const double phi : ray_breaks_)
+      {
+        double theta = phi - beta_;
+        theta -= 2.0 * pi * std::round(theta / (2.0 * pi));
+        if (theta > -alpha && theta < alpha)
+          breaks.push_back(theta);
+      }
+    std::sort(breaks.begin(), breaks.end());
+    std::vector<double> panels;
+    for (std::size_t i = 0; i + 1 < breaks.size(); ++i)
+      {
+        const double a = breaks[i], b = breaks[i + 1];
+        if (!(b - a > 1e-9))
+          continue;
+        const int pieces = static_cast<int>(std::ceil((b - a) / (0.125 * pi) - 1e-9));
+        for (int k = 0; k < pieces; ++k)
+          panels.push_back(a + (b - a) * k / pieces);
+      }
+    panels.push_back(alpha);
+    const GaussRule1D ga = gauss_legendre(n_angular), gr = gauss_legendre(n_radial);
+    std::vector<double> r, z, w;
+    const double rho_0 = cutoff_radius_;
+    for (std::size_t p = 0; p + 1 < panels.size(); ++p)
+      {
+        const double a = panels[p], b = panels[p + 1];
+        for (Eigen::Index k = 0; k < ga.nodes.size(); ++k)
+          {
+            const double theta = a + (b - a) * 0.5 * (ga.nodes[k] + 1.0);
+            const double w_theta = (b - a) * 0.5 * ga.weights[k];
+            const double phi = theta + beta_;
+            const double c = std::cos(phi), s = std::sin(phi);
+            const double reach = reach_(phi);
+            if (!(reach > rho_0))
+              continue;
+            // [rho_0, reach] in geometric pieces of ratio at most 3.
+            const int pieces = std::max(1, static_cast<int>(std::ceil(std::log(reach / rho_0) / std::log(3.0) - 1e-9)));
+            const double ratio = std::pow(reach / rho_0, 1.0 / pieces);
+            double lo = rho_0;
+            for (int piece = 0; piece < pieces; ++piece)
+              {
+                const double hi = piece + 1 == pieces ? reach : lo * ratio;
+                for (Eigen::Index i = 0; i < gr.nodes.size(); ++i)
+                  {
+                    const double rho = lo + (hi - lo) * 0.5 * (gr.nodes[i] + 1.0);
+                    r.push_back(at_.r + rho * c);
+                    z.push_back(at_.z + rho * s);
+                    w.push_back(w_theta * (hi - lo) * 0.5 * gr.weights[i] * rho);
+                  }
+                lo = hi;
+              }
+          }
+      }
+    Quadrature2D q;
+    const Eigen::Index n_disc = disc.weights.size(), n_rays = static_cast<Eigen::Index>(w.size());
+    q.r.resize(n_disc + n_rays), q.z.resize(n_disc + n_rays), q.weights.resize(n_disc + n_rays);
+    q.r.head(n_disc) = disc.r, q.z.head(n_disc) = disc.z, q.weights.head(n_disc) = disc.weights;
+    q.r.tail(n_rays) = Eigen::Map<const Eigen::VectorXd>(r.data(), n_rays);
+    q.z.tail(n_rays) = Eigen::Map<const Eigen::VectorXd>(z.data(), n_rays);
+    q.weights.tail(n_rays) = Eigen::Map<const Eigen::VectorXd>(w.data(), n_rays);
     return q;
   }
 } // namespace rfm

@@ -251,4 +251,137 @@ namespace rfm
         EXPECT_NEAR(sum / exact, 1.0, 1e-10) << "a = " << a;
       }
   }
+
+  namespace
+  {
+    // The stepped ring's section, 0.1 <= r <= 0.2, 0 <= z <= 0.2 without r < 0.15, z > 0.1:
+    // the reach from its re-entrant vertex (0.15, 0.1) in the direction phi, and smooth
+    // factors that vanish on some of its other edges (the stress ones per component, the
+    // displacement one with its gradient), 1 at the vertex.
+    double stepped_ring_reach(const double phi)
+    {
+      const double c = std::cos(phi), s = std::sin(phi);
+      double t = 1e300;
+      if (c > 1e-15)
+        t = std::min(t, (0.2 - 0.15) / c); // outer
+      if (c < -1e-15)
+        t = std::min(t, (0.1 - 0.15) / c); // inner (below the step)
+      if (s > 1e-15)
+        t = std::min(t, (0.2 - 0.1) / s); // top
+      if (s < -1e-15)
+        t = std::min(t, (0.0 - 0.1) / s); // bottom
+      return t;
+    }
+    VertexFactors stepped_ring_factors(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                       const Eigen::Ref<const Eigen::VectorXd> &z)
+    {
+      VertexFactors f;
+      const Eigen::Index n = r.size();
+      f.stress.resize(n, 4);
+      f.stress.col(rr) = (0.2 - r.array()) / 0.05;
+      f.stress.col(zz) = (0.2 - z.array()) / 0.1;
+      f.stress.col(tt).setOnes();
+      f.stress.col(rz) = f.stress.col(rr).cwiseProduct(f.stress.col(zz)).cwiseProduct(z / 0.1);
+      f.u = z / 0.1;
+      f.u_r = Eigen::VectorXd::Zero(n);
+      f.u_z = Eigen::VectorXd::Constant(n, 10.0);
+      return f;
+    }
+  } // namespace
+
+  // With the section support the mode columns are the factors times the monomials times the
+  // modes, without the cutoff: nonzero beyond rho_0, strains the derivatives of the
+  // displacements (the factor's gradient included), each stress component carrying its own
+  // factor; the local columns stay in the disc, unchanged.
+  TEST(VertexEnrichment, SectionSupportStrainsAreTheDerivativesOfItsColumns)
+  {
+    const Case c;
+    VertexEnrichment disc = make(c, WedgeFace::free, WedgeFace::free, 1);
+    VertexEnrichment v = disc;
+    v.set_section_support(stepped_ring_factors, stepped_ring_reach,
+                          {std::atan2(0.1, 0.05), std::atan2(-0.1, 0.05), std::atan2(-0.1, -0.05)}, 0.15);
+    ASSERT_TRUE(v.section_support());
+    // Near the vertex and far from it (beyond rho_0 = 0.04).
+    const Eigen::VectorXd r = (Eigen::VectorXd(6) << 0.16, 0.13, 0.17, 0.19, 0.11, 0.195).finished();
+    const Eigen::VectorXd z = (Eigen::VectorXd(6) << 0.11, 0.09, 0.08, 0.18, 0.02, 0.01).finished();
+    const double h = 1e-7;
+    const Eigen::VectorXd one = Eigen::VectorXd::Ones(r.size());
+    const EdgeColumns e = v.evaluate(r, z), d = disc.evaluate(r, z);
+    const EdgeColumns rp = v.evaluate(r + h * one, z), rm = v.evaluate(r - h * one, z);
+    const EdgeColumns zp = v.evaluate(r, z + h * one), zm = v.evaluate(r, z - h * one);
+    const VertexFactors f = stepped_ring_factors(r, z);
+    for (Eigen::Index j = 0; j < v.n_columns(); ++j)
+      for (Eigen::Index k = 0; k < r.size(); ++k)
+        {
+          const double scale = e.strain[0].col(j).cwiseAbs().maxCoeff() +
+                               e.strain[1].col(j).cwiseAbs().maxCoeff() +
+                               e.strain[3].col(j).cwiseAbs().maxCoeff();
+          const double e_rr = (rp.u[0](k, j) - rm.u[0](k, j)) / (2 * h);
+          const double e_zz = (zp.u[1](k, j) - zm.u[1](k, j)) / (2 * h);
+          const double g_rz = (zp.u[0](k, j) - zm.u[0](k, j)) / (2 * h) +
+                              (rp.u[1](k, j) - rm.u[1](k, j)) / (2 * h);
+          EXPECT_NEAR(e.strain[0](k, j), e_rr, 1e-6 * scale) << "column " << j << " point " << k;
+          EXPECT_NEAR(e.strain[1](k, j), e_zz, 1e-6 * scale) << "column " << j << " point " << k;
+          EXPECT_NEAR(e.strain[3](k, j), g_rz, 1e-6 * scale) << "column " << j << " point " << k;
+          EXPECT_NEAR(e.strain[2](k, j), e.u[0](k, j) / r[k], 1e-12 * scale);
+          if (j >= v.n_mode_columns())
+            {
+              // The local columns: as in the disc.
+              for (int comp = 0; comp < 4; ++comp)
+                EXPECT_EQ(e.stress[comp](k, j), d.stress[comp](k, j));
+              EXPECT_EQ(e.u[0](k, j), d.u[0](k, j));
+              continue;
+            }
+          // A mode's first column (monomial 1): the disc's column over its cutoff, times the
+          // factors.
+          const double chi = edge_cutoff(std::hypot(r[k] - c.at.r, z[k] - c.at.z), 0.04).value;
+          if (j % v.columns_per_field() == 0 && chi > 0.0)
+            {
+              for (int comp = 0; comp < 4; ++comp)
+                EXPECT_NEAR(e.stress[comp](k, j), f.stress(k, comp) * d.stress[comp](k, j) / chi,
+                            1e-12 * std::abs(e.stress[comp](k, j)))
+                  << "column " << j << " point " << k;
+              EXPECT_NEAR(e.u[1](k, j), f.u[k] * d.u[1](k, j) / chi, 1e-12 * std::abs(e.u[1](k, j)));
+            }
+        }
+    // Beyond the disc the modes go on, and the local columns are zero.
+    for (Eigen::Index j = 0; j < v.n_mode_columns(); ++j)
+      EXPECT_GT(e.stress[rr].col(j).tail(3).cwiseAbs().maxCoeff() + e.u[0].col(j).tail(3).cwiseAbs().maxCoeff(), 0.0);
+    for (Eigen::Index j = v.n_mode_columns(); j < v.n_columns(); ++j)
+      EXPECT_EQ(e.u[0].col(j).tail(3).cwiseAbs().maxCoeff() + e.stress[rr].col(j).tail(3).cwiseAbs().maxCoeff(), 0.0);
+  }
+
+  // The section rule: the disc of near_rule and the rays out to the reach, so that it
+  // integrates over the whole stepped ring (area 0.015 m^2, int r dA = 2.2396e-3 m^3 from the
+  // two rectangles) and keeps the disc's singular integrals.
+  TEST(VertexEnrichment, SectionRuleIntegratesTheWholeSection)
+  {
+    const Case c;
+    VertexEnrichment v = make(c, WedgeFace::free, WedgeFace::free, 1);
+    v.set_section_support(stepped_ring_factors, stepped_ring_reach,
+                          {std::atan2(0.1, 0.05), std::atan2(-0.1, 0.05), std::atan2(-0.1, -0.05)}, 0.15);
+    const Quadrature2D q = v.section_rule(12, 12);
+    const double area = 0.1 * 0.1 + 0.05 * 0.1;
+    const double moment = 0.5 * (0.2 * 0.2 - 0.1 * 0.1) * 0.1 + 0.5 * (0.2 * 0.2 - 0.15 * 0.15) * 0.1;
+    EXPECT_NEAR(q.weights.sum() / area, 1.0, 1e-12);
+    EXPECT_NEAR(q.weights.dot(q.r) / moment, 1.0, 1e-12);
+    for (Eigen::Index k = 0; k < q.n_points(); ++k)
+      {
+        EXPECT_GE(q.r[k], 0.1 - 1e-12);
+        EXPECT_LE(q.r[k], 0.2 + 1e-12);
+        EXPECT_GE(q.z[k], -1e-12);
+        EXPECT_LE(q.z[k], 0.2 + 1e-12);
+        EXPECT_FALSE(q.r[k] < 0.15 - 1e-12 && q.z[k] > 0.1 + 1e-12) << "a point in the missing quadrant";
+      }
+    // int rho^(2 lambda - 2) dA over the disc's part (rho < rho_0): as near_rule's.
+    const double a = 2 * 0.5444837 - 2, rho_0 = 0.04;
+    double sum = 0;
+    for (Eigen::Index k = 0; k < q.n_points(); ++k)
+      {
+        const double rho = std::hypot(q.r[k] - c.at.r, q.z[k] - c.at.z);
+        if (rho < rho_0 * (1 + 1e-12))
+          sum += q.weights[k] * std::pow(rho, a);
+      }
+    EXPECT_NEAR(sum / (1.5 * pi * std::pow(rho_0, a + 2) / (a + 2)), 1.0, 1e-10);
+  }
 } // namespace rfm
