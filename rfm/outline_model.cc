@@ -360,6 +360,32 @@ namespace rfm
           near_.weights.segment(at, q.weights.size()) = q.weights;
           at += q.weights.size();
         }
+      // With a section rule: the points inside some rule's disc first, then those beyond
+      // every disc, where only the section-supported modes' columns are nonzero (the
+      // assembly takes just those there: 50 of the stepped ring's 350 vertex columns).
+      n_near_in_discs_ = total;
+      if (any_section)
+        {
+          std::vector<Eigen::Index> order(static_cast<std::size_t>(total));
+          for (Eigen::Index k = 0; k < total; ++k)
+            order[static_cast<std::size_t>(k)] = k;
+          auto in_a_disc = [&](const Eigen::Index k) {
+            for (const Pull &p : pulls)
+              if (std::hypot(near_.r[k] - p.at.r, near_.z[k] - p.at.z) < p.radius)
+                return true;
+            return false;
+          };
+          const auto middle = std::stable_partition(order.begin(), order.end(), in_a_disc);
+          n_near_in_discs_ = static_cast<Eigen::Index>(middle - order.begin());
+          Quadrature2D sorted;
+          sorted.r.resize(total), sorted.z.resize(total), sorted.weights.resize(total);
+          for (Eigen::Index k = 0; k < total; ++k)
+            {
+              const Eigen::Index from = order[static_cast<std::size_t>(k)];
+              sorted.r[k] = near_.r[from], sorted.z[k] = near_.z[from], sorted.weights[k] = near_.weights[from];
+            }
+          near_ = std::move(sorted);
+        }
     }
     // A mirrored section stands for itself and its image in z = 0: every integral twice (the
     // system scales as a whole; the functionals and forces refer to the whole body).
@@ -480,9 +506,12 @@ namespace rfm
             // (their smooth parts are polynomials times omegas too): each is taken apart
             // from its projection on them (in the norm of gram_e_, on the near rules, which
             // cover the section), and the combinations whose remainder is below 1e-9 of
-            // their own norm are dropped. The stepped shaft's indicator at p = 12 and 16:
-            // 5.2e-5 and 1.6e-5 with 1e-9, 7.2e-5 and 1.8e-5 with 1e-11 (1.2e-6 against
-            // 2.3e-6 on the ring at r = 10 m of outline_model_test at p = 12).
+            // their own norm are dropped. Indicator at p = 12 and 16 (multipliers of degree
+            // 3) with the cut at 1e-7, 1e-9, 1e-11: the stepped shaft 4.7e-5 and 1.7e-5,
+            // 3.4e-5 and 1.5e-5, 3.3e-5 and 1.2e-5; the stepped ring 1.2e-6 and 3.9e-7,
+            // 1.3e-6 and 4.1e-7, 1.4e-6 and 4.7e-7; the ring at r = 10 m of
+            // outline_model_test 3.0e-7 and 2.1e-7, 3.4e-7 and 1.3e-7, 8.4e-7 and 1.6e-7.
+            gram_pp_.triangularView<Eigen::StrictlyUpper>() = gram_pp_.transpose();
             const Eigen::MatrixXd w = orthonormal(gram_pp_);
             dropped = 0; // the polynomial directions are counted by tu's own transform
             const Eigen::MatrixXd c_pe = w.transpose() * gram_pe_.rightCols(n_vert);
@@ -779,15 +808,34 @@ namespace rfm
             gram_pe_.setZero(2 * n, n_e);
             gram_pp_.setZero(2 * n, 2 * n);
           }
-        for (Eigen::Index k0 = 0; k0 < n_near; k0 += block)
+        // Beyond every disc only the section-supported modes' columns are nonzero.
+        std::vector<Eigen::Index> mode_columns;
+        {
+          Eigen::Index at = n_edge_columns();
+          for (const VertexEnrichment &v : vertices_)
+            {
+              for (Eigen::Index j = 0; v.section_support() && j < v.n_mode_columns(); ++j)
+                mode_columns.push_back(at + j);
+              at += v.n_columns();
+            }
+        }
+        for (Eigen::Index k0 = 0; k0 < n_near;)
           {
-            const Eigen::Index m = std::min(block, n_near - k0);
+            // Blocks do not straddle the end of the points in discs.
+            const bool beyond = k0 >= n_near_in_discs_;
+            const Eigen::Index m = std::min(block, (beyond ? n_near : n_near_in_discs_) - k0);
             const Eigen::VectorXd nr = near_.r.segment(k0, m), nz = near_.z.segment(k0, m);
             const Eigen::VectorXd near_mu = near_.weights.segment(k0, m).cwiseProduct(nr);
+            k0 += m;
             const BasisValues nb = basis_values(nr, nz);
             const OutlineStressValues ns = stress_values(nr, nz);
             const DisplacementStructureValues nd = as_structure(structures_.displacement(nr, nz));
-            const EdgeColumns ec = enrichment_columns(nr, nz);
+            const EdgeColumns ec = beyond ? section_mode_columns(nr, nz) : enrichment_columns(nr, nz);
+            const std::vector<Eigen::Index> *subset = beyond ? &mode_columns : nullptr;
+            // The enrichment columns that ec holds.
+            std::vector<Eigen::Index> held(static_cast<std::size_t>(ec.u[0].cols()));
+            for (std::size_t j = 0; j < held.size(); ++j)
+              held[j] = subset ? (*subset)[j] : static_cast<Eigen::Index>(j);
             Eigen::VectorXd th;
             Eigen::MatrixXd f;
             if (loads_.thermal())
@@ -807,38 +855,49 @@ namespace rfm
               }
             add_enrichment_blocks(near_mu, nr, nb, polynomial_part(ns), nd, ec,
                                   n_b > 0 ? &ns.boundary : nullptr, loads_.thermal() ? &th : nullptr,
-                                  loads_.body_force() ? &f : nullptr, c, sys);
-            gram_e_.noalias() += (ec.u[0].transpose() * (near_mu.asDiagonal() * ec.u[0]) +
-                                  ec.u[1].transpose() * (near_mu.asDiagonal() * ec.u[1])) /
-                                 (l * l);
+                                  loads_.body_force() ? &f : nullptr, c, sys, subset);
+            Eigen::MatrixXd g = (ec.u[0].transpose() * (near_mu.asDiagonal() * ec.u[0]) +
+                                 ec.u[1].transpose() * (near_mu.asDiagonal() * ec.u[1])) /
+                                (l * l);
             for (int k = 0; k < n_stress_components; ++k)
-              gram_e_.noalias() += ec.strain[k].transpose() * (near_mu.asDiagonal() * ec.strain[k]);
+              g.noalias() += ec.strain[k].transpose() * (near_mu.asDiagonal() * ec.strain[k]);
+            gram_e_(held, held) += g;
             if (section_support())
               {
                 // The polynomial displacement columns (u_r's, then u_z's) against themselves and
                 // the enrichment's, in the same norm (values / l^2 and strains), for the
                 // solve's projection of the vertex columns on them.
+                // u_r's columns enter e_rr, e_tt and e_rz, u_z's e_zz and e_rz: the Gram
+                // matrix's diagonal blocks as rank updates of the square-root-weighted values
+                // and strains (the lower triangles), its off-diagonal block from e_rz alone.
                 const DisplacementBasisValues v = displacement_basis(nb, nd);
                 const Eigen::Index np = v.value[0].cols();
-                Eigen::MatrixXd pv(m, 2 * np), pe[4];
+                const Eigen::VectorXd sq = near_mu.cwiseSqrt();
+                Eigen::MatrixXd x0(4 * m, np), x1(3 * m, np);
+                x0.topRows(m) = sq.asDiagonal() * v.value[0] / l;
+                x0.middleRows(m, m) = sq.asDiagonal() * v.d_r[0];
+                x0.middleRows(2 * m, m) = sq.cwiseQuotient(nr).asDiagonal() * v.value[0];
+                x0.bottomRows(m) = sq.asDiagonal() * v.d_z[0];
+                x1.topRows(m) = sq.asDiagonal() * v.value[1] / l;
+                x1.middleRows(m, m) = sq.asDiagonal() * v.d_z[1];
+                x1.bottomRows(m) = sq.asDiagonal() * v.d_r[1];
+                gram_pp_.topLeftCorner(np, np).selfadjointView<Eigen::Lower>().rankUpdate(x0.transpose());
+                gram_pp_.bottomRightCorner(np, np).selfadjointView<Eigen::Lower>().rankUpdate(x1.transpose());
+                gram_pp_.bottomLeftCorner(np, np).noalias() += x1.bottomRows(m).transpose() * x0.bottomRows(m);
+                // Against the enrichment's columns.
+                Eigen::MatrixXd ge(2 * np, ec.u[0].cols());
+                const Eigen::MatrixXd wu0 = near_mu.asDiagonal() * ec.u[0], wu1 = near_mu.asDiagonal() * ec.u[1];
+                Eigen::MatrixXd we[4];
                 for (int c4 = 0; c4 < 4; ++c4)
-                  pe[c4].setZero(m, 2 * np);
-                pv.leftCols(np) = v.value[0], pv.rightCols(np) = v.value[1];
-                pe[rr].leftCols(np) = v.d_r[0];
-                pe[tt].leftCols(np) = nr.cwiseInverse().asDiagonal() * v.value[0];
-                pe[rz].leftCols(np) = v.d_z[0];
-                pe[zz].rightCols(np) = v.d_z[1];
-                pe[rz].rightCols(np) = v.d_r[1];
-                const Eigen::MatrixXd wpv = near_mu.asDiagonal() * pv;
-                gram_pp_.noalias() += pv.transpose() * wpv / (l * l);
-                for (int c4 = 0; c4 < 4; ++c4)
-                  {
-                    const Eigen::MatrixXd wpe = near_mu.asDiagonal() * pe[c4];
-                    gram_pp_.noalias() += pe[c4].transpose() * wpe;
-                    gram_pe_.noalias() += wpe.transpose() * ec.strain[c4];
-                  }
-                gram_pe_.topRows(np).noalias() += (near_mu.asDiagonal() * v.value[0]).transpose() * ec.u[0] / (l * l);
-                gram_pe_.bottomRows(np).noalias() += (near_mu.asDiagonal() * v.value[1]).transpose() * ec.u[1] / (l * l);
+                  we[c4] = near_mu.asDiagonal() * ec.strain[c4];
+                ge.topRows(np).noalias() = v.value[0].transpose() * wu0 / (l * l);
+                ge.topRows(np).noalias() += v.d_r[0].transpose() * we[rr];
+                ge.topRows(np).noalias() += (nr.cwiseInverse().asDiagonal() * v.value[0]).transpose() * we[tt];
+                ge.topRows(np).noalias() += v.d_z[0].transpose() * we[rz];
+                ge.bottomRows(np).noalias() = v.value[1].transpose() * wu1 / (l * l);
+                ge.bottomRows(np).noalias() += v.d_z[1].transpose() * we[zz];
+                ge.bottomRows(np).noalias() += v.d_r[1].transpose() * we[rz];
+                gram_pe_(Eigen::placeholders::all, held) += ge;
               }
           }
       }
@@ -952,6 +1011,21 @@ namespace rfm
       all.set_columns(at, en.evaluate(r, z)), at += en.n_columns();
     for (const VertexEnrichment &en : vertices_)
       all.set_columns(at, en.evaluate(r, z)), at += en.n_columns();
+    return all;
+  }
+
+  EdgeColumns OutlineModel::section_mode_columns(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                                 const Eigen::Ref<const Eigen::VectorXd> &z) const
+  {
+    Eigen::Index n = 0;
+    for (const VertexEnrichment &en : vertices_)
+      if (en.section_support())
+        n += en.n_mode_columns();
+    EdgeColumns all = EdgeColumns::zero(r.size(), n);
+    Eigen::Index at = 0;
+    for (const VertexEnrichment &en : vertices_)
+      if (en.section_support())
+        all.set_columns(at, en.evaluate(r, z, true)), at += en.n_mode_columns();
     return all;
   }
 
@@ -1213,18 +1287,19 @@ namespace rfm
                                options.vertex_cutoff * room, material_, options.vertex_mode_degree,
                                local_stress_degree, local_displacement_degree);
         // The section support (vertex_enrichment.h) at a re-entrant vertex, with the modes'
-        // multipliers of degree 3 at least: on the stepped shaft at p = 12 and 16 the
-        // indicator was 8.5e-5 and 4.1e-5 with degree 1 (Phi_L 8.9e-5, 4.1e-5 from the FEM's
-        // limit), 5.2e-5 and 1.6e-5 with 3 (Phi_L 4.3e-5, 9.0e-6).
+        // multipliers of degree 4 at least. Indicator at p = 12 and 16 with degree 1, 3, 4, 5:
+        // the stepped shaft 9.8e-5 and 4.5e-5, 3.4e-5 and 1.5e-5, 3.2e-5 and 1.3e-5, 2.0e-5
+        // and 1.0e-5; the stepped ring 2.5e-6 and 6.4e-7, 1.3e-6 and 4.1e-7, 1.0e-6 and
+        // 3.5e-7, 9.6e-7 and 3.5e-7; assembly at p = 16 2.1, 2.9, 3.0, 3.4 s on the shaft.
         if (options.vertex_support == DiscretizationOptions::VertexSupport::section &&
             v.angle > 3.14159265358979323846 * (1.0 + 1e-9) && zones_.empty() && !has_die)
           {
             const int a = static_cast<int>(arriving - edges.data()), l = static_cast<int>(leaving - edges.data());
-            if (set_section_support(vertices_.back(), body, a, l) && options.vertex_mode_degree < 3)
+            if (set_section_support(vertices_.back(), body, a, l) && options.vertex_mode_degree < 4)
               {
                 const VertexEnrichment disc = vertices_.back();
                 vertices_.back() = VertexEnrichment(v.at, std::array<double, 2>{t.r, t.z}, wedge, disc.modes(),
-                                                    disc.cutoff_radius(), material_, 3, local_stress_degree,
+                                                    disc.cutoff_radius(), material_, 4, local_stress_degree,
                                                     local_displacement_degree);
                 set_section_support(vertices_.back(), body, a, l);
               }

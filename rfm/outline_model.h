@@ -278,6 +278,10 @@ namespace rfm
     Eigen::Index n_enrichment_columns() const { return n_edge_columns() + n_vertex_columns(); }
     EdgeColumns enrichment_columns(const Eigen::Ref<const Eigen::VectorXd> &r,
                                    const Eigen::Ref<const Eigen::VectorXd> &z) const;
+    /// The mode columns of the vertices with the section support, in the enrichment's order:
+    /// the only enrichment columns that are nonzero beyond every disc.
+    EdgeColumns section_mode_columns(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                     const Eigen::Ref<const Eigen::VectorXd> &z) const;
     /// Builds jumps_ (after vertices_); jump_rules_[i]: jump i has a near rule of its own
     /// (false where it shares a vertex enrichment's).
     void make_traction_jumps(const axisym::Problem &problem, const DiscretizationOptions &options);
@@ -345,6 +349,9 @@ namespace rfm
     std::vector<TractionJump> jumps_;
     std::vector<bool> jump_rules_;
     Quadrature2D near_;      ///< the near-edge and near-vertex rules of all enrichments
+    /// The first n_near_in_discs_ points of near_ lie in some rule's disc (all of them
+    /// without a section rule); beyond them only section_mode_columns are nonzero.
+    Eigen::Index n_near_in_discs_ = 0;
     Eigen::MatrixXd gram_e_; ///< Gram matrix of the enrichment's displacement columns
     /// With a vertex's section support: the Gram matrices of the polynomial displacement
     /// columns (u_r's, then u_z's) on the near rules, against themselves and against the

@@ -37,11 +37,22 @@ namespace rfm
                              const StressStructureValues &s, const DisplacementStructureValues &d,
                              const EdgeColumns &e, const std::array<Eigen::MatrixXd, 4> *boundary,
                              const Eigen::VectorXd *thermal_strain, const Eigen::MatrixXd *body_force,
-                             const Eigen::Matrix4d &c, ReissnerSystem &sys)
+                             const Eigen::Matrix4d &c, ReissnerSystem &sys,
+                             const std::vector<Eigen::Index> *columns)
   {
     const Eigen::Index n = b.value.cols(), n_e = e.stress[0].cols(), n_p = r.size();
     const Eigen::Index n_b = boundary ? (*boundary)[0].cols() : 0;
     const Eigen::Index s_e = 4 * n + n_b, u_e = 2 * n; // the enrichment's first unknowns
+    // Where e's columns go among the enrichment's unknowns (all of them, in order, without
+    // `columns`).
+    std::vector<Eigen::Index> at_s(static_cast<std::size_t>(n_e)), at_u(static_cast<std::size_t>(n_e));
+    for (Eigen::Index j = 0; j < n_e; ++j)
+      {
+        const Eigen::Index col = columns ? (*columns)[static_cast<std::size_t>(j)] : j;
+        at_s[static_cast<std::size_t>(j)] = s_e + col;
+        at_u[static_cast<std::size_t>(j)] = u_e + col;
+      }
+    const auto to_s = Eigen::seqN(0, s_e), to_poly = Eigen::seqN(0, n);
 
     // Per component k: weighted enrichment stresses mu X_e,k and mu C X_e (row k).
     Eigen::MatrixXd wx[n_stress_components], cx[n_stress_components];
@@ -93,15 +104,15 @@ namespace rfm
           border.noalias() -= (*boundary)[k].transpose() * cx[k];
         top.bottomRows(n_b) = border;
       }
-    sys.r11.block(0, s_e, s_e, n_e) += top;
-    sys.r11.block(s_e, 0, n_e, s_e) += top.transpose();
-    sys.r11.block(s_e, s_e, n_e, n_e) += corner;
+    sys.r11(to_s, at_s) += top;
+    sys.r11(at_s, to_s) += top.transpose();
+    sys.r11(at_s, at_s) += corner;
 
     // 2. R12 borders: int X_all . e(Phi_e) and int X_e . e(Phi_poly).
     corner.setZero();
     for (int k = 0; k < n_stress_components; ++k)
       {
-        sys.r12.block(k * n, u_e, n, n_e) += bg.middleCols((4 + k) * n_e, n_e);
+        sys.r12(Eigen::seqN(k * n, n), at_u) += bg.middleCols((4 + k) * n_e, n_e);
         corner.noalias() += wx[k].transpose() * e.strain[k];
       }
     if (n_b > 0)
@@ -109,12 +120,12 @@ namespace rfm
         Eigen::MatrixXd border = Eigen::MatrixXd::Zero(n_b, n_e);
         for (int k = 0; k < n_stress_components; ++k)
           border.noalias() += (mu.asDiagonal() * (*boundary)[k]).transpose() * e.strain[k];
-        sys.r12.block(4 * n, u_e, n_b, n_e) += border;
+        sys.r12(Eigen::seqN(4 * n, n_b), at_u) += border;
       }
-    sys.r12.block(s_e, u_e, n_e, n_e) += corner;
-    sys.r12.block(s_e, 0, n_e, n) +=
+    sys.r12(at_s, at_u) += corner;
+    sys.r12(at_s, to_poly) +=
       (bg.middleCols(8 * n_e, n_e) + bg_r.leftCols(n_e) + bg_z.leftCols(n_e)).transpose();
-    sys.r12.block(s_e, n, n_e, n) +=
+    sys.r12(at_s, Eigen::seqN(n, n)) +=
       (bg.middleCols(9 * n_e, n_e) + bg_r.rightCols(n_e) + bg_z.rightCols(n_e)).transpose();
 
     // 3. p_s rows: int X_e . (e(u0) - C s0 - e_th).
@@ -122,15 +133,19 @@ namespace rfm
     if (thermal_strain)
       for (const int k : {rr, zz, tt})
         residual.col(k) -= *thermal_strain;
+    Eigen::VectorXd rows = Eigen::VectorXd::Zero(n_e);
     for (int k = 0; k < n_stress_components; ++k)
-      sys.p_s.segment(s_e, n_e).noalias() += wx[k].transpose() * residual.col(k);
+      rows.noalias() += wx[k].transpose() * residual.col(k);
+    sys.p_s(at_s) += rows;
 
     // 4. p_u rows: int s0 . e(Phi_e) - int f . Phi_e (the traction term is the caller's).
+    rows.setZero();
     for (int k = 0; k < n_stress_components; ++k)
-      sys.p_u.segment(u_e, n_e).noalias() += e.strain[k].transpose() * mu.cwiseProduct(s.s0.col(k));
+      rows.noalias() += e.strain[k].transpose() * mu.cwiseProduct(s.s0.col(k));
     if (body_force)
       for (int m = 0; m < 2; ++m)
-        sys.p_u.segment(u_e, n_e).noalias() -= e.u[m].transpose() * mu.cwiseProduct(body_force->col(m));
+        rows.noalias() -= e.u[m].transpose() * mu.cwiseProduct(body_force->col(m));
+    sys.p_u(at_u) += rows;
   }
 
   Eigen::Index assembly_chunk_points(Eigen::Index n_basis_functions, long l2_bytes)

@@ -33,6 +33,8 @@
 
 #include <Eigen/Core>
 
+#include <vector>
+
 #include <array>
 
 namespace rfm
@@ -103,12 +105,15 @@ namespace rfm
   /// `boundary` the outline's boundary columns at the points (nullptr: n_b = 0), and the
   /// thermal strain and body force at the points when there are body loads (nullptr: none).
   /// The traction term of p_u (- int_St t . Phi_e) is the caller's: it is a boundary integral.
+  /// `columns` (optional): e holds only these of the enrichment's columns, in this order (the
+  /// others are zero at the points: a vertex's local columns beyond its disc).
   void add_enrichment_blocks(const Eigen::Ref<const Eigen::VectorXd> &mu,
                              const Eigen::Ref<const Eigen::VectorXd> &r, const BasisValues &b,
                              const StressStructureValues &s, const DisplacementStructureValues &d,
                              const EdgeColumns &e, const std::array<Eigen::MatrixXd, 4> *boundary,
                              const Eigen::VectorXd *thermal_strain, const Eigen::MatrixXd *body_force,
-                             const Eigen::Matrix4d &c, ReissnerSystem &sys);
+                             const Eigen::Matrix4d &c, ReissnerSystem &sys,
+                             const std::vector<Eigen::Index> *columns = nullptr);
 
   /// e(u0) - C s0 at points (n_points x 4): the data of p_s.
   Eigen::MatrixXd initial_strain_residual(const StressStructureValues &s,

@@ -169,4 +169,90 @@ namespace rfm
     EXPECT_TRUE(full.p_s == lower.p_s);
     EXPECT_TRUE(full.p_u == lower.p_u);
   }
+
+  // add_enrichment_blocks with `columns`: the enrichment columns given are placed where the
+  // list says, and the result equals the call with all columns where the others are zero
+  // (as a vertex's local columns beyond its disc); two blocks of points add up to one call.
+  TEST(Assembly, EnrichmentColumnSubsetLandsInItsPlaces)
+  {
+    const Inputs in = make_inputs(2);
+    const Eigen::Index n = in.n, n_p = in.q.n_points(), n_e = 5;
+    // Five smooth "enrichment" columns, of which 1 and 3 are zero.
+    EdgeColumns all = EdgeColumns::zero(n_p, n_e);
+    for (Eigen::Index j : {0, 2, 4})
+      for (Eigen::Index k = 0; k < n_p; ++k)
+        {
+          const double r = in.q.r[k], z = in.q.z[k], a = 1.0 + j;
+          for (int c = 0; c < 4; ++c)
+            all.stress[c](k, j) = std::cos(a * r + c * z);
+          all.u[0](k, j) = std::sin(a * z) * r, all.u[1](k, j) = std::cos(a * r) * z;
+          all.strain[rr](k, j) = std::sin(a * z), all.strain[zz](k, j) = std::cos(a * r);
+          all.strain[tt](k, j) = std::sin(a * z);
+          all.strain[rz](k, j) = a * std::cos(a * z) * r - a * std::sin(a * r) * z;
+        }
+    auto empty = [&]() {
+      ReissnerSystem sys;
+      sys.r11.setZero(4 * n + n_e, 4 * n + n_e);
+      sys.r12.setZero(4 * n + n_e, 2 * n + n_e);
+      sys.p_s.setZero(4 * n + n_e);
+      sys.p_u.setZero(2 * n + n_e);
+      return sys;
+    };
+    const Eigen::Matrix4d c = Material{}.compliance();
+    ReissnerSystem full = empty(), part = empty();
+    const Eigen::MatrixXd body_force = Eigen::MatrixXd::Constant(n_p, 2, 7.85e4); // so that p_u is not 0
+    add_enrichment_blocks(in.mu, in.q.r, in.b, in.s, in.d, all, nullptr, nullptr, &body_force, c, full);
+    const std::vector<Eigen::Index> held{0, 2, 4};
+    EdgeColumns some = EdgeColumns::zero(n_p, 3);
+    for (int k = 0; k < 3; ++k)
+      {
+        for (int comp = 0; comp < 4; ++comp)
+          some.stress[comp].col(k) = all.stress[comp].col(held[k]), some.strain[comp].col(k) = all.strain[comp].col(held[k]);
+        for (int m = 0; m < 2; ++m)
+          some.u[m].col(k) = all.u[m].col(held[k]);
+      }
+    // In two blocks of points.
+    const Eigen::Index h = n_p / 2;
+    auto rows = [](const EdgeColumns &e, const Eigen::Index from, const Eigen::Index count) {
+      EdgeColumns out;
+      for (int comp = 0; comp < 4; ++comp)
+        out.stress[comp] = e.stress[comp].middleRows(from, count), out.strain[comp] = e.strain[comp].middleRows(from, count);
+      for (int m = 0; m < 2; ++m)
+        out.u[m] = e.u[m].middleRows(from, count);
+      return out;
+    };
+    auto basis_rows = [&](const Eigen::Index from, const Eigen::Index count) {
+      return BasisValues{in.b.value.middleRows(from, count), in.b.d_r.middleRows(from, count),
+                         in.b.d_z.middleRows(from, count)};
+    };
+    auto stress_rows = [&](const Eigen::Index from, const Eigen::Index count) {
+      return StressStructureValues{in.s.omega.middleRows(from, count), in.s.s0.middleRows(from, count)};
+    };
+    auto displacement_rows = [&](const Eigen::Index from, const Eigen::Index count) {
+      return DisplacementStructureValues{in.d.omega.middleRows(from, count), in.d.omega_r.middleRows(from, count),
+                                         in.d.omega_z.middleRows(from, count), in.d.u0.middleRows(from, count),
+                                         in.d.u0_r.middleRows(from, count), in.d.u0_z.middleRows(from, count)};
+    };
+    for (const auto &[from, count] : {std::pair{Eigen::Index{0}, h}, std::pair{h, n_p - h}})
+      {
+        const Eigen::MatrixXd f = body_force.middleRows(from, count);
+        add_enrichment_blocks(in.mu.segment(from, count), in.q.r.segment(from, count), basis_rows(from, count),
+                              stress_rows(from, count), displacement_rows(from, count), rows(some, from, count),
+                              nullptr, nullptr, &f, c, part, &held);
+      }
+    const double s11 = full.r11.cwiseAbs().maxCoeff(), s12 = full.r12.cwiseAbs().maxCoeff();
+    ASSERT_GT(s11, 0.0);
+    EXPECT_LT((full.r11 - part.r11).cwiseAbs().maxCoeff(), 1e-13 * s11);
+    EXPECT_LT((full.r12 - part.r12).cwiseAbs().maxCoeff(), 1e-13 * s12);
+    EXPECT_LT((full.p_s - part.p_s).cwiseAbs().maxCoeff(), 1e-13 * full.p_s.cwiseAbs().maxCoeff());
+    EXPECT_LT((full.p_u - part.p_u).cwiseAbs().maxCoeff(), 1e-13 * full.p_u.cwiseAbs().maxCoeff());
+    // The zero columns' rows and columns stay zero; the held ones are not.
+    for (const Eigen::Index j : {1, 3})
+      {
+        EXPECT_EQ(part.r11.col(4 * n + j).cwiseAbs().maxCoeff(), 0.0);
+        EXPECT_EQ(part.r12.col(2 * n + j).cwiseAbs().maxCoeff(), 0.0);
+      }
+    EXPECT_GT(part.r11.col(4 * n + 2).cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_GT(part.r12.col(2 * n + 4).cwiseAbs().maxCoeff(), 0.0);
+  }
 } // namespace rfm

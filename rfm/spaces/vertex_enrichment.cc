@@ -95,10 +95,11 @@ namespace rfm
   }
 
   EdgeColumns VertexEnrichment::evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
-                                         const Eigen::Ref<const Eigen::VectorXd> &z) const
+                                         const Eigen::Ref<const Eigen::VectorXd> &z,
+                                         const bool modes_only) const
   {
     const Eigen::Index n = r.size(), per = columns_per_field();
-    EdgeColumns out = EdgeColumns::zero(n, n_columns());
+    EdgeColumns out = EdgeColumns::zero(n, modes_only ? n_mode_columns() : n_columns());
     const double nu = material_.poisson_ratio;
     const double mu = material_.youngs_modulus / (2.0 * (1.0 + nu));
     const int d = multiplier_degree_;
@@ -192,7 +193,7 @@ namespace rfm
                   out.strain[rz](k, col) = g * fl.e[2] + g_z * fl.u[0] + g_r * fl.u[1];
                 }
           }
-        if (!in_disc)
+        if (!in_disc || modes_only)
           continue;
         // The local stress columns: chi q (l_0 / rho_0)^a (l_1 / rho_0)^b T.
         const double xi = dr / cutoff_radius_, eta = dz / cutoff_radius_;

@@ -156,8 +156,9 @@ namespace rfm
 
     /// The columns at points (zero outside the support). At the vertex itself the singular
     /// terms have no value: stresses and strains with Re lambda < 1 are returned as 0 there.
+    /// `modes_only`: the mode columns alone (n_mode_columns(), the first ones).
     EdgeColumns evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
-                         const Eigen::Ref<const Eigen::VectorXd> &z) const;
+                         const Eigen::Ref<const Eigen::VectorXd> &z, bool modes_only = false) const;
 
     /// The near-vertex rule: the sector of the support in the body, polar about the vertex,
     /// in angular panels of at most pi / 2 with n_angular Gauss points each, and radially in
@@ -171,7 +172,7 @@ namespace rfm
     /// where: re-entrant vertices about which the section is star-shaped, no die). Each mode
     /// column is then f_c(r, z) m(r, z) sigma_c of the mode for stresses and f_u m u for
     /// displacements, without the cutoff: f from `factors` (VertexFactors), m the monomials
-    /// of the offsets scaled by `length_scale` (the farthest vertex of the outline seen from
+    /// of the offsets scaled by `length_scale` (the farthest point of the outline seen from
     /// this one). The factors keep every other edge's condition, and the faces' conditions
     /// hold as before where the faces are lines along r or z (a factor per stress component
     /// scales each face's traction components apart); OutlineModel gives one common stress
