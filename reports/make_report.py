@@ -1354,8 +1354,13 @@ def corners_section(corners, out_dir):
     md = ["## 9. Sections with a singular vertex (`corners`)", "",
           "Where the boundary turns inward or its condition changes, the elastic field has terms "
           "rho^lambda F(theta) with Re lambda < 1 (`problem/wedge_modes.h`). At every such vertex between "
-          "two straight parts the RFM adds the wedge's modes times a cutoff and smooth local columns "
-          "that meet both faces' conditions (`rfm/spaces/vertex_enrichment.h`; `rfm.vertex_*`). The "
+          "two straight parts the RFM adds the wedge's modes and smooth local columns that meet both "
+          "faces' conditions (`rfm/spaces/vertex_enrichment.h`; `rfm.vertex_*`). The local columns live "
+          "in a disc about the vertex, cut off smoothly at its rim. The modes do too, except at a "
+          "re-entrant vertex about which the section is star-shaped, in a problem without a die "
+          "(`rfm.vertex_support`, default `section`): there they cover the whole section, times "
+          "factors that vanish on the other edges where their components are prescribed, so that the "
+          "polynomials need not carry a cutoff's steep remainder. Each case below says which. The "
           "FEM grades its mesh toward the same vertices (`FemOptions::grade_toward_vertices`: "
           "(p / lambda - 1) log2(l / h) extra halvings at the vertex, so that the singular term's "
           "share of the error falls like the smooth part's); its energy limit is Richardson's "
@@ -1437,6 +1442,11 @@ def corner_case_rows(md, ax, key, title, c):
     md.append(f"Problem: `{c['problem_file']}`. FEM energy limit {f['extrapolated_energy']:.10e} J/rad "
               f"(observed order {f['observed_order_energy']:.2f} in energy; the finest level "
               f"{f['estimated_error_relative']:.1e} from it).")
+    support = c.get("vertex_support")
+    if support:
+        md.append("")
+        md.append("The vertex's modes cover the whole section (`rfm.vertex_support` section)." if support == "section"
+                  else "The vertex's modes live in its disc (convex, or the section is not star-shaped about it).")
     md.append("")
     def k_1(row):
         k = row.get("intensities")

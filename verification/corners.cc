@@ -94,6 +94,8 @@ namespace
     const rfm::VertexEnrichment frame = frame_model.vertex_enrichments().front();
     const double rho_1 = frame.cutoff_radius();
     c["intensity_sector_radius"] = rho_1;
+    // Where the vertex's modes live (rfm.vertex_support; vertex_enrichment.h).
+    c["vertex_support"] = frame.section_support() ? "section" : "local";
 
     // The FEM: energy against L, Richardson from the last three levels; the intensities from
     // its fields at the sector rule's points (samples after the problem's own).
