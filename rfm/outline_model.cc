@@ -897,7 +897,7 @@ namespace rfm
                 ge.bottomRows(np).noalias() = v.value[1].transpose() * wu1 / (l * l);
                 ge.bottomRows(np).noalias() += v.d_z[1].transpose() * we[zz];
                 ge.bottomRows(np).noalias() += v.d_r[1].transpose() * we[rz];
-                gram_pe_(Eigen::placeholders::all, held) += ge;
+                gram_pe_(Eigen::all, held) += ge;
               }
           }
       }

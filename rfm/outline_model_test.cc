@@ -388,6 +388,23 @@ namespace rfm
     EXPECT_GT(std::abs(without.functionals().reissner / fem_energy - 1.0), 1e-3);
   }
 
+  namespace
+  {
+    // The stepped ring moved to r = 10 m (plane strain, no hoop terms) under an end traction
+    // of 10 MPa on its top.
+    axisym::Problem far_stepped_ring()
+    {
+      nlohmann::json j = axisym::testing::stepped_ring();
+      for (nlohmann::json &e : j["geometry"]["outline"])
+        for (const char *k : {"start", "line_to"})
+          if (e.contains(k))
+            e[k][0] = e[k][0].get<double>() + 10.0;
+      j["boundary"] =
+        nlohmann::json::parse(R"({"top": {"traction": [0.0, 1.0e7]}, "bottom": {"symmetry": true}})");
+      return axisym::parse_problem(j);
+    }
+  } // namespace
+
   // The vertex's smooth stress columns outrank its displacement columns (degrees p / 2 and 4
   // by default; vertex_enrichment.h). The stepped ring moved to r = 10 m (plane strain, no
   // hoop terms) under an end traction of 10 MPa on its top, against the FEM (fem_solve, Q2
@@ -397,14 +414,7 @@ namespace rfm
   // defaults before), 8.0e-5 and 9.2e-5. At p = 16 (degree 8): 1.6e-6 and 1.5e-6.
   TEST(OutlineModel, VertexStressColumnsOutrankTheDisplacementOnes)
   {
-    nlohmann::json j = axisym::testing::stepped_ring();
-    for (nlohmann::json &e : j["geometry"]["outline"])
-      for (const char *k : {"start", "line_to"})
-        if (e.contains(k))
-          e[k][0] = e[k][0].get<double>() + 10.0;
-    j["boundary"] =
-      nlohmann::json::parse(R"({"top": {"traction": [0.0, 1.0e7]}, "bottom": {"symmetry": true}})");
-    const axisym::Problem problem = axisym::parse_problem(j);
+    const axisym::Problem problem = far_stepped_ring();
     const double fem_energy = -22.3421095;
     DiscretizationOptions o = problem.rfm;
     o.degree = 12;
@@ -435,14 +445,7 @@ namespace rfm
 #if defined(__SANITIZE_ADDRESS__)
     GTEST_SKIP() << "two solves at p = 12 with 1e4 points of vertex rule: the Release run checks it";
 #endif
-    nlohmann::json j = axisym::testing::stepped_ring();
-    for (nlohmann::json &e : j["geometry"]["outline"])
-      for (const char *k : {"start", "line_to"})
-        if (e.contains(k))
-          e[k][0] = e[k][0].get<double>() + 10.0;
-    j["boundary"] =
-      nlohmann::json::parse(R"({"top": {"traction": [0.0, 1.0e7]}, "bottom": {"symmetry": true}})");
-    const axisym::Problem problem = axisym::parse_problem(j);
+    const axisym::Problem problem = far_stepped_ring();
     const double fem_energy = -22.3421095;
     DiscretizationOptions o = problem.rfm;
     o.degree = 12;

@@ -10,6 +10,20 @@ namespace rfm
   namespace
   {
     constexpr double pi = 3.14159265358979323846;
+
+    // The Gauss directions of every angular panel [panels[i], panels[i + 1]] in theta (about
+    // the bisector at beta): f(phi, w_theta) with phi = theta + beta the direction in the (r, z)
+    // plane and w_theta the angular weight.
+    template <class F>
+    void for_each_direction(const std::vector<double> &panels, const GaussRule1D &ga, const double beta, F &&f)
+    {
+      for (std::size_t p = 0; p + 1 < panels.size(); ++p)
+        {
+          const double a = panels[p], b = panels[p + 1];
+          for (Eigen::Index k = 0; k < ga.nodes.size(); ++k)
+            f(a + (b - a) * 0.5 * (ga.nodes[k] + 1.0) + beta, (b - a) * 0.5 * ga.weights[k]);
+        }
+    }
   }
 
   VertexEnrichment::VertexEnrichment(const axisym::Point at,
@@ -267,29 +281,40 @@ namespace rfm
     return out;
   }
 
-  Quadrature2D VertexEnrichment::near_rule(const int n_radial, const int n_angular,
-                                           const int n_layers) const
+  std::vector<double> VertexEnrichment::angular_panels(const std::vector<double> &extra_breaks,
+                                                       const double max_width, const double min_gap) const
   {
-    if (n_radial < 1 || n_angular < 1 || n_layers < 0)
-      throw std::invalid_argument("VertexEnrichment::near_rule: point counts must be positive");
+    // Angular breaks in theta: the faces, at a reflex vertex the faces' lines continued into
+    // the body (theta = +-(pi - alpha)), where the omegas of the trimmed faces have a kink,
+    // and the extra ones inside the wedge.
     const double alpha = wedge_.half_angle();
-    // Angular breaks: the faces, and at a reflex vertex the faces' lines continued into the
-    // body (theta = +-(pi - alpha)), where the omegas of the trimmed faces have a kink.
     std::vector<double> breaks{-alpha, alpha};
     if (alpha > 0.5 * pi + 1e-12)
       breaks.push_back(pi - alpha), breaks.push_back(alpha - pi);
+    for (const double theta : extra_breaks)
+      if (theta > -alpha && theta < alpha)
+        breaks.push_back(theta);
     std::sort(breaks.begin(), breaks.end());
     std::vector<double> panels;
     for (std::size_t i = 0; i + 1 < breaks.size(); ++i)
       {
         const double a = breaks[i], b = breaks[i + 1];
-        if (!(b - a > 1e-12))
+        if (!(b - a > min_gap))
           continue;
-        const int pieces = static_cast<int>(std::ceil((b - a) / (0.5 * pi) - 1e-9));
+        const int pieces = static_cast<int>(std::ceil((b - a) / max_width - 1e-9));
         for (int k = 0; k < pieces; ++k)
           panels.push_back(a + (b - a) * k / pieces);
       }
     panels.push_back(alpha);
+    return panels;
+  }
+
+  Quadrature2D VertexEnrichment::near_rule(const int n_radial, const int n_angular,
+                                           const int n_layers) const
+  {
+    if (n_radial < 1 || n_angular < 1 || n_layers < 0)
+      throw std::invalid_argument("VertexEnrichment::near_rule: point counts must be positive");
+    const std::vector<double> panels = angular_panels({}, 0.5 * pi, 1e-12);
     // Radial layers [0.2^(i+1), 0.2^i] rho_0, the innermost [0, 0.2^L rho_0] with rho = rho_in s^2.
     const GaussRule1D ga = gauss_legendre(n_angular);
     const GaussRule1D radial = polar_radial_rule(cutoff_radius_, n_radial, n_layers);
@@ -300,23 +325,15 @@ namespace rfm
       static_cast<Eigen::Index>(rho_nodes.size()) * (static_cast<Eigen::Index>(panels.size()) - 1) * n_angular;
     q.r.resize(n_points), q.z.resize(n_points), q.weights.resize(n_points);
     Eigen::Index at = 0;
-    for (std::size_t p = 0; p + 1 < panels.size(); ++p)
-      {
-        const double a = panels[p], b = panels[p + 1];
-        for (Eigen::Index k = 0; k < ga.nodes.size(); ++k)
-          {
-            const double theta = a + (b - a) * 0.5 * (ga.nodes[k] + 1.0);
-            const double w_theta = (b - a) * 0.5 * ga.weights[k];
-            const double phi = theta + beta_;
-            const double c = std::cos(phi), s = std::sin(phi);
-            for (std::size_t i = 0; i < rho_nodes.size(); ++i, ++at)
-              {
-                q.r[at] = at_.r + rho_nodes[i] * c;
-                q.z[at] = at_.z + rho_nodes[i] * s;
-                q.weights[at] = w_theta * rho_weights[i];
-              }
-          }
-      }
+    for_each_direction(panels, ga, beta_, [&](const double phi, const double w_theta) {
+      const double c = std::cos(phi), s = std::sin(phi);
+      for (std::size_t i = 0; i < rho_nodes.size(); ++i, ++at)
+        {
+          q.r[at] = at_.r + rho_nodes[i] * c;
+          q.z[at] = at_.z + rho_nodes[i] * s;
+          q.weights[at] = w_theta * rho_weights[i];
+        }
+    });
     return q;
   }
 
@@ -339,65 +356,40 @@ namespace rfm
     if (!section_support())
       throw std::logic_error("VertexEnrichment::section_rule: no section support");
     const Quadrature2D disc = near_rule(n_radial, n_angular, n_layers);
-    // Angular breaks in theta (about the bisector): the faces, the faces' lines continued into
-    // the body at a reflex vertex, and the directions of the outline's vertices, where the
-    // reach has a kink.
-    const double alpha = wedge_.half_angle();
-    std::vector<double> breaks{-alpha, alpha};
-    if (alpha > 0.5 * pi + 1e-12)
-      breaks.push_back(pi - alpha), breaks.push_back(alpha - pi);
+    // Also broken at the directions of the outline's vertices, where the reach has a kink.
+    std::vector<double> vertex_breaks;
     for (const double phi : ray_breaks_)
       {
         double theta = phi - beta_;
         theta -= 2.0 * pi * std::round(theta / (2.0 * pi));
-        if (theta > -alpha && theta < alpha)
-          breaks.push_back(theta);
+        vertex_breaks.push_back(theta);
       }
-    std::sort(breaks.begin(), breaks.end());
-    std::vector<double> panels;
-    for (std::size_t i = 0; i + 1 < breaks.size(); ++i)
-      {
-        const double a = breaks[i], b = breaks[i + 1];
-        if (!(b - a > 1e-9))
-          continue;
-        const int pieces = static_cast<int>(std::ceil((b - a) / (0.125 * pi) - 1e-9));
-        for (int k = 0; k < pieces; ++k)
-          panels.push_back(a + (b - a) * k / pieces);
-      }
-    panels.push_back(alpha);
+    const std::vector<double> panels = angular_panels(vertex_breaks, 0.125 * pi, 1e-9);
     const GaussRule1D ga = gauss_legendre(n_angular), gr = gauss_legendre(n_radial);
     std::vector<double> r, z, w;
     const double rho_0 = cutoff_radius_;
-    for (std::size_t p = 0; p + 1 < panels.size(); ++p)
-      {
-        const double a = panels[p], b = panels[p + 1];
-        for (Eigen::Index k = 0; k < ga.nodes.size(); ++k)
-          {
-            const double theta = a + (b - a) * 0.5 * (ga.nodes[k] + 1.0);
-            const double w_theta = (b - a) * 0.5 * ga.weights[k];
-            const double phi = theta + beta_;
-            const double c = std::cos(phi), s = std::sin(phi);
-            const double reach = reach_(phi);
-            if (!(reach > rho_0))
-              continue;
-            // [rho_0, reach] in geometric pieces of ratio at most 3.
-            const int pieces = std::max(1, static_cast<int>(std::ceil(std::log(reach / rho_0) / std::log(3.0) - 1e-9)));
-            const double ratio = std::pow(reach / rho_0, 1.0 / pieces);
-            double lo = rho_0;
-            for (int piece = 0; piece < pieces; ++piece)
-              {
-                const double hi = piece + 1 == pieces ? reach : lo * ratio;
-                for (Eigen::Index i = 0; i < gr.nodes.size(); ++i)
-                  {
-                    const double rho = lo + (hi - lo) * 0.5 * (gr.nodes[i] + 1.0);
-                    r.push_back(at_.r + rho * c);
-                    z.push_back(at_.z + rho * s);
-                    w.push_back(w_theta * (hi - lo) * 0.5 * gr.weights[i] * rho);
-                  }
-                lo = hi;
-              }
-          }
-      }
+    for_each_direction(panels, ga, beta_, [&](const double phi, const double w_theta) {
+      const double c = std::cos(phi), s = std::sin(phi);
+      const double reach = reach_(phi);
+      if (!(reach > rho_0))
+        return;
+      // [rho_0, reach] in geometric pieces of ratio at most 3.
+      const int pieces = std::max(1, static_cast<int>(std::ceil(std::log(reach / rho_0) / std::log(3.0) - 1e-9)));
+      const double ratio = std::pow(reach / rho_0, 1.0 / pieces);
+      double lo = rho_0;
+      for (int piece = 0; piece < pieces; ++piece)
+        {
+          const double hi = piece + 1 == pieces ? reach : lo * ratio;
+          for (Eigen::Index i = 0; i < gr.nodes.size(); ++i)
+            {
+              const double rho = lo + (hi - lo) * 0.5 * (gr.nodes[i] + 1.0);
+              r.push_back(at_.r + rho * c);
+              z.push_back(at_.z + rho * s);
+              w.push_back(w_theta * (hi - lo) * 0.5 * gr.weights[i] * rho);
+            }
+          lo = hi;
+        }
+    });
     Quadrature2D q;
     const Eigen::Index n_disc = disc.weights.size(), n_rays = static_cast<Eigen::Index>(w.size());
     q.r.resize(n_disc + n_rays), q.z.resize(n_disc + n_rays), q.weights.resize(n_disc + n_rays);

@@ -193,6 +193,12 @@ namespace rfm
     Quadrature2D section_rule(int n_radial, int n_angular, int n_layers = 8) const;
 
   private:
+    /// The ends of the angular panels in theta, from -alpha to alpha: split at the faces'
+    /// lines continued (reflex vertices) and at extra_breaks inside the wedge, gaps below
+    /// min_gap dropped, each piece at most max_width wide.
+    std::vector<double> angular_panels(const std::vector<double> &extra_breaks, double max_width,
+                                       double min_gap) const;
+
     axisym::Point at_;
     double beta_; ///< the bisector's angle in the (r, z) plane
     Wedge wedge_;

@@ -39,6 +39,33 @@ namespace rfm
                               local_degree);
     }
 
+    // Every column's strains are the derivatives of its displacements at the points (central
+    // differences), e_tt = u_r / r.
+    void expect_strains_are_derivatives(const VertexEnrichment &v, const Eigen::VectorXd &r,
+                                        const Eigen::VectorXd &z)
+    {
+      const double h = 1e-7;
+      const Eigen::VectorXd one = Eigen::VectorXd::Ones(r.size());
+      const EdgeColumns e = v.evaluate(r, z);
+      const EdgeColumns rp = v.evaluate(r + h * one, z), rm = v.evaluate(r - h * one, z);
+      const EdgeColumns zp = v.evaluate(r, z + h * one), zm = v.evaluate(r, z - h * one);
+      for (Eigen::Index j = 0; j < v.n_columns(); ++j)
+        for (Eigen::Index k = 0; k < r.size(); ++k)
+          {
+            const double scale = e.strain[0].col(j).cwiseAbs().maxCoeff() +
+                                 e.strain[1].col(j).cwiseAbs().maxCoeff() +
+                                 e.strain[3].col(j).cwiseAbs().maxCoeff();
+            const double e_rr = (rp.u[0](k, j) - rm.u[0](k, j)) / (2 * h);
+            const double e_zz = (zp.u[1](k, j) - zm.u[1](k, j)) / (2 * h);
+            const double g_rz = (zp.u[0](k, j) - zm.u[0](k, j)) / (2 * h) +
+                                (rp.u[1](k, j) - rm.u[1](k, j)) / (2 * h);
+            EXPECT_NEAR(e.strain[0](k, j), e_rr, 1e-6 * scale) << "column " << j << " point " << k;
+            EXPECT_NEAR(e.strain[1](k, j), e_zz, 1e-6 * scale) << "column " << j << " point " << k;
+            EXPECT_NEAR(e.strain[3](k, j), g_rz, 1e-6 * scale) << "column " << j << " point " << k;
+            EXPECT_NEAR(e.strain[2](k, j), e.u[0](k, j) / r[k], 1e-12 * scale);
+          }
+    }
+
     // Points along a face at the distance t from the vertex, in the face's direction d.
     Eigen::VectorXd along(const double origin, const double d, const Eigen::VectorXd &t)
     {
@@ -55,26 +82,7 @@ namespace rfm
     // Points inside the wedge, at 0.2 to 0.9 rho_0, on both sides of the bisector.
     const Eigen::VectorXd r = (Eigen::VectorXd(5) << 0.16, 0.13, 0.17, 0.14, 0.12).finished();
     const Eigen::VectorXd z = (Eigen::VectorXd(5) << 0.11, 0.09, 0.08, 0.07, 0.095).finished();
-    const double h = 1e-7;
-    const Eigen::VectorXd one = Eigen::VectorXd::Ones(r.size());
-    const EdgeColumns e = v.evaluate(r, z);
-    const EdgeColumns rp = v.evaluate(r + h * one, z), rm = v.evaluate(r - h * one, z);
-    const EdgeColumns zp = v.evaluate(r, z + h * one), zm = v.evaluate(r, z - h * one);
-    for (Eigen::Index j = 0; j < v.n_columns(); ++j)
-      for (Eigen::Index k = 0; k < r.size(); ++k)
-        {
-          const double scale = e.strain[0].col(j).cwiseAbs().maxCoeff() +
-                               e.strain[1].col(j).cwiseAbs().maxCoeff() +
-                               e.strain[3].col(j).cwiseAbs().maxCoeff();
-          const double e_rr = (rp.u[0](k, j) - rm.u[0](k, j)) / (2 * h);
-          const double e_zz = (zp.u[1](k, j) - zm.u[1](k, j)) / (2 * h);
-          const double g_rz = (zp.u[0](k, j) - zm.u[0](k, j)) / (2 * h) +
-                              (rp.u[1](k, j) - rm.u[1](k, j)) / (2 * h);
-          EXPECT_NEAR(e.strain[0](k, j), e_rr, 1e-6 * scale) << "column " << j << " point " << k;
-          EXPECT_NEAR(e.strain[1](k, j), e_zz, 1e-6 * scale) << "column " << j << " point " << k;
-          EXPECT_NEAR(e.strain[3](k, j), g_rz, 1e-6 * scale) << "column " << j << " point " << k;
-          EXPECT_NEAR(e.strain[2](k, j), e.u[0](k, j) / r[k], 1e-12 * scale);
-        }
+    expect_strains_are_derivatives(v, r, z);
     // The stresses are the plane-strain stresses of the strains where the cutoff and the
     // multiplier are constant: at the vertex's neighbourhood, for the constant multiplier.
     const Material m = steel();
@@ -304,26 +312,12 @@ namespace rfm
     // Near the vertex and far from it (beyond rho_0 = 0.04).
     const Eigen::VectorXd r = (Eigen::VectorXd(6) << 0.16, 0.13, 0.17, 0.19, 0.11, 0.195).finished();
     const Eigen::VectorXd z = (Eigen::VectorXd(6) << 0.11, 0.09, 0.08, 0.18, 0.02, 0.01).finished();
-    const double h = 1e-7;
-    const Eigen::VectorXd one = Eigen::VectorXd::Ones(r.size());
+    expect_strains_are_derivatives(v, r, z);
     const EdgeColumns e = v.evaluate(r, z), d = disc.evaluate(r, z);
-    const EdgeColumns rp = v.evaluate(r + h * one, z), rm = v.evaluate(r - h * one, z);
-    const EdgeColumns zp = v.evaluate(r, z + h * one), zm = v.evaluate(r, z - h * one);
     const VertexFactors f = stepped_ring_factors(r, z);
     for (Eigen::Index j = 0; j < v.n_columns(); ++j)
       for (Eigen::Index k = 0; k < r.size(); ++k)
         {
-          const double scale = e.strain[0].col(j).cwiseAbs().maxCoeff() +
-                               e.strain[1].col(j).cwiseAbs().maxCoeff() +
-                               e.strain[3].col(j).cwiseAbs().maxCoeff();
-          const double e_rr = (rp.u[0](k, j) - rm.u[0](k, j)) / (2 * h);
-          const double e_zz = (zp.u[1](k, j) - zm.u[1](k, j)) / (2 * h);
-          const double g_rz = (zp.u[0](k, j) - zm.u[0](k, j)) / (2 * h) +
-                              (rp.u[1](k, j) - rm.u[1](k, j)) / (2 * h);
-          EXPECT_NEAR(e.strain[0](k, j), e_rr, 1e-6 * scale) << "column " << j << " point " << k;
-          EXPECT_NEAR(e.strain[1](k, j), e_zz, 1e-6 * scale) << "column " << j << " point " << k;
-          EXPECT_NEAR(e.strain[3](k, j), g_rz, 1e-6 * scale) << "column " << j << " point " << k;
-          EXPECT_NEAR(e.strain[2](k, j), e.u[0](k, j) / r[k], 1e-12 * scale);
           if (j >= v.n_mode_columns())
             {
               // The local columns: as in the disc.
