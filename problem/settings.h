@@ -101,7 +101,8 @@ namespace axisym
     /// straight parts where the field is singular (an exponent with Re lambda < 1), the
     /// wedge's modes with Re lambda < vertex_max_exponent (0: off), each times the monomials
     /// of the scaled offsets up to vertex_mode_degree, cut off at vertex_cutoff times the
-    /// room around the vertex. The same cutoff places the loaded wedge's field at a traction
+    /// room around the vertex (degree 4 at least where the modes cover the section:
+    /// vertex_support). The same cutoff places the loaded wedge's field at a traction
     /// jump (rfm/spaces/traction_jump.h). 0 switches both off.
     double vertex_max_exponent = 3.0;
     int vertex_mode_degree = 1;
@@ -124,8 +125,9 @@ namespace axisym
     /// (interior angle above 180 degrees) about which the section is star-shaped, in a
     /// problem without a die, times factors that keep the other edges' conditions; elsewhere,
     /// and always with `local`, in the disc of the cutoff. Measured against the FEM's limit
-    /// at p = 16, disc -> section: the stepped shaft's Phi_R 2.6e-5 -> 5.6e-6 and its
-    /// indicator 2.5e-4 -> 1.9e-5; the stepped ring's indicator 1.6e-6 -> 3.9e-7.
+    /// at p = 16, disc -> section: the stepped shaft's Phi_R 2.6e-5 -> 3.3e-6 and its
+    /// indicator 2.5e-4 -> 1.3e-5; the stepped ring's indicator 1.6e-6 -> 3.5e-7. There the
+    /// modes' multipliers take at least degree 4 (vertex_mode_degree is raised to it).
     enum class VertexSupport
     {
       local,
