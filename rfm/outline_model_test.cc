@@ -403,6 +403,21 @@ namespace rfm
         nlohmann::json::parse(R"({"top": {"traction": [0.0, 1.0e7]}, "bottom": {"symmetry": true}})");
       return axisym::parse_problem(j);
     }
+    // Issue 24's stepped solid shaft (the shoulder's 270-degree vertex at (0.03, 0.1)) with the
+    // given boundary, material and loading objects.
+    axisym::Problem stepped_shaft(const char *boundary, const char *material, const char *loading = nullptr)
+    {
+      nlohmann::json j = nlohmann::json::parse(R"({"geometry": {"outline": [
+        {"start": [0.0, 0.0]}, {"line_to": [0.05, 0.0], "part": "mid_plane"},
+        {"line_to": [0.05, 0.1], "part": "large_surface"}, {"line_to": [0.03, 0.1], "part": "shoulder"},
+        {"line_to": [0.03, 0.2], "part": "small_surface"}, {"line_to": [0.0, 0.2], "part": "end"},
+        {"line_to": [0.0, 0.0], "part": "axis"}]}})");
+      j["boundary"] = nlohmann::json::parse(boundary);
+      j["material"] = nlohmann::json::parse(material);
+      if (loading)
+        j["loading"] = nlohmann::json::parse(loading);
+      return axisym::parse_problem(j);
+    }
   } // namespace
 
   // The vertex's smooth stress columns outrank its displacement columns (degrees p / 2 and 4
@@ -471,14 +486,8 @@ namespace rfm
   // the mid-plane's symmetry and the axis' u_r = 0 to rounding.
   TEST(OutlineModel, SectionSupportKeepsEveryConditionOfTheShaft)
   {
-    const axisym::Problem problem = axisym::parse_problem(nlohmann::json::parse(R"({
-      "geometry": {"outline": [
-        {"start": [0.0, 0.0]}, {"line_to": [0.05, 0.0], "part": "mid_plane"},
-        {"line_to": [0.05, 0.1], "part": "large_surface"}, {"line_to": [0.03, 0.1], "part": "shoulder"},
-        {"line_to": [0.03, 0.2], "part": "small_surface"}, {"line_to": [0.0, 0.2], "part": "end"},
-        {"line_to": [0.0, 0.0], "part": "axis"}]},
-      "boundary": {"mid_plane": {"symmetry": true}, "end": {"traction": [0.0, 1.0e7]}},
-      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
+    const axisym::Problem problem = stepped_shaft(R"({"mid_plane": {"symmetry": true}, "end": {"traction": [0.0, 1.0e7]}})",
+                                                  R"({"youngs_modulus": 2.1e11, "poisson_ratio": 0.3})");
     DiscretizationOptions o = problem.rfm;
     o.degree = 6;
     const OutlineModel m(problem, o);
@@ -546,15 +555,9 @@ namespace rfm
   // back; measured 4.6e-4 (and 2.2e-5 at p = 12, against 3.2e-4).
   TEST(OutlineModel, SectionSupportProjectsOnTheKeptPolynomials)
   {
-    const axisym::Problem problem = axisym::parse_problem(nlohmann::json::parse(R"({
-      "geometry": {"outline": [
-        {"start": [0.0, 0.0]}, {"line_to": [0.05, 0.0], "part": "mid_plane"},
-        {"line_to": [0.05, 0.1], "part": "large_surface"}, {"line_to": [0.03, 0.1], "part": "shoulder"},
-        {"line_to": [0.03, 0.2], "part": "small_surface"}, {"line_to": [0.0, 0.2], "part": "end"},
-        {"line_to": [0.0, 0.0], "part": "axis"}]},
-      "boundary": {"mid_plane": {"symmetry": true}, "end": {"symmetry": true}},
-      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3, "density": 7850},
-      "loading": {"angular_velocity": 2000.0}})"));
+    const axisym::Problem problem = stepped_shaft(R"({"mid_plane": {"symmetry": true}, "end": {"symmetry": true}})",
+                                            R"({"youngs_modulus": 2.1e11, "poisson_ratio": 0.3, "density": 7850})",
+                                            R"({"angular_velocity": 2000.0})");
     DiscretizationOptions o = problem.rfm;
     o.degree = 8;
     const OutlineModel m(problem, o);
