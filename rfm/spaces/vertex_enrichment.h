@@ -186,11 +186,21 @@ namespace rfm
                              std::vector<double> ray_breaks, double length_scale);
     bool section_support() const { return static_cast<bool>(factors_); }
 
+    /// A circle of the section (another rule's disc) across which the integrands that the
+    /// section rule takes have a kink (the partition of unity's shares).
+    struct Circle
+    {
+      axisym::Point centre;
+      double radius;
+    };
     /// The rule for the section support: near_rule's disc, and beyond it rays out to the
-    /// outline (reach), in angular panels between the ray breaks of at most pi / 8 with
-    /// n_angular Gauss points each, radially in pieces of ratio at most 3 with n_radial
-    /// points each. Plain area weights dr dz. Precondition: section_support().
-    Quadrature2D section_rule(int n_radial, int n_angular, int n_layers = 8) const;
+    /// outline (reach), in angular panels between the ray breaks and the circles' tangent
+    /// directions of at most pi / 8 with n_angular Gauss points each (halved where the reach
+    /// is steep, see the .cc), radially in pieces of ratio at most 3, broken where a ray
+    /// crosses a circle, with n_radial points each. Plain area weights dr dz.
+    /// Precondition: section_support().
+    Quadrature2D section_rule(int n_radial, int n_angular, const std::vector<Circle> &circles = {},
+                              int n_layers = 8) const;
 
   private:
     /// The ends of the angular panels in theta, from -alpha to alpha: split at the faces'

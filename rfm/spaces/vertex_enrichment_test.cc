@@ -379,3 +379,51 @@ namespace rfm
     EXPECT_NEAR(sum / (1.5 * pi * std::pow(rho_0, a + 2) / (a + 2)), 1.0, 1e-10);
   }
 } // namespace rfm
+
+namespace rfm
+{
+  // Where a ray from the vertex meets a curved edge at a grazing angle, the reach has a
+  // square-root slope (here exactly at the end of the arc: the ray to (0.1, 0) is its tangent
+  // there), and Gauss points across it lose digits: the section rule halves its angular
+  // panels there until the reach's moments settle. The stepped ring of the tests above with
+  // the face below the step bulging into the body as an arc of the circle about (0, 0.05)
+  // through (0.1, 0) and (0.1, 0.1).
+  TEST(VertexEnrichment, SectionRuleResolvesARayGrazingAnArc)
+  {
+    const Case c;
+    VertexEnrichment v = make(c, WedgeFace::free, WedgeFace::free, 1);
+    const double R = std::hypot(0.1, 0.05);
+    auto reach = [R, &c](const double phi) {
+      const double dr = std::cos(phi), dz = std::sin(phi);
+      double t = 1e300;
+      if (dr > 1e-15)
+        t = std::min(t, (0.2 - c.at.r) / dr); // outer
+      if (dz > 1e-15)
+        t = std::min(t, (0.2 - c.at.z) / dz); // top
+      if (dz < -1e-15)
+        t = std::min(t, (0.0 - c.at.z) / dz); // bottom
+      // |at + t d - (0, 0.05)| = R, the arc's points with 0 <= z <= 0.1
+      const double pr = c.at.r, pz = c.at.z - 0.05;
+      const double b = dr * pr + dz * pz, disc = b * b - (pr * pr + pz * pz - R * R);
+      if (disc >= 0)
+        for (const double s : {-b - std::sqrt(disc), -b + std::sqrt(disc)})
+          {
+            const double z = c.at.z + s * dz;
+            if (s > 1e-12 && z >= -1e-12 && z <= 0.1 + 1e-12)
+              t = std::min(t, s);
+          }
+      return t;
+    };
+    auto direction = [&c](const double r, const double z) { return std::atan2(z - c.at.z, r - c.at.r); };
+    v.set_section_support(stepped_ring_factors, reach,
+                          {direction(0.1, 0.0), direction(0.2, 0.0), direction(0.2, 0.2), direction(0.15, 0.2)},
+                          0.15);
+    const double segment = 0.5 * R * R * (2.0 * std::asin(0.05 / R) - std::sin(2.0 * std::asin(0.05 / R)));
+    const double area = 0.1 * 0.1 + 0.05 * 0.1 - segment;
+    for (const int n : {8, 12})
+      {
+        const Quadrature2D q = v.section_rule(n, n);
+        EXPECT_NEAR(q.weights.sum() / area, 1.0, 1e-12) << n << " points";
+      }
+  }
+} // namespace rfm
