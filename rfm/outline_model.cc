@@ -350,8 +350,9 @@ namespace rfm
       // the section rule takes S, which vanishes like rho^8 at the disc's centre and has
       // three continuous derivatives on its rim, where the section rule's rays break. The
       // former s_j = chi (rho_0 / rho)^4 changed from 0 to 1 within the last 15 % of the
-      // disc's radius: on a stepped ring with a traction jump (a pressure ending at its bore)
-      // the shares integrated the section's area 5.6e-5 off, 1.1e-9 so.
+      // disc's radius: on an L-shaped ring whose inner arc's pressure ends at its bore (the
+      // test SectionSupportBesideATractionJumpIsTheRulesLimit) the shares integrated the
+      // section's area 5.6e-5 off, 1.1e-9 so.
       bool overlap = any_section;
       for (std::size_t i = 0; i < pulls.size(); ++i)
         for (std::size_t j = i + 1; j < pulls.size(); ++j)
@@ -425,11 +426,10 @@ namespace rfm
     // each such remainder is a small difference of two nearly equal functions: with the
     // polynomials' products on the section's own rule and the vertex columns' on the near
     // rules, the two rules' difference on the polynomial part (1e-6 of it is enough) stayed
-    // in the remainder, scaled up as the remainder is normalized. The stepped ring with a
-    // traction jump (a pressure ending at its bore) had an indicator of 0.037 at p = 8 that
-    // fell to 2.4e-3 only with 16 more Gauss points a direction, and a Lagrange functional
-    // 3 % off; on one rule 1.4e-3, the same to 4 digits with 16 more points (disc support:
-    // 2.7e-3).
+    // in the remainder, scaled up as the remainder is normalized. That L-shaped ring with a
+    // traction jump had an indicator of 0.037 at p = 8 that fell to 2.4e-3 only with 16
+    // more Gauss points a direction, and a Lagrange functional 3 % off; on one rule 1.45e-3,
+    // the same to 3 digits with 16 more points (disc support: 2.7e-3).
     if (section_support())
       quadrature_ = near_;
     // A mirrored section stands for itself and its image in z = 0: every integral twice (the

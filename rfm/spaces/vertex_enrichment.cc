@@ -383,10 +383,10 @@ namespace rfm
       }
     const GaussRule1D ga = gauss_legendre(n_angular), gr = gauss_legendre(n_radial);
     // Where a ray nearly grazes a curved edge, or runs almost along a line that ends at an
-    // outline vertex, the reach has a near-singular slope at a panel's end (issue 24's hub:
-    // the rays from the neck's vertex that meet the inner arc next to its end on the
-    // symmetry plane; the section's area came out 5.8e-6 short with 11 points a panel, 3e-7
-    // with 20, and the Lagrange functional below the exact minimum). Each panel is therefore
+    // outline vertex, the reach has a near-singular slope at a panel's end (issue 24's hub
+    // with a step for its taper: the rays from the step's vertex that meet the inner arc
+    // next to its end on the symmetry plane; the section's area came out 5.8e-6 short with
+    // 11 points a panel, 3e-7 with 20, and the Lagrange functional below the exact minimum). Each panel is therefore
     // halved until its moments of the reach, rho_max^2 and rho_max^8 (what the columns'
     // products of degree up to 6 in rho weigh along a ray), agree with its halves' to 1e-13
     // of the section's (at most 40 halvings: toward a grazing end the panels shrink
