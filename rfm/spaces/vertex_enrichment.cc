@@ -46,6 +46,8 @@ namespace rfm
   {
     if (!(cutoff_radius > 0.0))
       throw std::invalid_argument("VertexEnrichment: the cutoff radius must be positive");
+    if (!(at.r > 0.0))
+      throw std::invalid_argument("VertexEnrichment: the vertex must lie off the axis (r > 0)");
     if (local_displacement_degree_ > local_degree_ || local_displacement_degree_ < -1)
       throw std::invalid_argument("VertexEnrichment: the local displacement degree must be in "
                                   "[-1, local_degree]");
@@ -119,6 +121,7 @@ namespace rfm
     const double nu = material_.poisson_ratio;
     const double mu = material_.youngs_modulus / (2.0 * (1.0 + nu));
     const int d = multiplier_degree_;
+    const double e_over_rv = material_.youngs_modulus / at_.r;
     std::vector<double> xi_pow(d + 1), eta_pow(d + 1);
     // One real field at a point: (sigma_rr, sigma_zz, sigma_tt, sigma_rz), the plane strains
     // (e_rr, e_zz, gamma_rz) and (u_r, u_z), all per unit amplitude, u already over mu.
@@ -200,6 +203,9 @@ namespace rfm
                   const double g_z = f_z * mono + f_u * mono_z;
                   for (int comp = 0; comp < n_stress_components; ++comp)
                     out.stress[comp](k, col) = (wide ? factors.stress(k, comp) * mono : g) * fl.s[comp];
+                  // The hoop strain's share of sigma_tt (the header): E times the column's own
+                  // u_r over r_v.
+                  out.stress[tt](k, col) += e_over_rv * g * fl.u[0];
                   out.u[0](k, col) = g * fl.u[0];
                   out.u[1](k, col) = g * fl.u[1];
                   // e(g u) = g e(u) + sym(grad g (x) u), engineering shear.

@@ -10,7 +10,8 @@
 // A column is g(r, z) times the mode's plane-strain field in the meridian components:
 //
 //   stress:       g (sigma_rr, sigma_zz, sigma_tt, sigma_rz), sigma_tt = nu (sigma_rr + sigma_zz)
-//                 (the out-of-plane stress of plane strain, as the edge modes);
+//                 + E u_r / (mu r_v) (the out-of-plane stress of plane strain, as the edge
+//                 modes, and the hoop term below);
 //   displacement: g u / mu, strains e(g u / mu) with e_tt = g u_r / (mu r);
 //
 // g = chi(rho) m(r, z): chi the C2 quintic cutoff of edge_modes.h (1 at v, 0 from rho_0 on)
@@ -20,7 +21,22 @@
 // factor keeps the face conditions of every mode (traction free, clamped, symmetry), so the
 // structures stay boundary-exact when the support, the disc of radius rho_0 about v, meets
 // the boundary only on the two faces (rho_0 below the faces' lengths and the distance to every
-// other edge; OutlineModel chooses it).
+// other edge; OutlineModel chooses it). (With the section support, below, the factors of
+// VertexFactors take chi's place: per stress component in the first term, the displacement's
+// in the hoop term and the displacement.)
+//
+// The hoop term. Hooke's law gives sigma_tt = nu (sigma_rr + sigma_zz) + E e_tt exactly, and
+// the mode's own hoop strain e_tt = u_r / r ~ rho^lambda U_r(theta) / r_v does not vanish at
+// the vertex's order: it adds to sigma_tt a term rho^lambda (not smooth for lambda < 1) whose
+// angular function U_r is not among the stress columns' (the multipliers give nu (F_rr +
+// F_zz) times cos and sin). Without it the stress side stalled: on the stepped ring Phi_C was
+// 1.9e-6, 6.3e-7, 2.8e-7, 1.9e-7 from the FEM's limit at p = 8, 12, 16, 20 while Phi_L came
+// within 9e-9, and the largest stress errors were in sigma_tt on the faces next to the vertex
+// (1.4 % of the pressure at rho = 2.5 mm, p = 20). With E times each column's own u_r over
+// r_v: 2.3e-7, 1.1e-7, 7.0e-8, 5.4e-8. It is 1 / r_v, not 1 / r: the difference is of the
+// next order, which the multipliers carry, and 1 / r put E u_r / r of a section-wide mode on
+// the axis, where the r-weighted norms do not see it (sigma_tt 3e9 Pa at the stepped shaft's
+// axis sample). sigma_tt takes no boundary condition: the columns stay boundary-exact.
 //
 // Local columns (local_degree >= 0). At a re-entrant vertex the structures' omegas of the
 // trimmed faces behave like rho, and the polynomial stress columns can neither represent nor
