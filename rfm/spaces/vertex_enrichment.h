@@ -134,7 +134,8 @@ namespace rfm
   class VertexEnrichment
   {
   public:
-    /// The vertex at `at`, the unit direction of the face of the part leaving it (theta =
+    /// The vertex at `at` (off the axis, r > 0: the hoop term divides by r_v), the unit
+    /// direction of the face of the part leaving it (theta =
     /// -alpha), the wedge (its angle and faces, face_minus that of the leaving part), the
     /// modes to enrich with (Wedge::modes), the cutoff radius rho_0 > 0, the multiplier
     /// degree d >= 0 and the local columns' degrees (stresses; displacements, at most the
