@@ -135,11 +135,10 @@ namespace rfm
   {
   public:
     /// The vertex at `at` (off the axis, r > 0: the hoop term divides by r_v), the unit
-    /// direction of the face of the part leaving it (theta =
-    /// -alpha), the wedge (its angle and faces, face_minus that of the leaving part), the
-    /// modes to enrich with (Wedge::modes), the cutoff radius rho_0 > 0, the multiplier
-    /// degree d >= 0 and the local columns' degrees (stresses; displacements, at most the
-    /// former; -1: none).
+    /// direction of the face of the part leaving it (theta = -alpha), the wedge (its angle
+    /// and faces, face_minus that of the leaving part), the modes to enrich with
+    /// (Wedge::modes), the cutoff radius rho_0 > 0, the multiplier degree d >= 0 and the
+    /// local columns' degrees (stresses; displacements, at most the former; -1: none).
     VertexEnrichment(axisym::Point at, std::array<double, 2> leaving_direction, const Wedge &wedge,
                      std::vector<WedgeMode> modes, double cutoff_radius, const Material &material,
                      int multiplier_degree = 0, int local_degree = -1,
