@@ -239,27 +239,6 @@ namespace rfm
     // triangles.
     SectionQuadratureOptions qo;
     qo.n_points = 2 * options.degree + options.extra_gauss_points;
-    // On the split body: a zone's ends are vertices of the triangulation and of the edges. A
-    // rectangle with sides along r and z takes the tensor rule with p + extra_gauss_points
-    // points per direction, graded toward the zone's ends (section_quadrature.h).
-    // The local boxes' sides are cell ends, and their polynomials of degree local_degree + 2
-    // (with the cutoff) need as many points as the global ones of degree p. A two-sided box
-    // has degree 2 local_degree + 1 along the part (local_basis.h); its cells are the graded
-    // layers toward the zone's ends, and five more points per direction left the ring die's
-    // P at the FEM's zone unchanged (10339.4 N), so the rule keeps local_degree + 2.
-    if (is_axis_aligned_rectangle(split))
-      quadrature_ = rectangle_gauss(
-        split,
-        (local_.empty() ? options.degree : std::max(options.degree, local_.degree() + 2)) +
-          options.extra_gauss_points,
-        {options.n_cells_r, options.n_cells_z, options.n_graded_layers, options.grading_ratio},
-        local_.breaks(),
-        // Axis parity: Gauss in r^2, exact for products of the polynomials of degree p in r^2
-        // with the same points (the clamped cylinder at p = 12 and 16: the functionals within
-        // 1e-14 of a rule of 2 p + 4 points in r, 400 points instead of 720 at p = 16).
-        structures_.axis_parity());
-    else
-      quadrature_ = section_gauss(split, qo);
     std::vector<int> graded = make_enrichments(problem, zones, options);
     make_vertex_enrichments(problem, options, graded);
     make_traction_jumps(problem, options);
@@ -429,9 +408,32 @@ namespace rfm
     // in the remainder, scaled up as the remainder is normalized. That L-shaped ring with a
     // traction jump had an indicator of 0.037 at p = 8 that fell to 2.4e-3 only with 16
     // more Gauss points a direction, and a Lagrange functional 3 % off; on one rule 1.45e-3,
-    // the same to 3 digits with 16 more points (disc support: 2.7e-3).
+    // the same to 3 digits with 16 more points (disc support: 2.7e-3). (So the section's own
+    // rule is built only without it.)
+    // Otherwise the section's own rule, on the split body: a zone's ends are vertices of the
+    // triangulation and of the edges. A rectangle with sides along r and z takes the tensor
+    // rule with p + extra_gauss_points points per direction, graded toward the zone's ends
+    // (section_quadrature.h). The local boxes' sides are cell ends, and their polynomials of
+    // degree local_degree + 2 (with the cutoff) need as many points as the global ones of
+    // degree p. A two-sided box has degree 2 local_degree + 1 along the part (local_basis.h);
+    // its cells are the graded layers toward the zone's ends, and five more points per
+    // direction left the ring die's P at the FEM's zone unchanged (10339.4 N), so the rule
+    // keeps local_degree + 2.
     if (section_support())
       quadrature_ = near_;
+    else if (is_axis_aligned_rectangle(split))
+      quadrature_ = rectangle_gauss(
+        split,
+        (local_.empty() ? options.degree : std::max(options.degree, local_.degree() + 2)) +
+          options.extra_gauss_points,
+        {options.n_cells_r, options.n_cells_z, options.n_graded_layers, options.grading_ratio},
+        local_.breaks(),
+        // Axis parity: Gauss in r^2, exact for products of the polynomials of degree p in r^2
+        // with the same points (the clamped cylinder at p = 12 and 16: the functionals within
+        // 1e-14 of a rule of 2 p + 4 points in r, 400 points instead of 720 at p = 16).
+        structures_.axis_parity());
+    else
+      quadrature_ = section_gauss(split, qo);
     // A mirrored section stands for itself and its image in z = 0: every integral twice (the
     // system scales as a whole; the functionals and forces refer to the whole body).
     if (problem.body->mirrored)

@@ -12,6 +12,12 @@ namespace rfm
   namespace
   {
     constexpr double pi = 3.14159265358979323846;
+    /// The angle from the bisector (direction beta) of the direction phi, in [-pi, pi].
+    double from_bisector(const double phi, const double beta)
+    {
+      const double theta = phi - beta;
+      return theta - 2.0 * pi * std::round(theta / (2.0 * pi));
+    }
 
     // The Gauss directions of every angular panel [panels[i], panels[i + 1]] in theta (about
     // the bisector at beta): f(phi, w_theta) with phi = theta + beta the direction in the (r, z)
@@ -145,8 +151,7 @@ namespace rfm
         if (!in_disc && !wide)
           continue;
         const double phi = std::atan2(dz, dr);
-        double theta = phi - beta_;
-        theta -= 2.0 * pi * std::round(theta / (2.0 * pi)); // into [-pi, pi]
+        const double theta = from_bisector(phi, beta_);
         std::size_t f = 0;
         for (const WedgeMode &mode : modes_)
           {
@@ -367,11 +372,7 @@ namespace rfm
     // Also broken at the directions of the outline's vertices, where the reach has a kink.
     std::vector<double> vertex_breaks;
     for (const double phi : ray_breaks_)
-      {
-        double theta = phi - beta_;
-        theta -= 2.0 * pi * std::round(theta / (2.0 * pi));
-        vertex_breaks.push_back(theta);
-      }
+      vertex_breaks.push_back(from_bisector(phi, beta_));
     // The circles' tangent directions seen from the vertex: there a ray's chord through the
     // circle starts or ends.
     for (const Circle &k : circles)
@@ -381,11 +382,7 @@ namespace rfm
           continue;
         const double half = std::asin(k.radius / d), mid = std::atan2(dz, dr);
         for (const double phi : {mid - half, mid + half})
-          {
-            double theta = phi - beta_;
-            theta -= 2.0 * pi * std::round(theta / (2.0 * pi));
-            vertex_breaks.push_back(theta);
-          }
+          vertex_breaks.push_back(from_bisector(phi, beta_));
       }
     const GaussRule1D ga = gauss_legendre(n_angular), gr = gauss_legendre(n_radial);
     // Where a ray nearly grazes a curved edge, or runs almost along a line that ends at an
