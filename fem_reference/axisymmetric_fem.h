@@ -91,7 +91,8 @@
 //    force_trace = -2 pi int (n.s_h n) r ds over the part in both modes.
 //    Mesh (every problem): after the L global refinements, the cells at each singular
 //    vertex of the outline are graded toward it (FemOptions::grade_toward_vertices), and
-//    so are those at every traction jump (axisym::traction_jump_vertices, as lambda = 1).
+//    so are those at every traction jump (axisym::traction_jump_vertices, as lambda = 1) and
+//    every resonant vertex (axisym::resonant_vertices, as lambda = 1).
 //    Mesh (dies): after the L global refinements, the cells within half the zone's length of the
 //    zone are refined until they are die_zone_cells * 2^L across the zone (unless the global
 //    mesh already has at least half that density there), then the cells at each free end of
@@ -159,7 +160,9 @@ namespace fem
     /// traction jumps (axisym::traction_jump_vertices: a stress of degree 0 that depends on
     /// the direction, a rho log rho displacement) are graded as lambda = 1: the pressure
     /// band's energy at L = 2 is then 3.4e-7 from the limit against 2.8e-5 uniform, and the
-    /// hub of issue 24 1.1e-7 against 7.0e-6 (measured, session 14). false: uniform.
+    /// hub of issue 24 1.1e-7 against 7.0e-6 (measured, session 14). So are the resonant
+    /// vertices (axisym::resonant_vertices: a rho log rho stress where a temperature gradient
+    /// or gravity crosses a symmetry line at a right angle to a traction part). false: uniform.
     bool grade_toward_vertices = true;
     /// Adaptive refinement (issue 25 item 1; problem file "fem.refinement", fem_solve
     /// --adaptive): after the solve on the mesh of level `refinements` (without the grading

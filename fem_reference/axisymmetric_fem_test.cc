@@ -667,6 +667,36 @@ namespace fem
     EXPECT_GT(std::abs(uniform.functionals.reissner / limit - 1.0), 1e-5);
   }
 
+  // Grading toward a resonant vertex (axisym::resonant_vertices, as lambda = 1): the ring
+  // [0.8, 1.2] x [0, 0.4] m on the symmetry plane z = 0 under T = 100 z K
+  // (verification/problems/heated_ring_axial_gradient.json), whose stress has a rho log rho
+  // term at (0.8, 0) and (1.2, 0). Reference for sigma_zz(0.8, 0): the RFM with the resonant
+  // vertices' log columns (rfm/spaces/resonant_vertex.h), -25.1121 MPa at p = 20 (-25.1095 at
+  // p = 16, indicator 4.6e-10 at p = 20), measured. Graded L = 2 reads -25.1086 (1.4e-4 off),
+  // uniform L = 2 -24.675 (1.7e-2 off).
+  TEST(AxisymmetricFemOutline, GradingTowardAResonantVertexRecoversItsStress)
+  {
+    const axisym::Problem p = axisym::parse_problem(nlohmann::json::parse(R"({
+      "geometry": {"outline": [{"start": [0.8, 0.0]}, {"line_to": [1.2, 0.0], "part": "mid"},
+        {"line_to": [1.2, 0.4], "part": "outer"}, {"line_to": [0.8, 0.4], "part": "top"},
+        {"line_to": [0.8, 0.0], "part": "bore"}]},
+      "boundary": {"mid": {"symmetry": true}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3, "thermal_expansion": 1.2e-5},
+      "loading": {"temperature": {"field": [0.0, 0.0, 100.0]}},
+      "samples": [[0.8, 0.0]]})"));
+    const double reference = -25.1121e6;
+    FemOptions o = quiet(2, 2);
+    const FemResult graded = solve(p, o);
+    ASSERT_TRUE(graded.success) << graded.message;
+    ASSERT_EQ(graded.graded_vertices.size(), 2u);
+    EXPECT_EQ(graded.graded_vertices[0][2], 1.0);
+    EXPECT_LT(std::abs(graded.samples.at(0).sigma[1] / reference - 1.0), 5e-4);
+    o.grade_toward_vertices = false;
+    const FemResult uniform = solve(p, o);
+    ASSERT_TRUE(uniform.success) << uniform.message;
+    EXPECT_GT(std::abs(uniform.samples.at(0).sigma[1] / reference - 1.0), 1e-3);
+  }
+
   // Adaptive refinement (FemOptions::adaptive, issue 25 item 1) from the stepped ring's base
   // mesh, without the a-priori grading: Kelly's estimate finds the vertex. At the tolerance 1e-6
   // it stops at 16 570 DoFs, 2.2e-7 from the uniform meshes' limit above (measured), where

@@ -674,7 +674,7 @@ namespace axisym
                               "local_max_box", "vertex_max_exponent", "vertex_mode_degree",
                               "vertex_cutoff", "vertex_local_degree",
                               "vertex_local_displacement_degree", "vertex_support",
-                              "axis_parity"});
+                              "resonant_displacement_degree", "axis_parity"});
         if (r.has("degree") && r.has("tolerance"))
           fail("rfm", top.at("rfm"), "give rfm.degree (fixed p) or rfm.tolerance (p rises "
                                      "until the indicator is below it), not both");
@@ -727,6 +727,9 @@ namespace axisym
         if (r.has("vertex_local_displacement_degree"))
           p.rfm.vertex_local_displacement_degree =
             r.integer("vertex_local_displacement_degree", ranges::rfm_vertex_local_displacement_degree);
+        if (r.has("resonant_displacement_degree"))
+          p.rfm.resonant_displacement_degree =
+            r.integer("resonant_displacement_degree", ranges::rfm_resonant_displacement_degree);
         if (r.has("vertex_support"))
           p.rfm.vertex_support = r.string("vertex_support", {"local", "section"}) == "local"
                                    ? RfmSettings::VertexSupport::local

@@ -31,6 +31,7 @@ namespace axisym
     ranges::rfm_vertex_mode_degree.check(vertex_mode_degree);
     ranges::rfm_vertex_local_degree.check(vertex_local_degree);
     ranges::rfm_vertex_local_displacement_degree.check(vertex_local_displacement_degree);
+    ranges::rfm_resonant_displacement_degree.check(resonant_displacement_degree);
     if (!(vertex_max_exponent >= 0.0 && vertex_max_exponent <= 6.0))
       throw InputError("rfm.vertex_max_exponent = " + std::to_string(vertex_max_exponent) +
                        ": must be in [0, 6] (the largest Re lambda of the vertex modes; 0 is off)");

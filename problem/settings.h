@@ -43,6 +43,9 @@ namespace axisym
     inline constexpr IntRange rfm_vertex_local_displacement_degree{
       "rfm.vertex_local_displacement_degree", -1, 12,
       "the vertex's smooth displacement columns, at most rfm.vertex_local_degree; -1: none"};
+    inline constexpr IntRange rfm_resonant_displacement_degree{
+      "rfm.resonant_displacement_degree", -1, 4,
+      "the resonant vertices' log displacement columns times the monomials of this total degree; -1: none"};
     inline constexpr IntRange rfm_local_levels{
       "rfm.local_levels", -1, 8, "-1: as many as the zone's size asks for; 0: none"};
     inline constexpr IntRange rfm_local_degree{
@@ -120,6 +123,18 @@ namespace axisym
     /// displacements at 4 / both at 8: the stepped ring 8.7e-6 / 1.6e-6 / 2.4e-6; the same
     /// ring moved to r = 10 m under an end traction 5.4e-5 / 1.5e-6 / 2.2e-5.
     int vertex_local_displacement_degree = 4;
+    /// Resonant vertices (rfm/spaces/resonant_vertex.h: a symmetry line at a right angle to a
+    /// traction part, a temperature gradient or gravity across the line): the log field's
+    /// stress columns times the monomials up to the degree p / 4 within [1, 4], and its
+    /// displacement columns times those up to this degree (at most the stresses'; -1: none).
+    /// None by default: they restore exponential convergence where the rest of the section
+    /// converges (a heated ring on a symmetry plane, indicator at p = 16 / 20: 1.3e-7 / 2.7e-8
+    /// without the vertex's columns, 6.4e-8 / 1.2e-8 with the stress columns, 8.4e-9 /
+    /// 4.6e-10 with displacement columns of degree 4 too), but where another vertex limits
+    /// the section the mixed solution's displacement falls behind with them (issue 24's heated
+    /// hub at p = 16 / 20: 1.15e-4 / 7.2e-5 without, 1.06e-4 / 6.9e-5 with the stress columns,
+    /// 1.61e-4 / 1.11e-4 with both).
+    int resonant_displacement_degree = -1;
     /// Where a vertex's mode columns live (rfm/spaces/vertex_enrichment.h:
     /// set_section_support): `section` (default) on the whole section at a re-entrant vertex
     /// (interior angle above 180 degrees) about which the section is star-shaped, in a

@@ -267,4 +267,34 @@ namespace axisym
       });
     return out;
   }
+  std::vector<ResonantSite> resonant_vertices(const Body &body, const BodyLoads &loads)
+  {
+    std::vector<ResonantSite> out;
+    const double t_grad = std::hypot(loads.temperature[1], loads.temperature[2]);
+    if (!(t_grad > 0.0) && loads.gravity == 0.0)
+      return out;
+    using Kind = PartCondition::Kind;
+    auto traction_part = [](const PartCondition &c) {
+      return c.kind == Kind::traction_free || c.kind == Kind::pressure || c.kind == Kind::traction;
+    };
+    for_each_vertex_off_axis(body, [&](const OutlineEdge &a, const OutlineEdge &b) {
+        const Point ta = a.tangent_at(1.0), tb = b.tangent_at(0.0);
+        const double turn = std::atan2(ta.r * tb.z - ta.z * tb.r, ta.r * tb.r + ta.z * tb.z);
+        if (!(std::abs(turn - 0.5 * pi) < 1e-9)) // interior angle pi - turn
+          return;
+        const PartCondition &ca = body.conditions.at(a.part), &cb = body.conditions.at(b.part);
+        const bool sym_a = ca.kind == Kind::symmetry && traction_part(cb);
+        const bool sym_b = cb.kind == Kind::symmetry && traction_part(ca);
+        if (!sym_a && !sym_b)
+          return;
+        const OutlineEdge &line = sym_a ? a : b;
+        const Point n = line.outward_normal_at(0.5);
+        const bool thermal = std::abs(n.r * loads.temperature[1] + n.z * loads.temperature[2]) > 1e-12 * t_grad;
+        const bool gravity = loads.gravity != 0.0 && std::abs(n.z) > 1e-12;
+        if (thermal || gravity)
+          out.push_back({a.end, line.part, (sym_a ? b : a).part});
+      });
+    return out;
+  }
+
 } // namespace axisym

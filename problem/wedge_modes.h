@@ -135,4 +135,18 @@ namespace axisym
   /// (rfm/spaces/traction_jump.h): not singular in the sense above, but no smoother than
   /// lambda = 1. Relative tolerance 1e-9 of the larger traction.
   std::vector<Point> traction_jump_vertices(const Body &body);
+  /// Every vertex of the outline off the axis where a symmetry line meets a traction part
+  /// (traction free, pressure, traction) at a right angle and the body loads are not
+  /// symmetric about the line: a temperature gradient across it (n . grad T != 0) or a
+  /// gravity across it (n_z != 0), n the line's normal. The wedge's exponents there are
+  /// integers (mirrored it is a half plane), and the loads' mirror has a kink or a jump that
+  /// resonates with lambda = 2: the field has a rho^2 log rho displacement
+  /// (rfm/spaces/resonant_vertex.h). (The axisymmetric terms do the same at a symmetry line
+  /// r = const, which no case has yet: they are left out.)
+  struct ResonantSite
+  {
+    Point at;
+    std::string symmetry_part, traction_part;
+  };
+  std::vector<ResonantSite> resonant_vertices(const Body &body, const BodyLoads &loads);
 } // namespace axisym

@@ -259,3 +259,42 @@ namespace axisym
     EXPECT_NEAR(shear[0].z, 0.2, 1e-12);
   }
 } // namespace axisym
+
+namespace axisym
+{
+  // Resonant vertices: issue 24's hub with its pressure kept (a traction part) and a body
+  // load. Its symmetry lines z = 0 and z = 1.6 meet the arcs and the neck and bore at right
+  // angles: T_z or gravity crosses them (four vertices), T_r runs along them (none).
+  TEST(WedgeModes, FindsTheResonantVertices)
+  {
+    auto hub = [](const double t_r, const double t_z, const double g) {
+      nlohmann::json p = testing::tapered_hub();
+      p["material"]["thermal_expansion"] = 1.2e-5;
+      p["material"]["density"] = 7800.0;
+      if (t_r != 0.0 || t_z != 0.0)
+        p["loading"]["temperature"]["field"] = {0.0, t_r, t_z};
+      if (g != 0.0)
+        p["loading"]["gravity"] = g;
+      return parse_problem(p);
+    };
+    const Problem heated = hub(100.0, 100.0, 0.0);
+    const std::vector<ResonantSite> s = resonant_vertices(*heated.body, heated.body_loads);
+    ASSERT_EQ(s.size(), 4u);
+    const Point expected[4] = {{1.2, 0.0}, {0.85, 1.6}, {0.55, 1.6}, {0.8, 0.0}}; // outline order
+    const char *symmetry[4] = {"mid", "top", "top", "mid"};
+    const char *traction[4] = {"outer_arc", "neck", "bore", "inner_arc"};
+    for (std::size_t k = 0; k < 4; ++k)
+      {
+        EXPECT_NEAR(s[k].at.r, expected[k].r, 1e-12);
+        EXPECT_NEAR(s[k].at.z, expected[k].z, 1e-12);
+        EXPECT_EQ(s[k].symmetry_part, symmetry[k]);
+        EXPECT_EQ(s[k].traction_part, traction[k]);
+      }
+    const Problem along = hub(100.0, 0.0, 0.0);
+    EXPECT_TRUE(resonant_vertices(*along.body, along.body_loads).empty());
+    const Problem weight = hub(0.0, 0.0, 9.81);
+    EXPECT_EQ(resonant_vertices(*weight.body, weight.body_loads).size(), 4u);
+    const Problem pressure_only = parse_problem(testing::tapered_hub());
+    EXPECT_TRUE(resonant_vertices(*pressure_only.body, pressure_only.body_loads).empty());
+  }
+} // namespace axisym

@@ -181,6 +181,21 @@ namespace rfm
         }
       return zones;
     }
+
+    /// The edges of the outline that arrive at x and leave it (nullptr where none).
+    std::pair<const axisym::OutlineEdge *, const axisym::OutlineEdge *>
+    edges_at(const std::vector<axisym::OutlineEdge> &edges, const axisym::Point x, const double tol)
+    {
+      const axisym::OutlineEdge *arriving = nullptr, *leaving = nullptr;
+      for (const axisym::OutlineEdge &e : edges)
+        {
+          if (std::hypot(e.end.r - x.r, e.end.z - x.z) < tol)
+            arriving = &e;
+          if (std::hypot(e.start.r - x.r, e.start.z - x.z) < tol)
+            leaving = &e;
+        }
+      return {arriving, leaving};
+    }
   } // namespace
 
   std::string axis_parity_obstacle(const axisym::Problem &problem, const DiscretizationOptions &options)
@@ -242,6 +257,7 @@ namespace rfm
     std::vector<int> graded = make_enrichments(problem, zones, options);
     make_vertex_enrichments(problem, options, graded);
     make_traction_jumps(problem, options);
+    make_resonant_vertices(problem, options);
     edge_quadrature_ = edge_gauss(structures_.body().outline, qo.n_points, graded);
     // The near-edge rules: the half disc of each enrichment's support, polar with
     // rho = rho_0 s^2 (quadrature.h), placed in its frame.
@@ -292,6 +308,8 @@ namespace rfm
       for (std::size_t i = 0; i < jumps_.size(); ++i)
         if (jump_rules_[i])
           circles.push_back({jumps_[i].vertex(), jumps_[i].cutoff_radius()});
+      for (const ResonantVertex &v : resonances_)
+        circles.push_back({v.vertex(), v.cutoff_radius()});
       for (const VertexEnrichment &v : vertices_)
         {
           std::vector<VertexEnrichment::Circle> crossed = circles;
@@ -316,6 +334,19 @@ namespace rfm
             total += q.weights.size();
             rules.push_back(std::move(q));
           }
+      for (const ResonantVertex &v : resonances_)
+        {
+          // One geometric layer (two radial pieces): the log columns' products are bounded
+          // (rho log rho). On the heated ring (with the displacement columns) one, two and
+          // four layers gave the same functionals and samples to 4 digits at p = 16 and 20;
+          // none (rho = rho_0 s^2 alone) an indicator of 4.9e-6 instead of 4.6e-10 at p = 20,
+          // and 10 points a direction instead of the vertices' 17 there 2.9e-3. Four layers
+          // cost the heated hub 2.9 s more at p = 16.
+          Quadrature2D q = v.near_rule(n_vertex, n_vertex, 1);
+          pulls.push_back({v.vertex(), v.cutoff_radius(), false});
+          total += q.weights.size();
+          rules.push_back(std::move(q));
+        }
       // Where rules overlap (a rule over the whole section, or two discs: the rooms keep a
       // vertex's disc off the other edges, not off another vertex's disc) each point's weight
       // takes the share s_i / sum_j s_j of its rule: a partition of unity, 1 at each centre,
@@ -1067,6 +1098,8 @@ namespace rfm
       all.set_columns(at, en.evaluate(r, z)), at += en.n_columns();
     for (const VertexEnrichment &en : vertices_)
       all.set_columns(at, en.evaluate(r, z)), at += en.n_columns();
+    for (const ResonantVertex &en : resonances_)
+      all.set_columns(at, en.evaluate(r, z)), at += en.n_columns();
     return all;
   }
 
@@ -1187,6 +1220,8 @@ namespace rfm
     Eigen::Index n = 0;
     for (const VertexEnrichment &e : vertices_)
       n += e.n_columns();
+    for (const ResonantVertex &e : resonances_)
+      n += e.n_columns();
     return n;
   }
 
@@ -1303,14 +1338,7 @@ namespace rfm
       {
         // The two parts at v: straight, and no die (a zone's reach is not known before the
         // solve; its own ends are contact edges).
-        const axisym::OutlineEdge *arriving = nullptr, *leaving = nullptr;
-        for (const axisym::OutlineEdge &e : edges)
-          {
-            if (std::hypot(e.end.r - v.at.r, e.end.z - v.at.z) < tol)
-              arriving = &e;
-            if (std::hypot(e.start.r - v.at.r, e.start.z - v.at.z) < tol)
-              leaving = &e;
-          }
+        const auto [arriving, leaving] = edges_at(edges, v.at, tol);
         if (!arriving || !leaving || arriving->kind != axisym::OutlineEdge::Kind::line ||
             leaving->kind != axisym::OutlineEdge::Kind::line ||
             body.conditions.at(arriving->part).kind == Kind::die ||
@@ -1574,6 +1602,60 @@ namespace rfm
           arriving, *load(arriving, 1.0), leaving, *load(leaving, 0.0), rho_0, material_.poisson_ratio);
         jumps_.push_back(std::move(*jump));
         jump_rules_.push_back(shared == nullptr);
+      }
+  }
+
+  void OutlineModel::make_resonant_vertices(const axisym::Problem &problem,
+                                            const DiscretizationOptions &options)
+  {
+    if (!(options.vertex_max_exponent > 0.0))
+      return;
+    // The stress columns' multipliers grow with p: on the heated ring of
+    // verification/problems/heated_ring_axial_gradient.json (with displacement columns of the
+    // same degree) the indicator at p = 8 was 1.4e-5 without the columns, 1.3e-5 / 9.2e-6 /
+    // 3.4e-5 / 1.4e-4 with degree 1 / 2 / 3 / 4, and at p = 16 1.3e-7 without, 1.6e-7 /
+    // 5.6e-8 / 7.0e-9 / 8.4e-9 / 2.2e-9 with degree 1 to 5.
+    const int degree = std::clamp(options.degree / 4, 1, 4);
+    const int displacement_degree = std::min(options.resonant_displacement_degree, degree);
+    const axisym::Body &body = *problem.body;
+    const std::vector<axisym::OutlineEdge> &edges = body.outline.edges();
+    const double tol = 1e-9 * body.outline.size();
+    const std::vector<axisym::ResonantSite> sites = axisym::resonant_vertices(body, problem.body_loads);
+    auto resonant_at = [&](const axisym::Point x) {
+      for (const axisym::ResonantSite &s : sites)
+        if (std::hypot(s.at.r - x.r, s.at.z - x.z) < tol)
+          return true;
+      return false;
+    };
+    for (const axisym::ResonantSite &site : sites)
+      {
+        const auto [arriving, leaving] = edges_at(edges, site.at, tol);
+        if (!arriving || !leaving)
+          continue;
+        // The room, as a traction jump's.
+        double room = std::min(arriving->length() * (resonant_at(arriving->start) ? 0.5 : 1.0),
+                               leaving->length() * (resonant_at(leaving->end) ? 0.5 : 1.0));
+        for (const axisym::OutlineEdge &e : edges)
+          if (&e != arriving && &e != leaving)
+            room = std::min(room, e.distance_to(site.at));
+        for (const EdgeEnrichment &en : enrichments_)
+          room = std::min(room, std::hypot(en.frame().r - site.at.r, en.frame().z - site.at.z) - en.cutoff_radius());
+        for (const VertexEnrichment &w : vertices_)
+          room = std::min(room, std::hypot(w.vertex().r - site.at.r, w.vertex().z - site.at.z) - w.cutoff_radius());
+        for (const TractionJump &j : jumps_)
+          room = std::min(room, std::hypot(j.vertex().r - site.at.r, j.vertex().z - site.at.z) - j.cutoff_radius());
+        // A quarter of an arc face's radius: the mapped stress columns (wedge_frame.h) turn by
+        // about rho / R from the field's, and the displacement columns do not turn. On issue
+        // 24's heated hub with the outer arc made a chord, the vertex (0.8, 0) on the inner arc
+        // (R = 0.8) with rho_0 = 0.39 took the indicator at p = 16 from 8.3e-6 to 2.1e-5 (both
+        // columns of degree 4); with 0.2, 8.5e-6.
+        for (const axisym::OutlineEdge *e : {arriving, leaving})
+          if (e->kind == axisym::OutlineEdge::Kind::arc)
+            room = std::min(room, 0.25 * e->radius());
+        if (!(room > tol))
+          continue;
+        resonances_.emplace_back(*arriving, *leaving, leaving->part == site.symmetry_part,
+                                 options.vertex_cutoff * room, material_, degree, displacement_degree);
       }
   }
 

@@ -69,6 +69,7 @@
 #include "rfm/spaces/local_basis.h"
 #include "rfm/spaces/section_basis.h"
 #include "rfm/spaces/traction_jump.h"
+#include "rfm/spaces/resonant_vertex.h"
 #include "rfm/spaces/vertex_enrichment.h"
 #include "rfm/structures/outline_structures.h"
 
@@ -211,6 +212,15 @@ namespace rfm
     /// modes too). Their products are integrated on the jump's polar rule (the vertex's when
     /// it has modes), like the enrichment columns'.
     const std::vector<TractionJump> &traction_jumps() const { return jumps_; }
+    /// Resonant vertices (resonant_vertex.h): at every vertex of axisym::resonant_vertices (a
+    /// symmetry line meets a traction part at a right angle and the loads are not symmetric
+    /// about the line; no die), the log field's stress and displacement columns times the
+    /// monomials up to rfm.vertex_mode_degree, cut off at rfm.vertex_cutoff times the room
+    /// (each face, half of it where its other end is resonant too; the distance to every other
+    /// edge; clear of the other enrichments' and jumps' supports), after the vertex
+    /// enrichments' columns, on their own polar rules.
+    const std::vector<ResonantVertex> &resonant_vertices() const { return resonances_; }
+    /// The vertex enrichments' and the resonant vertices' columns.
     Eigen::Index n_vertex_columns() const;
     /// The edge intensity K = sqrt(2 pi) a_1 [Pa m^1/2] at zone end i by the interaction
     /// integral (contact.h) on the half disc of radius 0.9 times the end's room. K < 0: the
@@ -285,6 +295,8 @@ namespace rfm
     /// Builds jumps_ (after vertices_); jump_rules_[i]: jump i has a near rule of its own
     /// (false where it shares a vertex enrichment's).
     void make_traction_jumps(const axisym::Problem &problem, const DiscretizationOptions &options);
+    /// Builds resonances_ (after jumps_).
+    void make_resonant_vertices(const axisym::Problem &problem, const DiscretizationOptions &options);
     /// Sums over the jumps at points (zero beyond their supports): sigma = chi (S - s0) (the
     /// particular stress's change), u = chi u_D (the particular displacement's: no condition
     /// on u holds within the support) and its strain (fourth-order central differences with
@@ -347,6 +359,7 @@ namespace rfm
     std::vector<ZoneEdge> edges_;
     std::vector<VertexEnrichment> vertices_;
     std::vector<TractionJump> jumps_;
+    std::vector<ResonantVertex> resonances_;
     std::vector<bool> jump_rules_;
     Quadrature2D near_;      ///< the near-edge and near-vertex rules of all enrichments
     /// The first n_near_in_discs_ points of near_ lie in some rule's disc (all of them

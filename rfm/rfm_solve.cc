@@ -535,6 +535,24 @@ namespace
           }
         result["diagnostics"]["traction_jumps"] = list;
       }
+    if (model && !model->resonant_vertices().empty())
+      {
+        nlohmann::json list = nlohmann::json::array();
+        for (const rfm::ResonantVertex &v : model->resonant_vertices())
+          {
+            fmt::print(stderr,
+                       "rfm_solve: resonant vertex at ({:.6g}, {:.6g}) m (a symmetry line meets a traction "
+                       "part at a right angle, the loads cross the line): {} log stress columns, {} with a "
+                       "displacement, within {:.4g} m\n",
+                       v.vertex().r, v.vertex().z, v.n_columns(), v.n_displacement_columns(), v.cutoff_radius());
+            list.push_back({{"r", v.vertex().r},
+                            {"z", v.vertex().z},
+                            {"cutoff_radius", v.cutoff_radius()},
+                            {"columns", v.n_columns()},
+                            {"displacement_columns", v.n_displacement_columns()}});
+          }
+        result["diagnostics"]["resonant_vertices"] = list;
+      }
     if (!solved)
       {
         if (!vertex_warning.empty())

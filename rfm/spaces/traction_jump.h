@@ -20,16 +20,10 @@
 // two different shear tractions; there it has no solution and no field is made.
 //
 // Faces that are arcs. The straight wedge meets an arc's condition only at v. The field is
-// therefore taken at a mapped angle and rotated: with phi_f(x) the angle about the arc's
-// centre from v to x (0 for a line), a point of face f seen from v at the polar angle of the
-// chord, theta_f + phi_f / 2, and whose normal is turned by phi_f,
-//   w = (theta - phi_0 / 2) / (beta + phi_1 / 2 - phi_0 / 2)          (0 on face 0, 1 on face 1)
-//   theta' = theta - (1 - w) phi_0 / 2 - w phi_1 / 2,   a = (1 - w) phi_0 + w phi_1,
-//   S(x) = Q(a) S_wedge(theta') Q(a)^T,
-// so that on each face theta' is the straight wedge's face angle and Q(a) turns the wedge's
-// face normal into the arc's: S n = Q(a) t_f. That is the arc's traction for a pressure (t
-// turns with n) and for a free face; an arc carrying a fixed traction vector is left out.
-// On lines a = 0 and theta' = theta: the wedge's field exactly.
+// therefore taken at the mapped angle theta' of wedge_frame.h and turned by its a, S(x) =
+// Q(a) S_wedge(theta') Q(a)^T: that meets the arc's traction for a pressure (t turns with n)
+// and for a free face; an arc carrying a fixed traction vector is left out. On lines the
+// wedge's field exactly.
 //
 // The model (outline_model.h) adds chi(rho) (S - s0) to the particular stress, with chi the
 // C2 cutoff of edge_modes.h (1 at v, 0 from rho_0 on), so that the structures stay
@@ -46,6 +40,7 @@
 
 #include "problem/outline.h"
 #include "rfm/quadrature/quadrature.h"
+#include "rfm/spaces/wedge_frame.h"
 
 #include <Eigen/Core>
 
@@ -76,10 +71,10 @@ namespace rfm
                                             double cutoff_radius, double poisson_ratio,
                                             std::string *why = nullptr);
 
-    const axisym::Point &vertex() const { return at_; }
+    const axisym::Point &vertex() const { return frame_.vertex(); }
     double cutoff_radius() const { return cutoff_radius_; }
     /// The interior angle beta [rad].
-    double angle() const { return beta_; }
+    double angle() const { return frame_.angle(); }
 
     /// S at points, n x 4 in StressComponent order (rr, zz, tt, rz) [Pa], without the cutoff.
     /// At the vertex itself (no direction) the value on the bisector.
@@ -99,39 +94,17 @@ namespace rfm
     Eigen::VectorXd cutoff(const Eigen::Ref<const Eigen::VectorXd> &r,
                            const Eigen::Ref<const Eigen::VectorXd> &z) const;
 
-    /// The body within rho_0 of the vertex, polar: radially in geometric layers toward v
-    /// (ratio 0.2, n_layers of them, the innermost with rho = rho_in s^2), n_radial points
-    /// each; at each radius the angles between the two faces (the chord angle of an arc), in
-    /// panels of at most pi / 2 broken where a face's line continues into the body, n_angular
-    /// points each. Plain area weights dr dz. Precondition: rho_0 below the faces' lengths
-    /// and the distance to every other edge (OutlineModel chooses it).
+    /// The body within rho_0 of the vertex (WedgeFrame::near_rule; OutlineModel chooses rho_0
+    /// below the faces' lengths and the distance to every other edge).
     Quadrature2D near_rule(int n_radial, int n_angular, int n_layers = 8) const;
 
   private:
     TractionJump() = default;
     /// The straight wedge's stress (rr, zz, rz) in the (r, z) frame at the angle theta.
     std::array<double, 3> wedge_stress(double theta) const;
-    /// The mapped angle theta' and the rotation a at a point (theta' = beta / 2, a = 0 at v).
-    std::array<double, 2> mapped_angle(double r, double z) const;
-    /// Polar angle of x about v from the leaving face's direction, in
-    /// [beta / 2 - pi, beta / 2 + pi).
-    double polar_angle(double r, double z) const;
-    /// phi_f(x): the angle about face f's centre from v to x (0 for a line).
-    double arc_angle(int face, double r, double z) const;
-
-    axisym::Point at_;
-    double gamma_ = 0.0; ///< angle of the leaving face's direction at v in the (r, z) plane
-    double beta_ = 0.0;
+    WedgeFrame frame_;
     std::array<double, 4> coefficients_{{0, 0, 0, 0}}; ///< A, B, C, D
     double cutoff_radius_ = 0.0;
     double poisson_ratio_ = 0.0;
-    /// Faces: 0 leaving, 1 arriving; an arc's centre, radius, sweep sign (0 for a line).
-    struct Face
-    {
-      axisym::Point center;
-      double radius = 0.0;
-      int sweep_sign = 0;
-    };
-    std::array<Face, 2> faces_;
   };
 } // namespace rfm
