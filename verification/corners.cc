@@ -9,6 +9,8 @@
 //      half (the jump on a straight face), and issue 24's tapered hub (the pressure on the
 //      inner arc ends at the bore), with and without the loaded wedge's field.
 //   4. The tapered hub under a temperature field instead of the pressure (full mode).
+//   5. A resonant vertex (rfm/spaces/resonant_vertex.h): a ring on a symmetry plane heated
+//      across it, the RFM with and without the log columns.
 //
 // For each: the RFM at the default settings (the vertex's modes and local columns,
 // rfm/spaces/vertex_enrichment.h) and without the vertex's columns, against p; the FEM (Q2 on
@@ -227,11 +229,14 @@ namespace
 
   // A traction jump (issue 24 item 4: rfm/spaces/traction_jump.h): the RFM with the loaded
   // wedge's field (the defaults) and without (vertex_max_exponent = 0, which also drops any
-  // vertex's modes) against p; the FEM on uniform levels (the jump is not a singular vertex:
-  // its mesh is not graded there) with Richardson's limit of the last three; the RFM's
-  // samples against the finest level.
+  // vertex's modes and resonant vertex's columns) against p; the FEM on levels graded toward
+  // the jump (FemOptions::grade_toward_vertices) with Richardson's limit of the last three;
+  // the RFM's samples against the finest level.
   nlohmann::json jump_case(const std::string &file, const verification::DriverContext &context,
-                           const std::vector<int> &degrees, const std::vector<int> &levels)
+                           const std::vector<int> &degrees, const std::vector<int> &levels,
+                           const std::string &without_key = "rfm_without_jump_field",
+                           const std::string &without_text = "without the jump's field",
+                           const int resonant_displacement_degree = -1)
   {
     const axisym::Problem problem = axisym::read_problem_file(context.problem_path(file));
     nlohmann::json c = {{"problem_file", "verification/problems/" + file}};
@@ -264,14 +269,22 @@ namespace
     const double limit = energy_limit(energies, file, c["fem"]);
     const double scale = largest_component(fem_samples);
     const auto [r, z] = sample_points(problem);
-    for (const bool with : {true, false})
+    // The defaults, without the vertex terms, and (resonant_displacement_degree >= 0) with the
+    // resonant vertices' displacement columns of that degree.
+    for (const int variant : {0, 1, 2})
       {
-        const std::string key = with ? "rfm" : "rfm_without_jump_field";
+        if (variant == 2 && resonant_displacement_degree < 0)
+          continue;
+        const bool with = variant != 1;
+        const std::string key = variant == 0 ? "rfm" : variant == 1 ? without_key : "rfm_with_displacement_columns";
+        axisym::Problem run = problem;
+        if (variant == 2)
+          run.rfm.resonant_displacement_degree = resonant_displacement_degree;
         double last_indicator = 0.0;
         bool falling = true;
         for (const int p : degrees)
           {
-            const auto model = solve_at(problem, file, p, with);
+            const auto model = solve_at(run, file, p, with);
             const rfm::OutlineModel &m = *model;
             const rfm::Functionals f = m.functionals();
             const rfm::FieldValues v = m.evaluate(r, z);
@@ -292,7 +305,11 @@ namespace
             last_indicator = f.indicator();
             fmt::print("RFM{} p = {:>2}: Phi_R {:.10e} ({:.2e} from the FEM's limit), indicator {:.2e}, "
                        "samples {:.2e} of max |sigma| from the FEM's ({:.1f} s)\n",
-                       with ? "" : " without the jump's field", p, f.reissner, energy_error, f.indicator(),
+                       variant == 0 ? std::string()
+                       : variant == 1
+                         ? " " + without_text
+                         : fmt::format(" with displacement columns of degree {}", resonant_displacement_degree),
+                       p, f.reissner, energy_error, f.indicator(),
                        sample_error, seconds);
             c[key]["p" + std::to_string(p)] = {{"reissner", f.reissner},
                                                {"lagrange", f.lagrange},
@@ -302,6 +319,7 @@ namespace
                                                {"sample_error_relative", sample_error},
                                                {"sample_errors_relative", errors},
                                                {"traction_jumps", m.traction_jumps().size()},
+                                               {"resonant_vertices", m.resonant_vertices().size()},
                                                {"seconds", seconds}};
           }
         // 1 when the indicator fell at every step of p (issue 24: "at every fixed degree
@@ -339,6 +357,14 @@ nlohmann::json run(const verification::DriverContext &context)
   if (full)
     results["tapered_hub_temperature"] =
       corner_case(context, "tapered_hub_temperature.json", degrees, {1, 2, 3});
+  // A resonant vertex (rfm/spaces/resonant_vertex.h): a ring [0.8, 1.2] x [0, 0.4] m on a
+  // symmetry plane z = 0 under T = 100 z K, whose two right-angled vertices on the plane have
+  // a rho log rho stress; the RFM with the log columns' stresses (the defaults), without them
+  // (vertex_max_exponent = 0) and with their displacement columns of degree 4 too
+  // (rfm.resonant_displacement_degree), the FEM graded toward both vertices.
+  results["heated_ring_axial_gradient"] =
+    jump_case("heated_ring_axial_gradient.json", context, full ? std::vector<int>{8, 12, 16, 20} : std::vector<int>{8, 12},
+              {2, 3, 4}, "rfm_without_resonant_columns", "without the resonant vertices' columns", 4);
   return results;
 }
 
