@@ -267,6 +267,7 @@ namespace axisym
       });
     return out;
   }
+
   std::vector<ResonantSite> resonant_vertices(const Body &body, const BodyLoads &loads)
   {
     std::vector<ResonantSite> out;
@@ -296,5 +297,4 @@ namespace axisym
       });
     return out;
   }
-
 } // namespace axisym
