@@ -7,9 +7,10 @@
 // A temperature that varies across the line (T_z at a symmetry line z = const) does not: the
 // mirrored eigenstrain has a kink, and the field a term rho^2 log rho in the displacement,
 // rho log rho in the stress (a gravity across the line does the same: its mirror jumps). On
-// issue 24's heated hub (T = 100 r + 100 z K, symmetry on z = 0 and z = 1.6) the sample at
-// the vertex (0.8, 0) swung -444.9, -472.4, -449.5 MPa at p = 8, 12, 16 against the FEM's
-// -472.6: polynomials resolve rho log rho no better than the stress jump of a traction jump.
+// issue 24's heated hub (T = 100 r + 100 z K, symmetry on z = 0 and z = 1.6) sigma_zz at the
+// vertex (0.8, 0) read -391.0, -492.2, -484.5 MPa at p = 8, 12, 16 against the graded FEM's
+// -472.65 (polynomials resolve rho log rho no better than a traction jump's stress jump); with
+// the stress columns below -476.9 at p = 16 and -472.69 at p = 20.
 //
 // The field. In the frame (x, y) with x along the symmetry line from the vertex v and y along
 // the traction face (the body in x > 0, y > 0; psi = atan2(y, x)), the half plane x > 0 with
@@ -37,7 +38,9 @@
 // offsets scaled by rho_0, which carry the next terms of the expansion (rho^3 log rho). A
 // scalar factor keeps both faces' conditions. A traction face that is an arc: the stress is
 // taken at wedge_frame.h's mapped angle and turned, which keeps it traction free on the arc;
-// the displacement needs no map (its condition is on the line).
+// the displacement needs no map (its condition is on the line). The displacement columns may
+// stop at a lower degree than the stress columns (the model takes none by default,
+// rfm.resonant_displacement_degree; problem/settings.h says why).
 #pragma once
 
 #include "problem/outline.h"
@@ -47,6 +50,8 @@
 #include "rfm/spaces/wedge_frame.h"
 
 #include <Eigen/Core>
+
+#include <array>
 
 namespace rfm
 {
@@ -76,9 +81,9 @@ namespace rfm
     EdgeColumns evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
                          const Eigen::Ref<const Eigen::VectorXd> &z) const;
 
-    /// The unit field before the cutoff at a point of the straight wedge, in the (x, y)
-    /// frame of the header: (sigma_xx, sigma_yy, sigma_xy) of the half plane's field (not
-    /// less the uniform gradient) and (u_x, u_y) for mu = 1, at (x, y) / rho_0.
+    /// The half plane's field of the header (not less the uniform gradient) at the point
+    /// (x, y) of its frame: (sigma_xx, sigma_yy, sigma_xy) and (u_x, u_y) for mu = 1. The
+    /// columns take it at the offsets over rho_0.
     struct FrameField
     {
       double s[3], u[2];
