@@ -162,7 +162,7 @@ namespace fem
     /// band's energy at L = 2 is then 3.4e-7 from the limit against 2.8e-5 uniform, and the
     /// hub of issue 24 1.1e-7 against 7.0e-6 (measured, session 14). So are the resonant
     /// vertices (axisym::resonant_vertices: a rho log rho stress where a temperature gradient
-    /// or gravity crosses a symmetry line at a right angle to a traction part). false: uniform.
+    /// crosses a symmetry line at a right angle to a traction part). false: uniform.
     bool grade_toward_vertices = true;
     /// Adaptive refinement (issue 25 item 1; problem file "fem.refinement", fem_solve
     /// --adaptive): after the solve on the mesh of level `refinements` (without the grading

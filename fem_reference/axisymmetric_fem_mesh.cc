@@ -284,8 +284,8 @@ namespace fem::internal
     for (const axisym::Point &v : axisym::traction_jump_vertices(body_))
       grade_toward(v, 1.0);
     // Where the loads resonate with the wedge's integer exponents (axisym::resonant_vertices:
-    // a symmetry line at a right angle to a traction part, a temperature gradient or gravity
-    // across the line): the stress's rho log rho term, graded as lambda = 1 too, for the
+    // a symmetry line at a right angle to a traction part, a temperature gradient across the
+    // line): the stress's rho log rho term, graded as lambda = 1 too, for the
     // values at and near the vertex.
     for (const axisym::ResonantSite &v : axisym::resonant_vertices(body_, problem_.body_loads))
       grade_toward(v.at, 1.0);

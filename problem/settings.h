@@ -124,7 +124,7 @@ namespace axisym
     /// ring moved to r = 10 m under an end traction 5.4e-5 / 1.5e-6 / 2.2e-5.
     int vertex_local_displacement_degree = 4;
     /// Resonant vertices (rfm/spaces/resonant_vertex.h: a symmetry line at a right angle to a
-    /// traction part, a temperature gradient or gravity across the line): the log field's
+    /// traction part, a temperature gradient across the line): the log field's
     /// stress columns times the monomials up to the degree p / 4 within [1, 4], and its
     /// displacement columns times those up to this degree (at most the stresses'; -1: none).
     /// None by default: they restore exponential convergence where the rest of the section

@@ -272,7 +272,7 @@ namespace axisym
   {
     std::vector<ResonantSite> out;
     const double t_grad = std::hypot(loads.temperature[1], loads.temperature[2]);
-    if (!(t_grad > 0.0) && loads.gravity == 0.0)
+    if (!(t_grad > 0.0))
       return out;
     using Kind = PartCondition::Kind;
     auto traction_part = [](const PartCondition &c) {
@@ -290,9 +290,7 @@ namespace axisym
           return;
         const OutlineEdge &line = sym_a ? a : b;
         const Point n = line.outward_normal_at(0.5);
-        const bool thermal = std::abs(n.r * loads.temperature[1] + n.z * loads.temperature[2]) > 1e-12 * t_grad;
-        const bool gravity = loads.gravity != 0.0 && std::abs(n.z) > 1e-12;
-        if (thermal || gravity)
+        if (std::abs(n.r * loads.temperature[1] + n.z * loads.temperature[2]) > 1e-12 * t_grad)
           out.push_back({a.end, line.part, (sym_a ? b : a).part});
       });
     return out;

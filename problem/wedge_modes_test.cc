@@ -264,7 +264,7 @@ namespace axisym
 {
   // Resonant vertices: issue 24's hub with its pressure kept (a traction part) and a body
   // load. Its symmetry lines z = 0 and z = 1.6 meet the arcs and the neck and bore at right
-  // angles: T_z or gravity crosses them (four vertices), T_r runs along them (none).
+  // angles: T_z crosses them (four vertices), T_r runs along them (none); gravity is left out.
   TEST(WedgeModes, FindsTheResonantVertices)
   {
     auto hub = [](const double t_r, const double t_z, const double g) {
@@ -292,8 +292,8 @@ namespace axisym
       }
     const Problem along = hub(100.0, 0.0, 0.0);
     EXPECT_TRUE(resonant_vertices(*along.body, along.body_loads).empty());
-    const Problem weight = hub(0.0, 0.0, 9.81);
-    EXPECT_EQ(resonant_vertices(*weight.body, weight.body_loads).size(), 4u);
+    const Problem weight = hub(0.0, 0.0, 9.81); // left out (wedge_modes.h)
+    EXPECT_TRUE(resonant_vertices(*weight.body, weight.body_loads).empty());
     const Problem pressure_only = parse_problem(testing::tapered_hub());
     EXPECT_TRUE(resonant_vertices(*pressure_only.body, pressure_only.body_loads).empty());
   }

@@ -542,7 +542,7 @@ namespace
           {
             fmt::print(stderr,
                        "rfm_solve: resonant vertex at ({:.6g}, {:.6g}) m (a symmetry line meets a traction "
-                       "part at a right angle, the loads cross the line): {} log stress columns, {} with a "
+                       "part at a right angle, a temperature gradient crosses the line): {} log stress columns, {} with a "
                        "displacement, within {:.4g} m\n",
                        v.vertex().r, v.vertex().z, v.n_columns(), v.n_displacement_columns(), v.cutoff_radius());
             list.push_back({{"r", v.vertex().r},

@@ -6,7 +6,8 @@
 // plane), so wedge_modes.h finds none and the field is smooth when the loads mirror smoothly.
 // A temperature that varies across the line (T_z at a symmetry line z = const) does not: the
 // mirrored eigenstrain has a kink, and the field a term rho^2 log rho in the displacement,
-// rho log rho in the stress (a gravity across the line does the same: its mirror jumps). On
+// rho log rho in the stress (a gravity across the line too, which the model leaves out:
+// axisym::resonant_vertices says why). On
 // issue 24's heated hub (T = 100 r + 100 z K, symmetry on z = 0 and z = 1.6) sigma_zz at the
 // vertex (0.8, 0) read -391.0, -492.2, -484.5 MPa at p = 8, 12, 16 against the graded FEM's
 // -472.65 (polynomials resolve rho log rho no better than a traction jump's stress jump); with
