@@ -150,20 +150,26 @@ namespace fem
     /// halvings of the cells at each free end of the zone (axisymmetric_fem.h, "Dies").
     int die_zone_cells = 4;
     int die_edge_refinements = 3;
-    /// Geometric grading toward every singular vertex of the outline (axisym::singular_vertices:
-    /// an exponent with Re lambda < 1; problem/wedge_modes.h): after the global refinements the
-    /// cells at the vertex are halved k more times, each halving of the cells within two
-    /// diameters of it, with k such that the smallest cell h_min meets
-    /// (h_min / l)^lambda = (h_L / l)^p (l the outline's size, h_L the level's nominal size,
-    /// p the degree): the singular term's share of the energy error then falls as fast as
-    /// the smooth part's (h^2p), at the cost of a few cells per halving. The vertices where a
+    /// Grading toward every singular vertex of the outline (axisym::singular_vertices: an
+    /// exponent with Re lambda < 1; problem/wedge_modes.h): after the global refinements the
+    /// cells near the vertex are halved until their size is at most h_L (rho / rho_g)^(1 -
+    /// lambda / p) at their distance rho from it (the radical mesh: each annulus then carries
+    /// about the same share of the singular term's energy error, and the energy converges at
+    /// the nominal order h^2p of a smooth field), down to the smallest cell h_min at the
+    /// vertex with (h_min / l)^lambda = (h_L / l)^p (l the outline's size, h_L the level's
+    /// nominal size, p the degree, rho_g = vertex_grading_radius l). The vertices where a
     /// traction jumps (axisym::traction_jump_vertices: a stress of degree 0 that depends on
-    /// the direction, a rho log rho displacement) are graded as lambda = 1: the pressure
-    /// band's energy at L = 2 is then 3.4e-7 from the limit against 2.8e-5 uniform, and the
-    /// hub of issue 24 1.1e-7 against 7.0e-6 (measured, session 14). So are the resonant
-    /// vertices (axisym::resonant_vertices: a rho log rho stress where a temperature gradient
-    /// crosses a symmetry line at a right angle to a traction part). false: uniform.
+    /// the direction, a rho log rho displacement) are graded as lambda = 1, and so are the
+    /// resonant vertices (axisym::resonant_vertices: a rho log rho stress where a temperature
+    /// gradient crosses a symmetry line at a right angle to a traction part). false: uniform.
+    /// Measured (fem_reference/README.md, "Grading toward singular vertices"): before the radical law the cells within
+    /// two diameters of the vertex were halved k times only, and a shell of cells of size h_L
+    /// a few h_L from the vertex kept the singular term's error at h^(2 lambda): the energy's
+    /// observed order per level was 1.17 on the stepped shaft and 1.52 on the stepped ring.
     bool grade_toward_vertices = true;
+    /// rho_g / l of the radical grading above: the distance from a singular vertex, as a
+    /// fraction of the outline's size, beyond which the cells keep the level's size.
+    double vertex_grading_radius = 0.25;
     /// Adaptive refinement (issue 25 item 1; problem file "fem.refinement", fem_solve
     /// --adaptive): after the solve on the mesh of level `refinements` (without the grading
     /// toward vertices: the estimator finds them), cycles of: the Kelly estimate of each cell

@@ -259,20 +259,26 @@ namespace fem::internal
       return; // adaptive: the estimator finds the vertices
     const double l = body_.outline.size(), h = base_mesh_size_ / std::pow(2.0, level_);
     auto grade_toward = [&](const axisym::Point &at, const double lambda) {
-      // (h_min / l)^lambda = (h / l)^p: log2(h / h_min) = (p / lambda - 1) log2(l / h).
+      // The smallest cell, at the vertex: (h_min / l)^lambda = (h / l)^p, log2(h / h_min) =
+      // (p / lambda - 1) log2(l / h).
       const double halvings = (options_.degree / lambda - 1.0) * std::log2(l / h);
       const int k = std::clamp(static_cast<int>(std::ceil(halvings)), 0, 40);
+      const double h_min = h / std::pow(2.0, k);
+      // Away from it the radical law h(rho) = h (rho / rho_g)^(1 - lambda / p), rho_g =
+      // vertex_grading_radius l (FemOptions): each annulus then carries about the same share
+      // of the singular term's error, which falls as h^2p (FemOptions::grade_toward_vertices).
+      const double mu = std::clamp(1.0 - lambda / options_.degree, 0.0, 1.0);
+      const double rho_g = options_.vertex_grading_radius * l;
       const Point<2> x(at.r, at.z);
-      for (int j = 1; j <= k; ++j)
-        {
-          const double hj = h / std::pow(2.0, j);
-          refine_cells_while(
-            [&](const auto &cell) {
-              return cell->diameter() / std::sqrt(2.0) > 1.01 * hj &&
-                     cell->center().distance(x) < 2.0 * cell->diameter();
-            },
-            8);
-        }
+      refine_cells_while(
+        [&](const auto &cell) {
+          // A lower bound of the cell's distance from the vertex: its centre's, less half its
+          // diameter.
+          const double rho = std::max(0.0, cell->center().distance(x) - 0.5 * cell->diameter());
+          const double target = std::max(h_min, h * std::pow(std::min(1.0, rho / rho_g), mu));
+          return cell->diameter() / std::sqrt(2.0) > 1.01 * target;
+        },
+        k + 4);
       vertex_grading_.push_back({{at.r, at.z, lambda, static_cast<double>(k)}});
     };
     for (const axisym::SingularVertex &v :

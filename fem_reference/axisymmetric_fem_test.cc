@@ -617,11 +617,12 @@ namespace fem
     EXPECT_THROW(solve(die_problem("iterate"), o), axisym::InputError);
   }
 
-  // Geometric grading toward a singular vertex (FemOptions::grade_toward_vertices): the
-  // stepped ring's 270-degree vertex (lambda = 0.5445). Reference: the energy's Richardson
-  // limit of uniform refinement, L = 3, 4, 5 (-0.42827312, -0.42829412, -0.42830399 J/rad at
-  // the observed order 1.09 = 2 lambda: -0.4283127). Uniform L = 2 is 2.0e-4 from it; graded
-  // L = 2 (28 298 DoFs) 4.3e-7.
+  // Grading toward a singular vertex (FemOptions::grade_toward_vertices): the stepped ring's
+  // 270-degree vertex (lambda = 0.5445). Reference: the energy's Richardson limit of uniform
+  // refinement, L = 3, 4, 5 (-0.42827312, -0.42829412, -0.42830399 J/rad at the observed
+  // order 1.09 = 2 lambda: -0.4283127). Uniform L = 2 is 2.0e-4 from it; graded L = 2 (95 684
+  // DoFs) 5.3e-8 (4.3e-7 with the earlier geometric grading at 28 298 DoFs; the graded
+  // levels' own limit is -0.4283127263).
   TEST(AxisymmetricFemOutline, GradingTowardASingularVertexRecoversTheEnergy)
   {
     const axisym::Problem p = axisym::parse_problem(axisym::testing::stepped_ring());
@@ -643,12 +644,32 @@ namespace fem
     EXPECT_GT(std::abs(uniform.functionals.reissner / limit - 1.0), 1e-4);
   }
 
+  // The radical grading's point (FemOptions::grade_toward_vertices): at a singular vertex the
+  // energy converges at the order of a smooth field, h^4 per level with Q2, not h^(2 lambda).
+  // The stepped ring at L = 0, 1, 2 (8 176, 27 092, 95 684 DoFs): the energy changes by
+  // 5.2e-7 and 4.1e-8 J/rad, a ratio of 12.6 (order 3.66); with the earlier geometric grading
+  // (the cells within two diameters of the vertex halved, a shell of cells of the level's size
+  // a few cells away) the ratio was 2.9 (order 1.52, L = 2, 3, 4).
+  TEST(AxisymmetricFemOutline, GradingTowardASingularVertexConvergesAtTheSmoothOrder)
+  {
+    const axisym::Problem p = axisym::parse_problem(axisym::testing::stepped_ring());
+    double phi[3];
+    for (int level = 0; level < 3; ++level)
+      {
+        const FemResult r = solve(p, quiet(2, level));
+        ASSERT_TRUE(r.success) << r.message;
+        phi[level] = r.functionals.reissner;
+      }
+    const double ratio = (phi[1] - phi[0]) / (phi[2] - phi[1]);
+    EXPECT_GT(ratio, 8.0) << "observed order " << std::log2(ratio);
+  }
+
   // Grading toward a traction jump (axisym::traction_jump_vertices, as lambda = 1): the
   // pressure band (verification/problems/pressure_band_ring.json: 10 MPa on the lower half of
   // the bore). Reference: the Richardson limit -18.6658441 J/rad, from the uniform levels L =
-  // 2, 3, 4 (observed order 1.99: -18.66584417) and from the graded ones (order 1.8:
-  // -18.6658441), measured. Graded L = 2 (13 756 DoFs) is 3.4e-7 from it, uniform L = 2
-  // 2.8e-5.
+  // 2, 3, 4 (observed order 1.99: -18.66584417) and from the graded ones (order 3.64:
+  // -18.66584409), measured. Graded L = 2 (31 046 DoFs) is 5.4e-8 from it (3.4e-7 with the
+  // earlier geometric grading at 13 756 DoFs), uniform L = 2 2.8e-5.
   TEST(AxisymmetricFemOutline, GradingTowardATractionJumpRecoversTheEnergy)
   {
     const axisym::Problem p = axisym::parse_problem(axisym::testing::pressure_band());
@@ -672,8 +693,8 @@ namespace fem
   // (verification/problems/heated_ring_axial_gradient.json), whose stress has a rho log rho
   // term at (0.8, 0) and (1.2, 0). Reference for sigma_zz(0.8, 0): the RFM with the resonant
   // vertices' log columns (rfm/spaces/resonant_vertex.h), -25.1121 MPa at p = 20 (-25.1095 at
-  // p = 16, indicator 4.6e-10 at p = 20), measured. Graded L = 2 reads -25.1086 (1.4e-4 off),
-  // uniform L = 2 -24.675 (1.7e-2 off).
+  // p = 16, indicator 4.6e-10 at p = 20), measured. Graded L = 2 reads -25.1137 (6.4e-5 off;
+  // -25.1086 with the earlier geometric grading), uniform L = 2 -24.675 (1.7e-2 off).
   TEST(AxisymmetricFemOutline, GradingTowardAResonantVertexRecoversItsStress)
   {
     const axisym::Problem p = axisym::parse_problem(nlohmann::json::parse(R"({
