@@ -647,9 +647,10 @@ namespace fem
   // The radical grading's point (FemOptions::grade_toward_vertices): at a singular vertex the
   // energy converges at the order of a smooth field, h^4 per level with Q2, not h^(2 lambda).
   // The stepped ring at L = 0, 1, 2 (8 176, 27 092, 95 684 DoFs): the energy changes by
-  // 5.2e-7 and 4.1e-8 J/rad, a ratio of 12.6 (order 3.66); with the earlier geometric grading
+  // 5.2e-7 and 4.1e-8 J/rad, a ratio of 12.6 (order 3.66). With the earlier geometric grading
   // (the cells within two diameters of the vertex halved, a shell of cells of the level's size
-  // a few cells away) the ratio was 2.9 (order 1.52, L = 2, 3, 4).
+  // a few cells away) the same levels (9 678, 14 214, 28 298 DoFs) gave 7.2, and the ratio fell
+  // to 2.9 further on (order 1.52 at L = 2, 3, 4).
   TEST(AxisymmetricFemOutline, GradingTowardASingularVertexConvergesAtTheSmoothOrder)
   {
     const axisym::Problem p = axisym::parse_problem(axisym::testing::stepped_ring());
@@ -661,7 +662,7 @@ namespace fem
         phi[level] = r.functionals.reissner;
       }
     const double ratio = (phi[1] - phi[0]) / (phi[2] - phi[1]);
-    EXPECT_GT(ratio, 8.0) << "observed order " << std::log2(ratio);
+    EXPECT_GT(ratio, 10.0) << "observed order " << std::log2(ratio);
   }
 
   // Grading toward a traction jump (axisym::traction_jump_vertices, as lambda = 1): the
