@@ -4,6 +4,8 @@
 // command-line runner for the solvers' CLI tests.
 #pragma once
 
+#include "problem/outline.h"
+
 #include <nlohmann/json.hpp>
 
 #include <array>
@@ -16,6 +18,24 @@
 
 namespace axisym::testing
 {
+  /// One outline edge built directly (no parsing): the line from a to b, and the arc from a
+  /// to b about c.
+  inline OutlineEdge line(const Point a, const Point b, const char *part = "")
+  {
+    OutlineEdge e;
+    e.kind = OutlineEdge::Kind::line;
+    e.start = a, e.end = b;
+    e.part = part;
+    return e;
+  }
+  inline OutlineEdge arc(const Point a, const Point b, const Point c)
+  {
+    OutlineEdge e = line(a, b);
+    e.kind = OutlineEdge::Kind::arc;
+    e.center = c;
+    return e;
+  }
+
   /// The thick spherical shell a = 0.1 m, b = 0.2 m of DESIGN.md 7.1: a quarter annulus with
   /// the equator (symmetry) and the axis, inner pressure 10 MPa, steel. Tests add samples,
   /// solver settings or other conditions to it.

@@ -1,5 +1,7 @@
 #include "rfm/spaces/resonant_vertex.h"
 
+#include "problem/test_problems.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,21 +14,8 @@ namespace
   constexpr double pi = 3.14159265358979323846;
   constexpr double nu = 0.3, young = 2.1e11, mu = young / (2 * (1 + nu));
 
-  OutlineEdge line(const Point a, const Point b, const char *part = "")
-  {
-    OutlineEdge e;
-    e.kind = OutlineEdge::Kind::line;
-    e.start = a, e.end = b;
-    e.part = part;
-    return e;
-  }
-  OutlineEdge arc(const Point a, const Point b, const Point c)
-  {
-    OutlineEdge e = line(a, b);
-    e.kind = OutlineEdge::Kind::arc;
-    e.center = c;
-    return e;
-  }
+  using axisym::testing::arc;
+  using axisym::testing::line;
   rfm::Material steel()
   {
     rfm::Material m;

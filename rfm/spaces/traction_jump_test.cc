@@ -1,5 +1,6 @@
 #include "rfm/spaces/traction_jump.h"
 
+#include "problem/test_problems.h"
 #include "rfm/material.h"
 
 #include <gtest/gtest.h>
@@ -14,20 +15,8 @@ namespace
   constexpr double pi = 3.14159265358979323846;
   constexpr double nu = 0.3, young = 2.1e11, mu = young / (2 * (1 + nu));
 
-  OutlineEdge line(const Point a, const Point b)
-  {
-    OutlineEdge e;
-    e.kind = OutlineEdge::Kind::line;
-    e.start = a, e.end = b;
-    return e;
-  }
-  OutlineEdge arc(const Point a, const Point b, const Point c)
-  {
-    OutlineEdge e = line(a, b);
-    e.kind = OutlineEdge::Kind::arc;
-    e.center = c;
-    return e;
-  }
+  using axisym::testing::arc;
+  using axisym::testing::line;
   TractionJump::FaceLoad pressure(const OutlineEdge &e, const double t, const double p)
   {
     const Point n = e.outward_normal_at(t);
