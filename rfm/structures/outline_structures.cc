@@ -528,6 +528,72 @@ namespace rfm
                 break;
               }
           }
+
+    // The even ends of the arcs with boundary columns (the header's "Even ends"): an end on
+    // a symmetry line or the axis whose line passes through the arc's centre.
+    even_arcs_.assign(edges.size(), {});
+    const double size = body_.outline.size(), tol = 1e-9 * size;
+    for (std::size_t i = 0; i < stress_edges_.size(); ++i)
+      {
+        const int e = stress_edges_[i];
+        const OutlineEdge &arc = edges[e];
+        if (boundary_slot_[i] < 0 || arc.kind != OutlineEdge::Kind::arc ||
+            body_.outline.contains(arc.center, 1e-6 * size))
+          continue;
+        EvenArc &even = even_arcs_[e];
+        for (const int y : symmetry_edges_)
+          {
+            if (!edges[y].on_axis(tol) &&
+                body_.condition_of_edge(y).kind != PartCondition::Kind::symmetry)
+              continue; // a die's zone is shear free, not a mirror
+            const OutlineEdge &line = edges[y];
+            const axisym::Point d = minus(line.end, line.start);
+            const double length = std::sqrt(dot(d, d));
+            const axisym::Point c = minus(arc.center, line.start);
+            if (std::abs(c.r * d.z - c.z * d.r) / length > tol)
+              continue; // the centre is off the line
+            auto shares = [&](const axisym::Point &p) {
+              return std::hypot(p.r - line.start.r, p.z - line.start.z) < tol ||
+                     std::hypot(p.r - line.end.r, p.z - line.end.z) < tol;
+            };
+            even.ends |= (shares(arc.start) ? 1 : 0) | (shares(arc.end) ? 2 : 0);
+          }
+        if (even.ends == 0 || even.ends == 3)
+          continue;
+        // One even end: the largest angle from it over the section, so that the coordinate
+        // stays in [-1, 1] there.
+        even.angle_max = std::abs(arc.sweep());
+        for (const OutlineEdge &other : edges)
+          for (int k = 0; k <= 200; ++k)
+            {
+              const axisym::Point x = other.point_at(k / 200.0);
+              even.angle_max = std::max(even.angle_max, std::abs(angle_from_even_end(e, x.r, x.z)));
+            }
+      }
+  }
+
+  double OutlineStructures::angle_from_even_end(const int e, const double r, const double z) const
+  {
+    // The angle about the centre from the start, positive along the arc; from the end when
+    // only the end is even.
+    const OutlineEdge &arc = body_.outline.edges()[e];
+    const double ur = arc.start.r - arc.center.r, uz = arc.start.z - arc.center.z;
+    const double vr = r - arc.center.r, vz = z - arc.center.z;
+    const double from_start =
+      (arc.sweep() > 0 ? 1.0 : -1.0) * std::atan2(ur * vz - uz * vr, ur * vr + uz * vz);
+    return even_arcs_[e].ends == 2 ? std::abs(arc.sweep()) - from_start : from_start;
+  }
+
+  double OutlineStructures::boundary_coordinate(const int e, const double r, const double z) const
+  {
+    const EvenArc &even = even_arcs_[e];
+    if (even.ends == 0)
+      return omegas_[e].edge_coordinate(r, z).value;
+    const double phi = angle_from_even_end(e, r, z);
+    if (even.ends == 3)
+      return -std::cos(M_PI * phi / std::abs(body_.outline.edges()[e].sweep()));
+    const double eta = phi / even.angle_max;
+    return 2.0 * eta * eta - 1.0;
   }
 
   std::array<int, 2> OutlineStructures::displacement_degree_reduction(const int m) const
@@ -759,7 +825,7 @@ namespace rfm
               continue;
             const auto t = tangent_tensor(edge, rk, zk);
             // Legendre P_0..P_degree at the edge coordinate.
-            const double xi = omegas_[edge].edge_coordinate(rk, zk).value;
+            const double xi = boundary_coordinate(edge, rk, zk);
             legendre[0] = 1.0;
             if (n_b > 1)
               legendre[1] = xi;

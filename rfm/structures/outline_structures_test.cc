@@ -81,6 +81,21 @@ namespace rfm
         "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
     }
 
+    // A 60-degree sector of a hollow sphere cut by an inclined free line: two arcs about the
+    // origin, each with one end on the equator.
+    axisym::Problem sector()
+    {
+      return axisym::parse_problem(nlohmann::json::parse(R"({
+        "geometry": {"outline": [
+          {"start": [0.1, 0.0]},
+          {"line_to": [0.2, 0.0], "part": "equator"},
+          {"arc_to": [0.1, 0.17320508075688773], "center": [0.0, 0.0], "part": "outer"},
+          {"line_to": [0.05, 0.08660254037844387], "part": "cut"},
+          {"arc_to": [0.1, 0.0], "center": [0.0, 0.0], "part": "inner"}]},
+        "boundary": {"equator": {"symmetry": true}, "inner": {"pressure": 1.0e6}},
+        "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
+    }
+
     // Random points on edge e (away from its ends), and just inside the section.
     std::vector<axisym::Point> points_on(const axisym::OutlineEdge &e, std::mt19937 &rng)
     {
@@ -341,7 +356,7 @@ namespace rfm
     r << x.r;
     z << x.z;
     const OutlineStressValues v = s.stress(r, z);
-    const double xi = s.omegas()[1].edge_coordinate(x.r, x.z).value;
+    const double xi = s.boundary_coordinate(1, x.r, x.z);
     const axisym::Point t = outer.tangent_at(0.3);
     // Column 2 (outer edge listed first among the S edges: P_2(xi)).
     const double p2 = 0.5 * (3 * xi * xi - 1);
@@ -351,6 +366,70 @@ namespace rfm
     // The inner edge's columns vanish on the outer edge.
     for (int j = 4; j < 8; ++j)
       EXPECT_NEAR(v.boundary[rr](0, j), 0.0, 1e-14);
+  }
+
+  // An arc that ends at a right angle on a symmetry line or the axis through its centre
+  // continues smoothly in its mirror image, and sigma_ss is even about that end: the
+  // coordinate of its boundary columns is even there (outline_structures.h, "Even ends").
+  // The sphere's arcs end on the equator and the axis (both even); the sector's arcs each on
+  // the equator (their other ends on the inclined cut); the grooved shaft's groove on the
+  // mid-plane at its start; the shaft's inclined taper is a line and keeps its chord
+  // coordinate. With the monotone coordinate of EdgeOmega the values at mirrored angles differ
+  // by the full slope. (An arc whose centre is in the section, as the ring's half disc, keeps
+  // it too.)
+  TEST(OutlineStructures, BoundaryColumnsAreEvenAboutAMirroredArcEnd)
+  {
+    struct Case
+    {
+      axisym::Problem problem;
+      int edge;
+      bool start, end; // the even ends
+    };
+    const std::vector<Case> cases = {{sphere(nlohmann::json::object()), 1, true, true},
+                                     {sphere(nlohmann::json::object()), 3, true, true},
+                                     {sector(), 1, true, false},
+                                     {sector(), 3, false, true},
+                                     {grooved_shaft(), 1, true, false}};
+    for (const Case &c : cases)
+      {
+        const OutlineStructures s(*c.problem.body, 4);
+        const axisym::OutlineEdge &arc = c.problem.body->outline.edges()[static_cast<std::size_t>(c.edge)];
+        const double radius = arc.radius(), sweep = arc.sweep();
+        const double a0 = std::atan2(arc.start.z - arc.center.z, arc.start.r - arc.center.r);
+        auto at = [&](const double angle) { // the coordinate at an angle from the start
+          return s.boundary_coordinate(c.edge, arc.center.r + radius * std::cos(a0 + angle),
+                                       arc.center.z + radius * std::sin(a0 + angle));
+        };
+        const double d = 0.05 * std::abs(sweep), sg = sweep > 0 ? 1.0 : -1.0;
+        // Mirrored about the start, and about the end.
+        if (c.start)
+          EXPECT_NEAR(at(sg * d), at(-sg * d), 1e-12) << arc.part << " start";
+        else
+          EXPECT_GT(std::abs(at(sg * d) - at(-sg * d)), 1e-3) << arc.part << " start";
+        if (c.end)
+          EXPECT_NEAR(at(sweep - sg * d), at(sweep + sg * d), 1e-12) << arc.part << " end";
+        else
+          EXPECT_GT(std::abs(at(sweep - sg * d) - at(sweep + sg * d)), 1e-3) << arc.part << " end";
+        // Monotone along the arc, within [-1, 1] on it.
+        double last = at(0.0);
+        EXPECT_GE(last, -1.0 - 1e-12);
+        for (int k = 1; k <= 20; ++k)
+          {
+            const double xi = at(sweep * k / 20.0);
+            EXPECT_GT(std::abs(xi - last), 0.0) << arc.part;
+            EXPECT_LE(std::abs(xi), 1.0 + 1e-12) << arc.part;
+            last = xi;
+          }
+      }
+    // The ring's half disc (centre on the section) and the taper (a line): as before.
+    const axisym::Problem h = ring();
+    const OutlineStructures sr(*h.body, 4);
+    const axisym::Point y = h.body->outline.edges()[1].point_at(0.3);
+    EXPECT_EQ(sr.boundary_coordinate(1, y.r, y.z), sr.omegas()[1].edge_coordinate(y.r, y.z).value);
+    const axisym::Problem g = grooved_shaft();
+    const OutlineStructures s(*g.body, 4);
+    const axisym::Point x = g.body->outline.edges()[4].point_at(0.3);
+    EXPECT_EQ(s.boundary_coordinate(4, x.r, x.z), s.omegas()[4].edge_coordinate(x.r, x.z).value);
   }
 
   // Where two S edges join smoothly (the ring's arcs at (0.15, 0.04); the shaft's pressure
