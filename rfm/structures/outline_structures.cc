@@ -558,10 +558,11 @@ namespace rfm
             };
             even.ends |= (shares(arc.start) ? 1 : 0) | (shares(arc.end) ? 2 : 0);
           }
-        if (even.ends == 0 || even.ends == 3)
+        if (even.ends == 0)
           continue;
-        // One even end: the largest angle from it over the section, so that the coordinate
-        // stays in [-1, 1] there.
+        // The largest angle from the even end over the section (with one even end the
+        // coordinate's scale, so that it stays in [-1, 1] there). Where the section reaches
+        // round the centre towards the angle's branch cut, the monotone coordinate stays.
         even.angle_max = std::abs(arc.sweep());
         for (const OutlineEdge &other : edges)
           for (int k = 0; k <= 200; ++k)
@@ -569,6 +570,8 @@ namespace rfm
               const axisym::Point x = other.point_at(k / 200.0);
               even.angle_max = std::max(even.angle_max, std::abs(angle_from_even_end(e, x.r, x.z)));
             }
+        if (even.angle_max > 0.95 * M_PI)
+          even = EvenArc{};
       }
   }
 
