@@ -154,6 +154,12 @@ namespace axisym
     /// axis converge like the rest. Used where OutlineModel::axis_parity_obstacle finds
     /// nothing against it; false: never (the plain polynomials in r, as before).
     bool axis_parity = true;
+    /// The displacement space's own upper bound of Phi beside Phi_L(u_h)
+    /// (OutlineModel::ritz_lagrange; rfm_solve's functionals.lagrange_ritz and
+    /// indicator_ritz): a displacement-only Ritz solve on the columns of u_h after the mixed
+    /// one. Off by default: it costs about half an assembly (the stepped shaft at p = 16:
+    /// 1.9 s beside 3.4 s).
+    bool ritz_bound = false;
     /// Local resolution near a die's zone (rfm/spaces/local_basis.h): nested boxes of half sizes
     /// local_first_box c, twice that, ... up to local_max_box times the section's extent
     /// along the die's part (c the zone's extent from its centre), each with the tensor

@@ -6,6 +6,8 @@
 #include "rfm/solve/symmetric_eigen.h"
 #include "problem/wedge_modes.h"
 
+#include <Eigen/Cholesky>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -1021,14 +1023,15 @@ namespace rfm
 
   FieldValues OutlineModel::evaluate_parts(const Eigen::Ref<const Eigen::VectorXd> &r,
                                            const Eigen::Ref<const Eigen::VectorXd> &z,
-                                           const bool with_enrichment) const
+                                           const bool with_enrichment,
+                                           const Eigen::VectorXd *q_u) const
   {
     // In blocks of points: the basis values of the whole section's rule (48 000 points times
     // 3 (p + 1)^2 columns per component at p = 20) would take gigabytes, and their page faults
     // and zeroing took longer than the products.
     const Eigen::Index n_points = r.size();
     if (n_points <= evaluation_block)
-      return evaluate_block(r, z, with_enrichment);
+      return evaluate_block(r, z, with_enrichment, q_u);
     FieldValues f;
     f.u.resize(n_points, 2);
     f.sigma.resize(n_points, n_stress_components);
@@ -1036,7 +1039,7 @@ namespace rfm
     for (Eigen::Index k0 = 0; k0 < n_points; k0 += evaluation_block)
       {
         const Eigen::Index m = std::min(evaluation_block, n_points - k0);
-        const FieldValues b = evaluate_block(r.segment(k0, m), z.segment(k0, m), with_enrichment);
+        const FieldValues b = evaluate_block(r.segment(k0, m), z.segment(k0, m), with_enrichment, q_u);
         f.u.middleRows(k0, m) = b.u;
         f.sigma.middleRows(k0, m) = b.sigma;
         f.strain.middleRows(k0, m) = b.strain;
@@ -1046,8 +1049,10 @@ namespace rfm
 
   FieldValues OutlineModel::evaluate_block(const Eigen::Ref<const Eigen::VectorXd> &r,
                                            const Eigen::Ref<const Eigen::VectorXd> &z,
-                                           const bool with_enrichment) const
+                                           const bool with_enrichment,
+                                           const Eigen::VectorXd *q_u) const
   {
+    const Eigen::VectorXd &coef_u = q_u ? *q_u : q_u_;
     const Eigen::Index n = n_basis_functions(), n_b = n_stress_border();
     const BasisValues b = basis_values(r, z);
     const OutlineStressValues s = stress_values(r, z);
@@ -1065,7 +1070,7 @@ namespace rfm
     Eigen::MatrixXd du_dr = d.u0_r, du_dz = d.u0_z;
     for (int m = 0; m < 2; ++m)
       {
-        const auto qm = q_u_.segment(m * n, n);
+        const auto qm = coef_u.segment(m * n, n);
         f.u.col(m) += v.value[m] * qm;
         du_dr.col(m) += v.d_r[m] * qm;
         du_dz.col(m) += v.d_z[m] * qm;
@@ -1079,7 +1084,7 @@ namespace rfm
     if (with_enrichment && n_e > 0)
       {
         const EdgeColumns e = enrichment_columns(r, z);
-        add_enrichment_fields(e, q_s_.tail(n_e), q_u_.tail(n_e), f);
+        add_enrichment_fields(e, q_s_.tail(n_e), coef_u.tail(n_e), f);
       }
     if (with_enrichment && !jumps_.empty())
       {
@@ -1824,7 +1829,9 @@ namespace rfm
       part.pressure);
   }
 
-  Functionals OutlineModel::functionals() const
+  Functionals OutlineModel::functionals() const { return functionals_at(nullptr); }
+
+  Functionals OutlineModel::functionals_at(const Eigen::VectorXd *q_u) const
   {
     const Eigen::Matrix4d c = material_.compliance(), dmat = material_.stiffness();
     // With the thermal strain e_th (elastic strain e - e_th) and the body force f in W. The
@@ -1848,11 +1855,11 @@ namespace rfm
         }
       return out;
     };
-    std::array<double, 5> total = sums(quadrature_, evaluate_parts(quadrature_.r, quadrature_.z, false));
+    std::array<double, 5> total = sums(quadrature_, evaluate_parts(quadrature_.r, quadrature_.z, false, q_u));
     if (has_near_fields())
       {
-        const auto full = sums(near_, evaluate_parts(near_.r, near_.z, true));
-        const auto poly = sums(near_, evaluate_parts(near_.r, near_.z, false));
+        const auto full = sums(near_, evaluate_parts(near_.r, near_.z, true, q_u));
+        const auto poly = sums(near_, evaluate_parts(near_.r, near_.z, false, q_u));
         for (int i = 0; i < 5; ++i)
           total[i] += full[i] - poly[i];
       }
@@ -1860,7 +1867,7 @@ namespace rfm
            thermal = total[3], work = total[4];
     // Boundary terms: W(u) on the traction edges; (s n) . u_bar on the displacement edges.
     const EdgeQuadrature &eq = edge_quadrature_;
-    const FieldValues fb = evaluate(eq.r, eq.z);
+    const FieldValues fb = q_u ? evaluate_parts(eq.r, eq.z, true, q_u) : evaluate(eq.r, eq.z);
     double kinematic = 0;
     for (Eigen::Index k = 0; k < eq.r.size(); ++k)
       {
@@ -1888,6 +1895,146 @@ namespace rfm
     out.castigliano = -complementary - thermal + kinematic;
     out.reissner = mixed - complementary - work;
     return out;
+  }
+
+  double OutlineModel::ritz_lagrange() const
+  {
+    if (!zones_.empty())
+      throw std::logic_error("OutlineModel::ritz_lagrange: not with a die zone");
+    const Eigen::Index n = n_basis_functions(), n_e = n_enrichment_columns(), n_u = 2 * n + n_e;
+    // D = U^T U: with y = U e per point, e . D e = |y|^2, and the stiffness is a sum of
+    // rank updates of the square-root-weighted y's of the columns.
+    const Eigen::Matrix4d u_factor = Eigen::LLT<Eigen::Matrix4d>(material_.stiffness()).matrixU();
+    Eigen::MatrixXd k = Eigen::MatrixXd::Zero(n_u, n_u);
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(n_u);
+    // The strains (rr, zz, tt, rz; engineering shear) of the polynomial displacement columns,
+    // u_r's then u_z's, as sqrt(mu) U e stacked by component: 4 m x 2 n.
+    auto weighted = [&](const std::array<Eigen::MatrixXd, 4> &e, const Eigen::VectorXd &sq) {
+      const Eigen::Index m = sq.size(), cols = e[0].cols();
+      Eigen::MatrixXd x(4 * m, cols);
+      for (int a = 0; a < 4; ++a)
+        {
+          Eigen::MatrixXd y = Eigen::MatrixXd::Zero(m, cols);
+          for (int b = 0; b < 4; ++b)
+            if (u_factor(a, b) != 0.0)
+              y += u_factor(a, b) * e[b];
+          x.middleRows(a * m, m) = sq.asDiagonal() * y;
+        }
+      return x;
+    };
+    auto polynomial_strains = [&](const DisplacementBasisValues &v, const Eigen::VectorXd &inv_r) {
+      const Eigen::Index m = inv_r.size();
+      std::array<Eigen::MatrixXd, 4> e;
+      for (auto &x : e)
+        x.setZero(m, 2 * n);
+      e[rr].leftCols(n) = v.d_r[0];
+      e[tt].leftCols(n) = inv_r.asDiagonal() * v.value[0];
+      e[rz].leftCols(n) = v.d_z[0];
+      e[zz].rightCols(n) = v.d_z[1];
+      e[rz].rightCols(n) = v.d_r[1];
+      return e;
+    };
+    auto fixed_strain = [&](const DisplacementStructureValues &d, const Eigen::VectorXd &r,
+                            const Eigen::VectorXd &z, const Eigen::VectorXd &inv_r) {
+      std::array<Eigen::MatrixXd, 4> e;
+      e[rr] = d.u0_r.col(0), e[zz] = d.u0_z.col(1);
+      e[tt] = inv_r.cwiseProduct(d.u0.col(0));
+      e[rz] = d.u0_z.col(0) + d.u0_r.col(1);
+      if (loads_.thermal())
+        for (Eigen::Index i = 0; i < r.size(); ++i)
+          {
+            const double th = axisym::thermal_strain(loads_, material_, r[i], z[i]);
+            e[rr](i, 0) -= th, e[zz](i, 0) -= th, e[tt](i, 0) -= th;
+          }
+      return e;
+    };
+    auto body_force = [&](const Eigen::VectorXd &r, const Eigen::VectorXd &z, const Eigen::VectorXd &mu) {
+      Eigen::MatrixXd f(r.size(), 2);
+      for (Eigen::Index i = 0; i < r.size(); ++i)
+        {
+          const auto fi = axisym::body_force(loads_, material_, r[i], z[i]);
+          f(i, 0) = mu[i] * fi[0], f(i, 1) = mu[i] * fi[1];
+        }
+      return f;
+    };
+    // The polynomial columns against themselves on the section's rule, the enrichment's
+    // against both on the near rules (their supports), as the assembly and functionals() do.
+    auto sweep = [&](const Quadrature2D &q, const bool near) {
+      for (Eigen::Index k0 = 0; k0 < q.n_points(); k0 += evaluation_block)
+        {
+          const Eigen::Index m = std::min(evaluation_block, q.n_points() - k0);
+          const Eigen::VectorXd r = q.r.segment(k0, m), z = q.z.segment(k0, m);
+          const Eigen::VectorXd mu = q.weights.segment(k0, m).cwiseProduct(r);
+          const Eigen::VectorXd sq = mu.cwiseMax(0.0).cwiseSqrt();
+          const Eigen::VectorXd inv_r = r.unaryExpr([](double x) { return x > 0.0 ? 1.0 / x : 0.0; });
+          const DisplacementStructureValues d = as_structure(structures_.displacement(r, z));
+          const DisplacementBasisValues v = displacement_basis(basis_values(r, z), d);
+          const Eigen::MatrixXd xp = weighted(polynomial_strains(v, inv_r), sq);
+          std::array<Eigen::MatrixXd, 4> fixed = fixed_strain(d, r, z, inv_r);
+          const bool with_forces = loads_.body_force();
+          const Eigen::MatrixXd f = with_forces ? body_force(r, z, mu) : Eigen::MatrixXd();
+          if (!near)
+            {
+              k.topLeftCorner(2 * n, 2 * n).selfadjointView<Eigen::Lower>().rankUpdate(xp.transpose());
+              g.head(2 * n).noalias() -= xp.transpose() * weighted(fixed, sq);
+              if (with_forces)
+                for (int c = 0; c < 2; ++c)
+                  g.segment(c * n, n).noalias() += v.value[c].transpose() * f.col(c);
+              continue;
+            }
+          // Near: the jumps' particular displacement is part of the fixed field there.
+          if (!jumps_.empty())
+            {
+              const FieldValues j = jump_fields(r, z);
+              std::array<Eigen::MatrixXd, 4> ej;
+              for (int c = 0; c < 4; ++c)
+                ej[c] = j.strain.col(c), fixed[c] += j.strain.col(c);
+              g.head(2 * n).noalias() -= xp.transpose() * weighted(ej, sq);
+            }
+          if (n_e == 0)
+            continue;
+          const EdgeColumns ec = enrichment_columns(r, z);
+          const Eigen::MatrixXd xe = weighted({ec.strain[rr], ec.strain[zz], ec.strain[tt], ec.strain[rz]}, sq);
+          k.bottomLeftCorner(n_e, 2 * n).noalias() += xe.transpose() * xp;
+          k.bottomRightCorner(n_e, n_e).selfadjointView<Eigen::Lower>().rankUpdate(xe.transpose());
+          g.tail(n_e).noalias() -= xe.transpose() * weighted(fixed, sq);
+          if (with_forces)
+            for (int c = 0; c < 2; ++c)
+              g.tail(n_e).noalias() += ec.u[c].transpose() * f.col(c);
+        }
+    };
+    sweep(quadrature_, false);
+    if (has_near_fields())
+      sweep(near_, true);
+    // The prescribed tractions' work.
+    {
+      const EdgeQuadrature &eq = edge_quadrature_;
+      const BasisValues bb = basis_values(eq.r, eq.z);
+      const OutlineDisplacementValues bd = structures_.displacement(eq.r, eq.z);
+      const EdgeColumns be = n_e > 0 ? enrichment_columns(eq.r, eq.z) : EdgeColumns{};
+      for (int c = 0; c < 2; ++c)
+        {
+          Eigen::VectorXd t(eq.r.size());
+          for (Eigen::Index i = 0; i < t.size(); ++i)
+            t[i] = eq.weights[i] * structures_.prescribed_traction(eq.edge[i], eq.r[i], eq.z[i])[c];
+          g.segment(c * n, n).noalias() += bb.value.transpose() * t.cwiseProduct(bd.omega.col(c));
+          if (n_e > 0)
+            g.tail(n_e).noalias() += be.u[c].transpose() * t;
+        }
+    }
+    k = k.selfadjointView<Eigen::Lower>();
+    // Jacobi-scaled, with a shift of 1e-12 of the unit diagonal for the directions that are
+    // dependent in rounding (zero columns: the local stress families' partners; the
+    // polynomials' near-dependence on sections that fill their box in part). Any
+    // coefficients give an upper bound; the shift only decides how close to the least one.
+    const Eigen::VectorXd scale = k.diagonal().unaryExpr([](double x) { return x > 0.0 ? 1.0 / std::sqrt(x) : 0.0; });
+    Eigen::MatrixXd a = scale.asDiagonal() * k * scale.asDiagonal();
+    a.diagonal().array() += 1e-12;
+    const Eigen::LLT<Eigen::MatrixXd> llt(a);
+    if (llt.info() != Eigen::Success)
+      throw std::runtime_error("OutlineModel::ritz_lagrange: the shifted stiffness is not positive definite");
+    const Eigen::VectorXd q = scale.cwiseProduct(llt.solve(scale.cwiseProduct(g)));
+    return functionals_at(&q).lagrange;
   }
 
   OutlineModel::DieForce OutlineModel::die_force(const std::string &part) const

@@ -146,6 +146,18 @@ namespace rfm
     FieldValues evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
                          const Eigen::Ref<const Eigen::VectorXd> &z) const;
     Functionals functionals() const;
+    /// The Lagrange functional's least value over the displacement space (the columns of u_h:
+    /// the polynomial ones times the structures, and every enrichment's; the lowered degree of
+    /// a displacement component is not applied) [J/rad]: Phi_L at the Ritz solution of that
+    /// space, a displacement-only solve beside the mixed one. Like Phi_L(u_h) it is an upper
+    /// bound of the exact Phi (a kinematically admissible field), and never above Phi_L(u_h)
+    /// (u_h is in the space). Why: in the mixed principle u_h is the multiplier of
+    /// equilibrium, not the space's best approximation in energy, and where the stress
+    /// space cannot see part of the displacement space's strains (vertex enrichment, arcs)
+    /// Phi_L(u_h) falls far behind what the space holds (the header of vertex_enrichment.h;
+    /// issue 24). Precondition: ok(), no die zone. Its cost: the stiffness matrix of the
+    /// displacement columns on the assembly's rules and a Cholesky factorization.
+    double ritz_lagrange() const;
 
     /// The force of the die on `part` [N, the whole body of revolution] (DESIGN.md 4.3), as
     /// a domain integral, P = -2 pi [int s . e(v) - int f . v] r dr dz + 2 pi int_St t . v r ds
@@ -278,10 +290,15 @@ namespace rfm
     std::array<Eigen::MatrixXd, 2> displacement_grams() const;
     /// The fields, without the enrichment's part when !with_enrichment (no mirroring), in
     /// blocks of at most evaluation_block points.
+    /// `q_u`: displacement coefficients in place of u_h's (nullptr: u_h's).
     FieldValues evaluate_parts(const Eigen::Ref<const Eigen::VectorXd> &r,
-                               const Eigen::Ref<const Eigen::VectorXd> &z, bool with_enrichment) const;
+                               const Eigen::Ref<const Eigen::VectorXd> &z, bool with_enrichment,
+                               const Eigen::VectorXd *q_u = nullptr) const;
     FieldValues evaluate_block(const Eigen::Ref<const Eigen::VectorXd> &r,
-                               const Eigen::Ref<const Eigen::VectorXd> &z, bool with_enrichment) const;
+                               const Eigen::Ref<const Eigen::VectorXd> &z, bool with_enrichment,
+                               const Eigen::VectorXd *q_u = nullptr) const;
+    /// functionals() with the displacement coefficients q_u (nullptr: u_h's).
+    Functionals functionals_at(const Eigen::VectorXd *q_u) const;
     static constexpr Eigen::Index evaluation_block = 2048;
     /// The enrichment columns (the tail of q_s and q_u): every zone end's, then every
     /// vertex's.

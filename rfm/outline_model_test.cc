@@ -557,6 +557,55 @@ namespace rfm
       }
   }
 
+  // The displacement space's own bound (ritz_lagrange): on the stepped shaft at p = 8 against
+  // the FEM's energy limit (fem_solve, Q2 graded toward the vertex, levels 0-2 extrapolated:
+  // -1.5686814818e-02 J/rad, the finest level 1.6e-9 from it). Both Phi_L's are upper bounds;
+  // the Ritz one is the space's least, measured 2.75e-5 from the limit against 1.66e-4 for
+  // Phi_L(u_h). Its stiffness and load come from the assembly's rules apart from the mixed
+  // system, so a slip in either (a missing enrichment block, the traction's sign) moves it
+  // below the limit or above Phi_L(u_h).
+  TEST(OutlineModel, RitzBoundLiesBetweenTheLimitAndTheMixedLagrangeBound)
+  {
+    const axisym::Problem problem = stepped_shaft(R"({"mid_plane": {"symmetry": true}, "end": {"traction": [0.0, 1.0e7]}})",
+                                                  R"({"youngs_modulus": 2.1e11, "poisson_ratio": 0.3})");
+    const double fem_energy = -1.5686814818e-02;
+    DiscretizationOptions o = problem.rfm;
+    o.degree = 8;
+    const OutlineModel m(problem, o);
+    ASSERT_TRUE(m.ok()) << m.summary().message;
+    ASSERT_GT(m.n_vertex_columns(), 0);
+    const Functionals f = m.functionals();
+    const double ritz = m.ritz_lagrange();
+    EXPECT_GT(ritz, fem_energy * (1.0 + 1e-8));
+    EXPECT_LE(ritz, f.lagrange);
+    EXPECT_LT(std::abs(ritz / fem_energy - 1.0), 5e-5);
+    EXPECT_GT(std::abs(f.lagrange / fem_energy - 1.0), 1e-4);
+  }
+
+  // With a temperature (the initial strain in the Ritz load): the ring [0.8, 1.2] x [0, 0.4] m
+  // on its symmetry plane under T = 100 z K (verification/problems/heated_ring_axial_gradient
+  // .json) at p = 8, against the FEM's limit 3.3275967171e+02 J/rad (Q2 graded toward both
+  // resonant vertices, levels 2-4 extrapolated; report 9.6).
+  TEST(OutlineModel, RitzBoundTakesTheInitialStrain)
+  {
+    const axisym::Problem problem = axisym::parse_problem(nlohmann::json::parse(R"({
+      "geometry": {"outline": [{"start": [0.8, 0.0]}, {"line_to": [1.2, 0.0], "part": "mid"},
+        {"line_to": [1.2, 0.4], "part": "outer"}, {"line_to": [0.8, 0.4], "part": "top"},
+        {"line_to": [0.8, 0.0], "part": "bore"}]},
+      "boundary": {"mid": {"symmetry": true}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3, "thermal_expansion": 1.2e-5},
+      "loading": {"temperature": {"field": [0.0, 0.0, 100.0]}}})"));
+    DiscretizationOptions o = problem.rfm;
+    o.degree = 8;
+    const OutlineModel m(problem, o);
+    ASSERT_TRUE(m.ok()) << m.summary().message;
+    const double fem_energy = 3.3275967171e+02;
+    const Functionals f = m.functionals();
+    const double ritz = m.ritz_lagrange();
+    EXPECT_GT(ritz, fem_energy * (1.0 - 1e-9));
+    EXPECT_LE(ritz, f.lagrange);
+  }
+
   // Two re-entrant vertices (a rib on a ring's base: (0.13, 0.05) and (0.17, 0.05)) whose
   // discs overlap, each room being kept off the other edges only: the near rules share the
   // overlap (the partition of unity) instead of counting it twice, which had given an

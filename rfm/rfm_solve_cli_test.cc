@@ -155,6 +155,7 @@ namespace
       Case{"degree_too_large", with("/rfm/degree", 1000), "rfm.degree"},
       Case{"degree_fraction", with("/rfm/degree", 2.5), "rfm.degree"},
       Case{"grading_ratio", with("/rfm/grading_ratio", 1.5), "rfm.grading_ratio"},
+      Case{"ritz_bound_not_a_bool", with("/rfm/ritz_bound", 1), "rfm.ritz_bound"},
       Case{"fem_degree", with("/fem/degree", 9), "fem.degree"},
       Case{"outline_open", sphere_with("/geometry/outline/4/arc_to", {0.1, 0.01}),
            "geometry.outline"},
@@ -255,6 +256,33 @@ namespace
     EXPECT_NEAR(r.at("samples")[0].at("sigma_rr").get<double>(), -1.9577e6, 4e4);
     EXPECT_LT(r.at("functionals").at("indicator").get<double>(), 1e-3);
     EXPECT_TRUE(fs::exists(dir / "vtu" / "rfm_solution.vtu"));
+  }
+
+  // --ritz-bound (rfm.ritz_bound) adds the displacement space's own bound: on Lame's sphere
+  // (a = 0.1, b = 0.2 m, 10 MPa inside only) at p = 6 both Phi_L's lie above the closed form's
+  // Phi = -p u(a) a^2 / 2 = -4/21 J/rad (u(a) = p a^3 ((1 - 2 nu) a + (1 + nu) b^3 / (2 a^2))
+  // / (E (b^3 - a^3))), the Ritz one not above Phi_L(u_h) (measured 8.6e-5 and 1.1e-4 from
+  // it), and the indicator with it not above the other.
+  TEST(RfmSolveCli, RitzBoundIsWrittenBesideTheFunctionals)
+  {
+    const fs::path dir = fs::temp_directory_path() / "rfm_cli_ritz";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path in = dir / "problem.json", out = dir / "result.json";
+    std::ofstream(in) << sphere_with("/samples", {{0.15, 0.0}});
+    const Outcome o = run(in.string() + " --degree 6 --ritz-bound --output " + out.string());
+    EXPECT_EQ(o.status, 0) << o.err;
+    std::ifstream f(out);
+    const nlohmann::json phi = nlohmann::json::parse(f).at("functionals");
+    const double exact = -4.0 / 21.0, ritz = phi.at("lagrange_ritz").get<double>();
+    EXPECT_GT(ritz, exact);
+    EXPECT_LE(ritz, phi.at("lagrange").get<double>());
+    EXPECT_LE(phi.at("indicator_ritz").get<double>(), phi.at("indicator").get<double>());
+    // Without the flag, neither field.
+    const Outcome plain = run(in.string() + " --degree 6 --output " + out.string());
+    EXPECT_EQ(plain.status, 0) << plain.err;
+    std::ifstream g(out);
+    EXPECT_FALSE(nlohmann::json::parse(g).at("functionals").contains("lagrange_ritz"));
   }
 
   // A fixed degree whose indicator is above 1e-5 says so (status "warning", exit 0: not a
