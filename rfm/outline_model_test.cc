@@ -606,6 +606,36 @@ namespace rfm
     EXPECT_LE(ritz, f.lagrange);
   }
 
+  // With a prescribed displacement (u0 in the Ritz load): the ring [0.1, 0.2] x [0, 0.4] m
+  // between two symmetry planes, its bore moved by u_a = 10 um outward, its outside free: plane
+  // strain Lame, u = A r + B / r with A a + B / a = u_a and sigma_rr(b) = 2 (lambda + mu) A
+  // - 2 mu B / b^2 = 0, so Phi = U = -sigma_rr(a) u_a a H / 2 = 2.2027972028 J/rad
+  // (sigma_rr(a) = -11.014 MPa). Measured at p = 6: the bound 1.4e-9 above it, Phi_L(u_h)
+  // 3.2e-9.
+  TEST(OutlineModel, RitzBoundTakesThePrescribedDisplacement)
+  {
+    const axisym::Problem problem = axisym::parse_problem(nlohmann::json::parse(R"({
+      "geometry": {"outline": [{"start": [0.1, 0.0]}, {"line_to": [0.2, 0.0], "part": "bottom"},
+        {"line_to": [0.2, 0.4], "part": "outer"}, {"line_to": [0.1, 0.4], "part": "top"},
+        {"line_to": [0.1, 0.0], "part": "inner"}]},
+      "boundary": {"bottom": {"symmetry": true}, "top": {"symmetry": true},
+                   "inner": {"displacement": [1.0e-5, 0.0]}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
+    const double e = 2.1e11, nu = 0.3, a = 0.1, b = 0.2, h = 0.4, u_a = 1e-5;
+    const double lambda = e * nu / ((1 + nu) * (1 - 2 * nu)), mu = e / (2 * (1 + nu));
+    const double big_b = u_a / (mu * a / ((lambda + mu) * b * b) + 1 / a);
+    const double big_a = mu * big_b / ((lambda + mu) * b * b);
+    const double exact = -0.5 * (2 * (lambda + mu) * big_a - 2 * mu * big_b / (a * a)) * u_a * a * h;
+    DiscretizationOptions o = problem.rfm;
+    o.degree = 6;
+    const OutlineModel m(problem, o);
+    ASSERT_TRUE(m.ok()) << m.summary().message;
+    const double ritz = m.ritz_lagrange();
+    EXPECT_GT(ritz, exact * (1.0 - 1e-12));
+    EXPECT_LE(ritz, m.functionals().lagrange);
+    EXPECT_LT(ritz / exact - 1.0, 1e-8);
+  }
+
   // Two re-entrant vertices (a rib on a ring's base: (0.13, 0.05) and (0.17, 0.05)) whose
   // discs overlap, each room being kept off the other edges only: the near rules share the
   // overlap (the partition of unity) instead of counting it twice, which had given an
