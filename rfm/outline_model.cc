@@ -995,19 +995,7 @@ namespace rfm
       add_jump_terms(sys);
 
     // p_u: - int_{S_t} t . Phi r ds on the traction edges.
-    const EdgeQuadrature &eq = edge_quadrature_;
-    const BasisValues bb = basis_values(eq.r, eq.z);
-    const OutlineDisplacementValues bd = structures_.displacement(eq.r, eq.z);
-    const EdgeColumns be = n_e > 0 ? enrichment_columns(eq.r, eq.z) : EdgeColumns{};
-    for (int m = 0; m < 2; ++m)
-      {
-        Eigen::VectorXd t(eq.r.size());
-        for (Eigen::Index k = 0; k < t.size(); ++k)
-          t[k] = eq.weights[k] * structures_.prescribed_traction(eq.edge[k], eq.r[k], eq.z[k])[m];
-        sys.p_u.segment(m * n, n).noalias() -= bb.value.transpose() * t.cwiseProduct(bd.omega.col(m));
-        if (n_e > 0)
-          sys.p_u.tail(n_e).noalias() -= be.u[m].transpose() * t;
-      }
+    sys.p_u -= columns_traction_work();
     return sys;
   }
 
@@ -1897,6 +1885,26 @@ namespace rfm
     return out;
   }
 
+  Eigen::VectorXd OutlineModel::columns_traction_work() const
+  {
+    const Eigen::Index n = n_basis_functions(), n_e = n_enrichment_columns();
+    Eigen::VectorXd work = Eigen::VectorXd::Zero(2 * n + n_e);
+    const EdgeQuadrature &eq = edge_quadrature_;
+    const BasisValues bb = basis_values(eq.r, eq.z);
+    const OutlineDisplacementValues bd = structures_.displacement(eq.r, eq.z);
+    const EdgeColumns be = n_e > 0 ? enrichment_columns(eq.r, eq.z) : EdgeColumns{};
+    for (int m = 0; m < 2; ++m)
+      {
+        Eigen::VectorXd t(eq.r.size());
+        for (Eigen::Index k = 0; k < t.size(); ++k)
+          t[k] = eq.weights[k] * structures_.prescribed_traction(eq.edge[k], eq.r[k], eq.z[k])[m];
+        work.segment(m * n, n).noalias() = bb.value.transpose() * t.cwiseProduct(bd.omega.col(m));
+        if (n_e > 0)
+          work.tail(n_e).noalias() += be.u[m].transpose() * t;
+      }
+    return work;
+  }
+
   double OutlineModel::ritz_lagrange() const
   {
     if (!zones_.empty())
@@ -2006,22 +2014,7 @@ namespace rfm
     sweep(quadrature_, false);
     if (has_near_fields())
       sweep(near_, true);
-    // The prescribed tractions' work.
-    {
-      const EdgeQuadrature &eq = edge_quadrature_;
-      const BasisValues bb = basis_values(eq.r, eq.z);
-      const OutlineDisplacementValues bd = structures_.displacement(eq.r, eq.z);
-      const EdgeColumns be = n_e > 0 ? enrichment_columns(eq.r, eq.z) : EdgeColumns{};
-      for (int c = 0; c < 2; ++c)
-        {
-          Eigen::VectorXd t(eq.r.size());
-          for (Eigen::Index i = 0; i < t.size(); ++i)
-            t[i] = eq.weights[i] * structures_.prescribed_traction(eq.edge[i], eq.r[i], eq.z[i])[c];
-          g.segment(c * n, n).noalias() += bb.value.transpose() * t.cwiseProduct(bd.omega.col(c));
-          if (n_e > 0)
-            g.tail(n_e).noalias() += be.u[c].transpose() * t;
-        }
-    }
+    g += columns_traction_work();
     k = k.selfadjointView<Eigen::Lower>();
     // Jacobi-scaled, with a shift of 1e-12 of the unit diagonal for the directions that are
     // dependent in rounding (zero columns: the local stress families' partners; the

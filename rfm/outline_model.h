@@ -299,6 +299,9 @@ namespace rfm
                                const Eigen::VectorXd *q_u = nullptr) const;
     /// functionals() with the displacement coefficients q_u (nullptr: u_h's).
     Functionals functionals_at(const Eigen::VectorXd *q_u) const;
+    /// int_{S_t} t . Phi r ds of every displacement column Phi (the polynomial ones, u_r's
+    /// then u_z's, and the enrichment's): the prescribed tractions' work, 2 N + n_e.
+    Eigen::VectorXd columns_traction_work() const;
     static constexpr Eigen::Index evaluation_block = 2048;
     /// The enrichment columns (the tail of q_s and q_u): every zone end's, then every
     /// vertex's.

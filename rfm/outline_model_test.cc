@@ -391,6 +391,22 @@ namespace rfm
     EXPECT_GT(std::abs(without.functionals().reissner / fem_energy - 1.0), 1e-3);
   }
 
+  namespace
+  {
+    // The ring [0.8, 1.2] x [0, 0.4] m on its symmetry plane z = 0 under T = 100 z K
+    // (verification/problems/heated_ring_axial_gradient.json without its samples).
+    axisym::Problem heated_ring_axial_gradient()
+    {
+      return axisym::parse_problem(nlohmann::json::parse(R"({
+        "geometry": {"outline": [{"start": [0.8, 0.0]}, {"line_to": [1.2, 0.0], "part": "mid"},
+          {"line_to": [1.2, 0.4], "part": "outer"}, {"line_to": [0.8, 0.4], "part": "top"},
+          {"line_to": [0.8, 0.0], "part": "bore"}]},
+        "boundary": {"mid": {"symmetry": true}},
+        "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3, "thermal_expansion": 1.2e-5},
+        "loading": {"temperature": {"field": [0.0, 0.0, 100.0]}}})"));
+    }
+  } // namespace
+
   // A resonant vertex (resonant_vertex.h): the ring [0.8, 1.2] x [0, 0.4] m on the symmetry
   // plane z = 0 under T = 100 z K (verification/problems/heated_ring_axial_gradient.json). Its
   // two vertices on the plane have a rho log rho stress. The FEM reference (fem_solve, Q2 on
@@ -400,13 +416,7 @@ namespace rfm
   // defaults; 6.4e-8) and -25.110 with displacement columns of degree 4 too (8.4e-9).
   TEST(OutlineModel, ResonantVertexColumnsRestoreConvergence)
   {
-    axisym::Problem problem = axisym::parse_problem(nlohmann::json::parse(R"({
-      "geometry": {"outline": [{"start": [0.8, 0.0]}, {"line_to": [1.2, 0.0], "part": "mid"},
-        {"line_to": [1.2, 0.4], "part": "outer"}, {"line_to": [0.8, 0.4], "part": "top"},
-        {"line_to": [0.8, 0.0], "part": "bore"}]},
-      "boundary": {"mid": {"symmetry": true}},
-      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3, "thermal_expansion": 1.2e-5},
-      "loading": {"temperature": {"field": [0.0, 0.0, 100.0]}}})"));
+    axisym::Problem problem = heated_ring_axial_gradient();
     const double fem_sample = -25.1127e6;
     const Eigen::VectorXd r = Eigen::VectorXd::Constant(1, 0.8), z = Eigen::VectorXd::Zero(1);
     DiscretizationOptions o = problem.rfm;
@@ -591,13 +601,7 @@ namespace rfm
   // resonant vertices, levels 2-4 extrapolated; report 9.6).
   TEST(OutlineModel, RitzBoundTakesTheInitialStrain)
   {
-    const axisym::Problem problem = axisym::parse_problem(nlohmann::json::parse(R"({
-      "geometry": {"outline": [{"start": [0.8, 0.0]}, {"line_to": [1.2, 0.0], "part": "mid"},
-        {"line_to": [1.2, 0.4], "part": "outer"}, {"line_to": [0.8, 0.4], "part": "top"},
-        {"line_to": [0.8, 0.0], "part": "bore"}]},
-      "boundary": {"mid": {"symmetry": true}},
-      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3, "thermal_expansion": 1.2e-5},
-      "loading": {"temperature": {"field": [0.0, 0.0, 100.0]}}})"));
+    const axisym::Problem problem = heated_ring_axial_gradient();
     DiscretizationOptions o = problem.rfm;
     o.degree = 8;
     const OutlineModel m(problem, o);
