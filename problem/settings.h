@@ -101,7 +101,7 @@ namespace axisym
     /// rounded punch's +2.1e-4 -> +1.7e-5 from the FEM's, at no more time.
     int edge_mode_degree = 4;
     /// Vertex enrichment (rfm/spaces/vertex_enrichment.h): at every vertex between two
-    /// straight parts where the field is singular (an exponent with Re lambda < 1), the
+    /// straight parts, or traction parts of which one or both are arcs, where the field is singular (an exponent with Re lambda < 1), the
     /// wedge's modes with Re lambda < vertex_max_exponent (0: off), each times the monomials
     /// of the scaled offsets up to vertex_mode_degree, cut off at vertex_cutoff times the
     /// room around the vertex (degree 4 at least where the modes cover the section:

@@ -1362,7 +1362,8 @@ def corners_section(corners, out_dir):
     md = ["## 9. Sections with a singular vertex (`corners`)", "",
           "Where the boundary turns inward or its condition changes, the elastic field has terms "
           "rho^lambda F(theta) with Re lambda < 1 (`problem/wedge_modes.h`). At every such vertex between "
-          "two straight parts the RFM adds the wedge's modes and smooth local columns that meet both "
+          "two straight parts, or parts of which an arc carries a traction (there the modes' stresses are "
+          "taken at a mapped angle and turned with the arc's normal, `rfm/spaces/wedge_frame.h`), the RFM adds the wedge's modes and smooth local columns that meet both "
           "faces' conditions (`rfm/spaces/vertex_enrichment.h`; `rfm.vertex_*`). The local columns live "
           "in a disc about the vertex, cut off smoothly at its rim. The modes do too, except at a "
           "re-entrant vertex about which the section is star-shaped, in a problem without a die "
@@ -1545,14 +1546,16 @@ def hub_temperature_rows(corners, out_dir):
               + ("holds at both." if all(held) else
                  "does not hold at " + " or ".join(w for w, h in zip(where, held) if not h) + ".")
               + " The first sample's vertex is a resonant vertex (9.6): the temperature gradient crosses the "
-              "symmetry plane, and the stress has a rho log rho term there, which the log stress columns carry. At "
-              "p = 20 (outside the report's run, for time) the two samples are +0.16 % and +0.16 % from the FEM's "
-              "L = 2 on the radical grading, the indicator 6.4e-5 (session 49, with the even coordinate of the "
-              "arcs' boundary columns at the symmetry plane; before it -0.009 % and +0.155 % from the earlier "
-              "grading's L = 4, whose samples agree with the radical grading's to 5e-6, and -0.61 % and +0.18 % "
-              "without the log columns; the p = 16 vertex sample moved from -0.91 % to -0.63 %): the "
-              "issue's 0.2 % holds there at the fixed degree, not yet at the default tolerance (the 186-degree vertex "
-              "on the outer arc has no modes).")
+              "symmetry plane, and the stress has a rho log rho term there, which the log stress columns carry. "
+              "The 186-degree vertex between the outer arc and the taper (lambda = 0.9375) has its modes on the "
+              "arc since session 51 (the mapped stresses of `rfm/spaces/wedge_frame.h`, a disc of R / 8 = 0.15 m; "
+              "the table's 'without' drops every vertex's columns): it was what held the energy and the indicator "
+              "back (at p = 16 Phi_R 1.2e-5 from the limit and the indicator 1.0e-4 before). At p = 20 (outside "
+              "the report's run, for time) the two samples are -0.24 % and +0.10 % from the FEM's L = 2, "
+              "Phi_R 1.9e-7 from the limit and the indicator 1.2e-6 (before: +0.16 % and +0.16 %, 6.4e-5): the "
+              "vertex sample on the resonant vertex still swings with p (+0.93 % at p = 14), and rfm_solve "
+              "at the defaults stops at p = 8 (exit 3), where the indicator 5.5e-4 and its rate predict p = 38 "
+              "for the tolerance 1e-8.")
     md.append("")
     return md
 

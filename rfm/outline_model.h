@@ -203,7 +203,8 @@ namespace rfm
     std::size_t n_zone_edges() const { return enrichments_.size(); }
     Eigen::Index n_edge_columns() const;
     /// Vertex enrichment (vertex_enrichment.h; issue 24 item 3): at every vertex of the
-    /// outline off the axis between two straight parts without a die where the field is
+    /// outline off the axis between two straight parts, or parts of which the arcs carry a
+    /// traction (VertexEnrichment::set_curved_faces), without a die where the field is
     /// singular (singular_vertices: Re lambda < 1), the wedge's modes with Re lambda <
     /// rfm.vertex_max_exponent times the monomials up to rfm.vertex_mode_degree, and the
     /// smooth local columns of degree p / 2 within [rfm.vertex_local_displacement_degree,

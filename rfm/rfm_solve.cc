@@ -485,9 +485,16 @@ namespace
                   enrichment = {{"columns", e.n_columns()},
                                 {"modes", e.modes().size()},
                                 {"cutoff_radius", e.cutoff_radius()},
-                                {"support", e.section_support() ? "section" : "local"}};
-                  // The generalized stress intensities (vertex_intensity.h) over the support.
-                  if (model->ok())
+                                {"support", e.section_support() ? "section" : "local"},
+                                {"curved_faces", e.curved()}};
+                  // The generalized stress intensities (vertex_intensity.h) over the support;
+                  // not where a face is an arc (the dual modes meet the faces' conditions on
+                  // lines only).
+                  if (e.curved())
+                    enrichment["intensities"] = nullptr,
+                    enrichment["intensity_note"] = "not computed: a face is an arc (the interaction integral "
+                                                   "needs straight faces)";
+                  else if (model->ok())
                     {
                       const std::vector<rfm::VertexIntensity> k = rfm::vertex_intensities(
                         [&](const Eigen::Ref<const Eigen::VectorXd> &r, const Eigen::Ref<const Eigen::VectorXd> &z) {
@@ -519,10 +526,10 @@ namespace
           }
         result["diagnostics"]["singular_vertices"] = list;
         // A vertex with its columns converges like the rest (the indicator sees it); one
-        // without (on an arc, on a die's part, or switched off) does not: say so.
+        // without (on a clamped arc, on a die's part, or switched off) does not: say so.
         if (bare)
           vertex_warning = fmt::format(
-            "the stress is singular at {} {} of the section without the vertex's columns (on an "
+            "the stress is singular at {} {} of the section without the vertex's columns (on a clamped "
             "arc or a die's part, or rfm.vertex_max_exponent = 0), the first at (r, z) = ({:.6g}, "
             "{:.6g}) m between parts {} and {} (interior angle {:.1f} degrees, lambda = {:.4g}{}): "
             "stresses near it converge slowly and values there are not limits "

@@ -91,9 +91,15 @@ namespace
     frame_options.degree = 2;
     frame_options.tolerance.reset();
     const rfm::OutlineModel frame_model(problem, frame_options);
-    if (frame_model.vertex_enrichments().size() != 1)
-      throw verification::NumericalFailure(file + ": expected one enriched vertex");
-    const rfm::VertexEnrichment frame = frame_model.vertex_enrichments().front();
+    // The vertex with straight faces (one a case; a vertex on an arc may have columns too, but
+    // the interaction integral needs straight faces).
+    std::vector<rfm::VertexEnrichment> straight;
+    for (const rfm::VertexEnrichment &e : frame_model.vertex_enrichments())
+      if (!e.curved())
+        straight.push_back(e);
+    if (straight.size() != 1)
+      throw verification::NumericalFailure(file + ": expected one enriched vertex with straight faces");
+    const rfm::VertexEnrichment frame = straight.front();
     const double rho_1 = frame.cutoff_radius();
     c["intensity_sector_radius"] = rho_1;
     // Where the vertex's modes live (rfm.vertex_support; vertex_enrichment.h).

@@ -87,9 +87,9 @@ namespace rfm
       {
         if (face[f] == WedgeFace::clamped)
           continue;
-        families_.push_back({dyad(t[f]), factor(1 - f), false});
+        families_.push_back({dyad(t[f]), factor(1 - f), false, f});
         if (face[f] == WedgeFace::symmetry)
-          families_.push_back({dyad(normal_[f]), factor(1 - f), false});
+          families_.push_back({dyad(normal_[f]), factor(1 - f), false, -1});
       }
     families_.push_back({{0, 0, 0}, 0, true});
     // Displacements: e_r and e_z times l_f of each face where u is constrained (clamped or
@@ -152,28 +152,55 @@ namespace rfm
           continue;
         const double phi = std::atan2(dz, dr);
         const double theta = from_bisector(phi, beta_);
+        // Curved faces (set_curved_faces): the stresses at the mapped angle theta_m (from
+        // the bisector), seen in the direction phi_m, then turned by `turn`.
+        double theta_m = theta, phi_m = phi, turn = 0.0;
+        if (frame_ && rho > 0.0)
+          {
+            const auto [mapped, a] = frame_->mapped_angle(r[k], z[k], 1e-14 * cutoff_radius_);
+            theta_m = mapped - wedge_.half_angle();
+            phi_m = beta_ + theta_m;
+            turn = a;
+          }
+        const double c_turn = std::cos(turn), s_turn = std::sin(turn);
         std::size_t f = 0;
         for (const WedgeMode &mode : modes_)
           {
             const bool singular = mode.lambda.real() < 1.0;
-            WedgeFieldValues v{};
+            WedgeFieldValues v{}, v_mapped{};
             if (rho > 0.0)
-              v = wedge_.evaluate(mode, rho, theta);
+              {
+                v = wedge_.evaluate(mode, rho, theta);
+                v_mapped = frame_ ? wedge_.evaluate(mode, rho, theta_m) : v;
+              }
             for (int part = 0; part < (mode.lambda.imag() == 0.0 ? 1 : 2); ++part, ++f)
               {
                 Field &fl = fields[f];
                 // Polar to meridian components (phi the direction of the point from v).
                 const MeridianWedgeField m = meridian_wedge_field(v, 1.0, part, phi, mu, nu);
                 const bool no_value = rho == 0.0 && singular;
+                // Plane-strain Hooke's law (the displacement of mu = 1 scaled by 1 / mu): the
+                // strains of the straight wedge's displacement.
+                double s[4];
                 for (int comp = 0; comp < 4; ++comp)
-                  fl.s[comp] = no_value ? 0.0 : m.s[comp];
-                // Plane-strain Hooke's law (the displacement of mu = 1 scaled by 1 / mu).
-                const double tr = nu * (fl.s[rr] + fl.s[zz]);
-                fl.e[0] = (fl.s[rr] - tr) / (2.0 * mu);
-                fl.e[1] = (fl.s[zz] - tr) / (2.0 * mu);
-                fl.e[2] = fl.s[rz] / mu;
+                  s[comp] = no_value ? 0.0 : m.s[comp];
+                const double tr = nu * (s[rr] + s[zz]);
+                fl.e[0] = (s[rr] - tr) / (2.0 * mu);
+                fl.e[1] = (s[zz] - tr) / (2.0 * mu);
+                fl.e[2] = s[rz] / mu;
                 fl.u[0] = m.u[0];
                 fl.u[1] = m.u[1];
+                if (frame_ && !no_value)
+                  {
+                    const MeridianWedgeField w = meridian_wedge_field(v_mapped, 1.0, part, phi_m, mu, nu);
+                    const double c = c_turn, sn = s_turn;
+                    s[rr] = c * c * w.s[rr] - 2.0 * c * sn * w.s[rz] + sn * sn * w.s[zz];
+                    s[zz] = sn * sn * w.s[rr] + 2.0 * c * sn * w.s[rz] + c * c * w.s[zz];
+                    s[rz] = c * sn * (w.s[rr] - w.s[zz]) + (c * c - sn * sn) * w.s[rz];
+                    s[tt] = w.s[tt]; // nu times the trace, which the turn keeps
+                  }
+                for (int comp = 0; comp < 4; ++comp)
+                  fl.s[comp] = s[comp];
               }
           }
         // grad chi = chi'(rho) (dr, dz) / rho (chi'(0) = 0).
@@ -225,8 +252,27 @@ namespace rfm
         // The local stress columns: chi q (l_0 / rho_0)^a (l_1 / rho_0)^b T.
         const double xi = dr / cutoff_radius_, eta = dz / cutoff_radius_;
         Eigen::Index col = n_mode_columns();
-        const double l[2] = {(dr * normal_[0][0] + dz * normal_[0][1]) / cutoff_radius_,
-                             (dr * normal_[1][0] + dz * normal_[1][1]) / cutoff_radius_};
+        // The faces' functions over rho_0 with their gradients: the line's, or on an arc the
+        // circle's (R^2 - |x - c|^2) / (2 R); and the tangent dyads of arc faces at x.
+        double l[2], l_r[2], l_z[2];
+        std::array<double, 3> arc_dyad[2];
+        for (int face = 0; face < 2; ++face)
+          if (frame_ && frame_->face_is_arc(face))
+            {
+              const axisym::Point c = frame_->face_center(face);
+              const double radius = frame_->face_radius(face), x = r[k] - c.r, y = z[k] - c.z;
+              l[face] = (radius * radius - x * x - y * y) / (2.0 * radius * cutoff_radius_);
+              l_r[face] = -x / (radius * cutoff_radius_);
+              l_z[face] = -y / (radius * cutoff_radius_);
+              const double d2 = x * x + y * y;
+              arc_dyad[face] = {y * y / d2, x * x / d2, -x * y / d2};
+            }
+          else
+            {
+              l[face] = (dr * normal_[face][0] + dz * normal_[face][1]) / cutoff_radius_;
+              l_r[face] = normal_[face][0] / cutoff_radius_;
+              l_z[face] = normal_[face][1] / cutoff_radius_;
+            }
         for (int deg = 0; deg <= local_degree_; ++deg)
           for (int b = 0; b <= deg; ++b)
             {
@@ -255,9 +301,8 @@ namespace rfm
                   for (int f = 0; f < 2; ++f)
                     if (fam.factors & (1 << f))
                       {
-                        const double nr = normal_[f][0] / cutoff_radius_, nz = normal_[f][1] / cutoff_radius_;
-                        lf_r = lf_r * l[f] + lf * nr;
-                        lf_z = lf_z * l[f] + lf * nz;
+                        lf_r = lf_r * l[f] + lf * l_r[f];
+                        lf_z = lf_z * l[f] + lf * l_z[f];
                         lf *= l[f];
                       }
                   const double g = chi.value * mono * lf;
@@ -282,9 +327,12 @@ namespace rfm
                     out.stress[tt](k, col) = w;
                   else
                     {
-                      out.stress[rr](k, col) = w * fam.tensor[0];
-                      out.stress[zz](k, col) = w * fam.tensor[1];
-                      out.stress[rz](k, col) = w * fam.tensor[2];
+                      const std::array<double, 3> &T =
+                        fam.tangent_of >= 0 && frame_ && frame_->face_is_arc(fam.tangent_of) ? arc_dyad[fam.tangent_of]
+                                                                                           : fam.tensor;
+                      out.stress[rr](k, col) = w * T[0];
+                      out.stress[zz](k, col) = w * T[1];
+                      out.stress[rz](k, col) = w * T[2];
                     }
                   ++col;
                 }
@@ -322,11 +370,29 @@ namespace rfm
     return panels;
   }
 
+  void VertexEnrichment::set_curved_faces(const WedgeFrame &frame)
+  {
+    if (section_support())
+      throw std::logic_error("VertexEnrichment::set_curved_faces: a vertex with a curved face keeps its disc");
+    const double tol = 1e-9 * cutoff_radius_;
+    if (!(std::hypot(frame.vertex().r - at_.r, frame.vertex().z - at_.z) <= tol &&
+          std::abs(frame.angle() - 2.0 * wedge_.half_angle()) <= 1e-9))
+      throw std::invalid_argument("VertexEnrichment::set_curved_faces: the frame is not this vertex's");
+    const WedgeFace face[2] = {wedge_.face_minus(), wedge_.face_plus()};
+    for (int f = 0; f < 2; ++f)
+      if (frame.face_is_arc(f) && face[f] != WedgeFace::free)
+        throw std::invalid_argument("VertexEnrichment::set_curved_faces: a curved face must be a traction face");
+    if (frame.curved())
+      frame_ = frame;
+  }
+
   Quadrature2D VertexEnrichment::near_rule(const int n_radial, const int n_angular,
                                            const int n_layers) const
   {
     if (n_radial < 1 || n_angular < 1 || n_layers < 0)
       throw std::invalid_argument("VertexEnrichment::near_rule: point counts must be positive");
+    if (frame_)
+      return frame_->near_rule(cutoff_radius_, n_radial, n_angular, n_layers);
     const std::vector<double> panels = angular_panels({}, 0.5 * pi, 1e-12);
     // Radial layers [0.2^(i+1), 0.2^i] rho_0, the innermost [0, 0.2^L rho_0] with rho = rho_in s^2.
     const GaussRule1D ga = gauss_legendre(n_angular);
@@ -357,6 +423,8 @@ namespace rfm
     if (!factors || !reach || !(length_scale > 0.0))
       throw std::invalid_argument("VertexEnrichment::set_section_support: factors, reach and a "
                                   "positive length scale are needed");
+    if (frame_)
+      throw std::logic_error("VertexEnrichment::set_section_support: a vertex with a curved face keeps its disc");
     factors_ = std::move(factors);
     reach_ = std::move(reach);
     ray_breaks_ = std::move(ray_breaks);

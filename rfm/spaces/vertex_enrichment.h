@@ -2,7 +2,8 @@
 // (wedge_modes.h) times a cutoff, as extra columns of both spaces, in the column form of the
 // contact-edge modes (edge_modes.h: EdgeColumns).
 //
-// At a vertex v where two straight parts meet at the interior angle 2 alpha, polar
+// At a vertex v where two parts meet at the interior angle 2 alpha (lines; an arc face that
+// carries a traction takes the mapped stresses of set_curved_faces below), polar
 // coordinates (rho, theta) about v with theta = 0 on the bisector and theta = -alpha on the
 // face of the part that leaves v (the outline runs counter-clockwise, the body on its left),
 // theta = +alpha on the face of the part that arrives. Each mode rho^lambda F(theta) gives,
@@ -70,6 +71,7 @@
 #include "rfm/material.h"
 #include "rfm/quadrature/quadrature.h"
 #include "rfm/spaces/edge_modes.h"
+#include "rfm/spaces/wedge_frame.h"
 #include "problem/wedge_modes.h"
 
 #include <Eigen/Core>
@@ -77,6 +79,7 @@
 #include <cmath>
 #include <complex>
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace rfm
@@ -202,6 +205,20 @@ namespace rfm
                              std::vector<double> ray_breaks, double length_scale);
     bool section_support() const { return static_cast<bool>(factors_); }
 
+    /// Faces that are arcs (a traction-free, pressure or traction part on either side; not
+    /// with the section support). The straight wedge's stresses meet an arc's condition only
+    /// at the vertex, so the mode columns' stresses are taken at the mapped angle of
+    /// wedge_frame.h and turned by its rotation a, S(x) = Q(a) S_wedge(rho, theta') Q(a)^T,
+    /// which meets a free arc's condition exactly (S n = Q(a) S_wedge n_f = 0); their
+    /// displacements stay the straight wedge's (a free face constrains none) with the exact
+    /// strains of that displacement. The local stress families take the arc's circle
+    /// function (R^2 - |x - c|^2) / (2 R) in place of the line function and the tangent
+    /// dyad of the circle through x about c in place of t t. near_rule() is then the frame's
+    /// rule, which follows the curved faces. Precondition: `frame` is that of this vertex
+    /// and no curved face is clamped or a symmetry line.
+    void set_curved_faces(const WedgeFrame &frame);
+    bool curved() const { return frame_.has_value(); }
+
     /// A circle of the section (another rule's disc) across which the integrands that the
     /// section rule takes have a kink (the partition of unity's shares).
     struct Circle
@@ -245,6 +262,7 @@ namespace rfm
       std::array<double, 3> tensor{{0, 0, 0}};
       int factors = 0;
       bool hoop = false;
+      int tangent_of = -1; ///< the face whose tangent dyad this is (per point on an arc)
     };
     std::vector<Family> families_;
     /// A smooth displacement family: a constant vector times the line functions of `factors`.
@@ -255,5 +273,6 @@ namespace rfm
     };
     std::vector<VectorFamily> vector_families_;
     std::array<double, 2> normal_[2]; ///< unit normals of the leaving, arriving face
+    std::optional<WedgeFrame> frame_;  ///< set: a face is an arc
   };
 } // namespace rfm

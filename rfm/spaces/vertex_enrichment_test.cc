@@ -441,3 +441,138 @@ namespace rfm
       }
   }
 } // namespace rfm
+
+namespace rfm
+{
+  namespace
+  {
+    // Issue 24's hub: the outer arc (centre 0, R = 1.2 m) arrives at the 186-degree vertex v,
+    // the taper leaves it as a line; both traction free.
+    struct ArcCase
+    {
+      axisym::OutlineEdge arc, taper;
+      ArcCase()
+      {
+        arc.kind = axisym::OutlineEdge::Kind::arc;
+        arc.start = {1.2, 0.0};
+        arc.end = {1.0875693444439798, 0.5071419140888394};
+        arc.center = {0.0, 0.0};
+        taper.start = arc.end;
+        taper.end = {0.85, 1.2};
+      }
+      double angle() const { return WedgeFrame(arc, taper).angle(); }
+    };
+
+    VertexEnrichment make_curved(const ArcCase &c, const double rho_0, const bool curved)
+    {
+      const Wedge w(c.angle(), WedgeFace::free, WedgeFace::free, 0.3);
+      const axisym::Point t = c.taper.tangent_at(0.0);
+      VertexEnrichment v(c.arc.end, {t.r, t.z}, w, w.modes(2.5), rho_0, steel(), 1, 3, 2);
+      if (curved)
+        v.set_curved_faces(WedgeFrame(c.arc, c.taper));
+      return v;
+    }
+  } // namespace
+
+  // With an arc for a face (set_curved_faces) every column's traction vanishes on the arc, and
+  // still on the line; the straight wedge's columns miss the arc's condition by about rho / R
+  // (the test fails without the mapping); the strains stay the displacements' derivatives.
+  TEST(VertexEnrichment, CurvedFacesKeepTheArcTractionFree)
+  {
+    const ArcCase c;
+    EXPECT_NEAR(c.angle() * 180.0 / pi, 186.1, 0.1);
+    const double rho_0 = 0.15;
+    const VertexEnrichment v = make_curved(c, rho_0, true), straight = make_curved(c, rho_0, false);
+    ASSERT_TRUE(v.curved());
+    ASSERT_FALSE(straight.curved());
+    ASSERT_GT(v.n_mode_columns(), 0);
+    ASSERT_GT(v.n_local_columns(), 0);
+    // Points on the arc and on the taper at 0.01 to 0.14 from v.
+    const int n = 8;
+    Eigen::VectorXd r_arc(n), z_arc(n), r_line(n), z_line(n);
+    const double phi_v = std::atan2(c.arc.end.z, c.arc.end.r);
+    const axisym::Point t = c.taper.tangent_at(0.0);
+    for (int k = 0; k < n; ++k)
+      {
+        const double s = 0.01 + 0.13 * k / (n - 1);
+        r_arc[k] = 1.2 * std::cos(phi_v - s / 1.2), z_arc[k] = 1.2 * std::sin(phi_v - s / 1.2);
+        r_line[k] = c.arc.end.r + s * t.r, z_line[k] = c.arc.end.z + s * t.z;
+      }
+    // Traction sigma . n with n the unit normal at the point.
+    auto traction = [](const EdgeColumns &e, const Eigen::Index k, const Eigen::Index j, const double nr,
+                       const double nz) {
+      return std::hypot(e.stress[0](k, j) * nr + e.stress[3](k, j) * nz,
+                        e.stress[3](k, j) * nr + e.stress[1](k, j) * nz);
+    };
+    const EdgeColumns a = v.evaluate(r_arc, z_arc), l = v.evaluate(r_line, z_line);
+    const EdgeColumns a_straight = straight.evaluate(r_arc, z_arc);
+    const Eigen::VectorXd r_in = (Eigen::VectorXd(2) << 1.0, 1.05).finished();
+    const Eigen::VectorXd z_in = (Eigen::VectorXd(2) << 0.5, 0.45).finished();
+    const EdgeColumns inside = v.evaluate(r_in, z_in);
+    double worst_straight = 0.0;
+    for (Eigen::Index j = 0; j < v.n_columns(); ++j)
+      {
+        double scale = 0.0;
+        for (int comp = 0; comp < 4; ++comp)
+          scale = std::max({scale, a.stress[comp].col(j).cwiseAbs().maxCoeff(),
+                            inside.stress[comp].col(j).cwiseAbs().maxCoeff()});
+        if (scale == 0.0)
+          continue; // a displacement-only column
+        for (Eigen::Index k = 0; k < n; ++k)
+          {
+            const double nr = r_arc[k] / 1.2, nz = z_arc[k] / 1.2;
+            EXPECT_LE(traction(a, k, j, nr, nz), 1e-10 * scale) << "column " << j << " arc point " << k;
+            EXPECT_LE(traction(l, k, j, -t.z, t.r), 1e-10 * scale) << "column " << j << " line point " << k;
+            if (j < v.n_mode_columns())
+              worst_straight = std::max(worst_straight, traction(a_straight, k, j, nr, nz) / scale);
+          }
+      }
+    // Not vacuous: the unmapped modes are off the arc's condition by a few per cent of rho / R.
+    EXPECT_GT(worst_straight, 1e-4);
+    // The displacements are the straight wedge's, their strains the derivatives.
+    const Eigen::VectorXd r = (Eigen::VectorXd(4) << 1.0, 1.05, 1.08, 1.1).finished();
+    const Eigen::VectorXd z = (Eigen::VectorXd(4) << 0.5, 0.45, 0.55, 0.48).finished();
+    expect_strains_are_derivatives(v, r, z);
+    const EdgeColumns s = straight.evaluate(r, z), m = v.evaluate(r, z);
+    EXPECT_LE((s.u[0] - m.u[0]).cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_LE((s.u[1] - m.u[1]).cwiseAbs().maxCoeff(), 0.0);
+  }
+
+  // The curved vertex's near rule follows the arc: it integrates the area of the body within
+  // rho_0 of v (the disc's part inside the circle of the arc and left of the taper's line).
+  TEST(VertexEnrichment, CurvedNearRuleFollowsTheArc)
+  {
+    const ArcCase c;
+    const double rho_0 = 0.15;
+    const VertexEnrichment v = make_curved(c, rho_0, true);
+    const Quadrature2D q = v.near_rule(12, 12);
+    ASSERT_GT(q.weights.size(), 0);
+    // The body within rho_0 of v: the 186-degree side, inside the arc's circle or on the
+    // body's side (left) of the taper's line (the taper runs outside the circle's
+    // continuation, and the arc bends away from the taper's continuation backward).
+    const axisym::Point t = c.taper.tangent_at(0.0);
+    auto in_body = [&](const double r, const double z) {
+      const double side = (r - c.arc.end.r) * (-t.z) + (z - c.arc.end.z) * t.r;
+      return std::hypot(r, z) <= 1.2 * (1 + 1e-12) || side >= -1e-12;
+    };
+    for (Eigen::Index k = 0; k < q.weights.size(); ++k)
+      {
+        EXPECT_TRUE(in_body(q.r[k], q.z[k])) << k;
+        EXPECT_LE(std::hypot(q.r[k] - c.arc.end.r, q.z[k] - c.arc.end.z), rho_0 * (1 + 1e-12));
+      }
+    // The area: at the distance rho from v the arc's circle (radius R, through v) is seen at
+    // the chord angle asin(rho / 2 R) inside the tangent's direction, so the body spans
+    // beta - asin(rho / 2 R) there; area = int_0^rho_0 rho (beta - asin(rho / 2 R)) d rho
+    // (composite Simpson, a smooth integrand).
+    double area = 0.0;
+    const int n_simpson = 2000;
+    for (int i = 0; i <= n_simpson; ++i)
+      {
+        const double rho = rho_0 * i / n_simpson;
+        const double w = (i == 0 || i == n_simpson) ? 1.0 : (i % 2 ? 4.0 : 2.0);
+        area += w * rho * (c.angle() - std::asin(rho / 2.4));
+      }
+    area *= rho_0 / n_simpson / 3.0;
+    EXPECT_NEAR(q.weights.sum(), area, 1e-12 * area);
+  }
+} // namespace rfm

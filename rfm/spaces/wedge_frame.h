@@ -37,6 +37,12 @@ namespace rfm
     /// The interior angle beta [rad], in (0, 2 pi].
     double angle() const { return beta_; }
 
+    /// Whether face f (0 leaving, 1 arriving) is an arc, and its centre and radius [m].
+    bool face_is_arc(const int f) const { return faces_[f].sweep_sign != 0; }
+    const axisym::Point &face_center(const int f) const { return faces_[f].center; }
+    double face_radius(const int f) const { return faces_[f].radius; }
+    bool curved() const { return face_is_arc(0) || face_is_arc(1); }
+
     /// The polar angle of x about v from the leaving face's direction, in
     /// [beta / 2 - pi, beta / 2 + pi).
     double polar_angle(double r, double z) const;
