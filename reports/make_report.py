@@ -1548,14 +1548,14 @@ def hub_temperature_rows(corners, out_dir):
               + " The first sample's vertex is a resonant vertex (9.6): the temperature gradient crosses the "
               "symmetry plane, and the stress has a rho log rho term there, which the log stress columns carry. "
               "The 186-degree vertex between the outer arc and the taper (lambda = 0.9375) has its modes on the "
-              "arc since session 51 (the mapped stresses of `rfm/spaces/wedge_frame.h`, a disc of R / 8 = 0.15 m; "
+              "arc since session 51 (the mapped stresses of `rfm/spaces/wedge_frame.h`, a disc of 0.37 m; "
               "the table's 'without' drops every vertex's columns): it was what held the energy and the indicator "
               "back (at p = 16 Phi_R 1.2e-5 from the limit and the indicator 1.0e-4 before). At p = 20 (outside "
-              "the report's run, for time) the two samples are -0.24 % and +0.10 % from the FEM's L = 2, "
-              "Phi_R 1.9e-7 from the limit and the indicator 1.2e-6 (before: +0.16 % and +0.16 %, 6.4e-5): the "
-              "vertex sample on the resonant vertex still swings with p (+0.93 % at p = 14), and rfm_solve "
-              "at the defaults stops at p = 8 (exit 3), where the indicator 5.5e-4 and its rate predict p = 38 "
-              "for the tolerance 1e-8.")
+              "the report's run, for time) the two samples are -0.40 % and -0.10 % from the FEM's L = 2, "
+              "Phi_R 1.0e-8 from the limit and the indicator 5.3e-7 (before: +0.16 % and +0.16 %, 6.4e-5): the "
+              "energy converges now, but the sample at the resonant vertex (0.8, 0) does not settle within the "
+              "issue's 0.2 %, and rfm_solve at the defaults stops at p = 8 (exit 3), where the indicator and "
+              "its rate so far predict a degree above rfm.max_degree for the tolerance 1e-8.")
     md.append("")
     return md
 

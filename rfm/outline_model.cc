@@ -1362,17 +1362,38 @@ namespace rfm
         for (const EdgeEnrichment &en : enrichments_)
           room = std::min(room, std::hypot(en.frame().r - v.at.r, en.frame().z - v.at.z) -
                                   en.cutoff_radius());
-        // An eighth of an arc face's radius: the mapped stresses turn by about rho / R from
-        // the straight wedge's, and a larger disc takes room from a traction jump's field
-        // next to it. On issue 24's hub (the 186-degree vertex between the outer arc, R =
-        // 1.2 m, and the taper), indicator at p = 16 with rho_0 = 0.05, 0.1, 0.15, 0.2, 0.3:
-        // under the inner arc's pressure 4.9e-5, 4.1e-5, 4.0e-5, 6.3e-5, 1.1e-4 (the jump's
-        // field at the bore then within 0.39, 0.39, 0.39, 0.34, 0.24 m; 8.7e-5 without the
-        // vertex's columns), under the temperature 2.9e-6 with 0.15 and 1.4e-6 with 0.3
-        // (1.0e-4 without).
-        for (const axisym::OutlineEdge *e : {arriving, leaving})
-          if (e->kind == axisym::OutlineEdge::Kind::arc)
-            room = std::min(room, 0.125 * e->radius());
+        // A vertex on an arc leaves each traction jump elsewhere the room it would have
+        // alone (its faces, halved where their other ends jump too, and the distance to every
+        // other edge; make_traction_jumps), but takes at least a quarter of the distance: the
+        // jump's field of degree 0 suffers more from a small disc than the modes. On issue 24's
+        // hub (the 186-degree vertex between the outer arc and the taper, 0.54 m from the
+        // jump at the bore, whose room alone is 0.39 m) the indicator at p = 16 under the
+        // inner arc's pressure was 4.1e-5, 4.0e-5, 6.3e-5, 1.1e-4 with the vertex's disc at
+        // 0.1, 0.15, 0.2, 0.3 m (8.7e-5 without its columns); under the temperature (no
+        // jump) 2.9e-6, 1.4e-6 and 9.9e-7 at 0.15, 0.3 and the whole room 0.37 m (1.0e-4
+        // without). No limit from the arc's curvature: a pressed arc meeting a step at 288
+        // degrees (radius 0.158 m, room 0.05 m) gave 5.2e-3, 5.7e-5 and 1.7e-5 at p = 16 with
+        // an eighth, a quarter of the radius and the whole room.
+        if (curved)
+          for (const axisym::Point x : axisym::traction_jump_vertices(body))
+            {
+              const double d = std::hypot(x.r - v.at.r, x.z - v.at.z);
+              const auto [a_x, l_x] = edges_at(edges, x, tol);
+              if (!(d > tol) || !a_x || !l_x)
+                continue;
+              auto jump_at = [&](const axisym::Point y) {
+                for (const axisym::Point w : axisym::traction_jump_vertices(body))
+                  if (std::hypot(w.r - y.r, w.z - y.z) < tol)
+                    return true;
+                return false;
+              };
+              double alone = std::min(a_x->length() * (jump_at(a_x->start) ? 0.5 : 1.0),
+                                      l_x->length() * (jump_at(l_x->end) ? 0.5 : 1.0));
+              for (const axisym::OutlineEdge &e : edges)
+                if (&e != a_x && &e != l_x)
+                  alone = std::min(alone, e.distance_to(x));
+              room = std::min(room, std::max(d - alone, 0.25 * d));
+            }
         if (!(room > tol))
           continue;
         const Wedge wedge(v.angle, wedge_face(body.conditions.at(leaving->part)),

@@ -768,9 +768,10 @@ namespace rfm
   // The 186-degree vertex of issue 24's hub between the outer arc and the taper (lambda =
   // 0.9375 free-free): its modes on the arc face (vertex_enrichment.h: set_curved_faces) keep
   // both faces traction free for the whole solution, and under the temperature T = 100 r +
-  // 100 z [K] take Phi_R at p = 12 to 1.7e-5 of the FEM's limit (fem_solve Q2 graded toward
+  // 100 z [K] take Phi_R at p = 12 to 4.5e-6 of the FEM's limit (fem_solve Q2 graded toward
   // the vertices, L = 0-2 extrapolated: 1.8238664004e+05 J/rad, report 9.5), against 4.4e-5
-  // without the arc vertex's columns (the taper-neck vertex's alone).
+  // without the arc vertex's columns (the taper-neck vertex's alone). No traction jump nearby:
+  // the disc takes the whole room, half the taper (whose other end is singular too).
   TEST(OutlineModel, ArcVertexModesKeepTheArcFreeAndConvergeOnTheHeatedHub)
   {
 #if defined(__SANITIZE_ADDRESS__)
@@ -795,7 +796,7 @@ namespace rfm
     EXPECT_FALSE(arc_vertex->section_support());
     EXPECT_NEAR(arc_vertex->modes().front().lambda.real(), 0.9375, 1e-3);
     const double rho_0 = arc_vertex->cutoff_radius();
-    EXPECT_NEAR(rho_0, 0.15, 1e-12); // an eighth of the arc's radius
+    EXPECT_NEAR(rho_0, 0.5 * std::hypot(0.85 - v.r, 1.2 - v.z), 1e-9);
     // Points on the arc and on the taper within the disc, and the traction there.
     const int n = 7;
     Eigen::VectorXd r_arc(n), z_arc(n), r_taper(n), z_taper(n);
@@ -820,7 +821,7 @@ namespace rfm
         EXPECT_NEAR(taper.sigma(k, rz) * tr + taper.sigma(k, zz) * tz, 0.0, 1e-9 * scale) << k;
       }
     const double limit = 1.8238664004e+05;
-    EXPECT_LT(std::abs(m.functionals().reissner - limit) / limit, 3e-5);
+    EXPECT_LT(std::abs(m.functionals().reissner - limit) / limit, 1e-5);
   }
 
   TEST(SolveToTolerance, StopsAtTheFirstDegreeBelowTheToleranceWithStressNear1e4)
