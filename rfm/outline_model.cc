@@ -198,6 +198,31 @@ namespace rfm
         }
       return {arriving, leaving};
     }
+
+    /// Whether x is one of `points` (within tol).
+    bool is_one_of(const std::vector<axisym::Point> &points, const axisym::Point x, const double tol)
+    {
+      for (const axisym::Point &y : points)
+        if (std::hypot(y.r - x.r, y.z - x.z) < tol)
+          return true;
+      return false;
+    }
+
+    /// The room of an enrichment at the vertex x between `arriving` and `leaving` on its own:
+    /// each face, half of it where its other end is one of `sites` (which takes the other
+    /// half), and the distance from x to every other edge.
+    double room_alone(const std::vector<axisym::OutlineEdge> &edges, const axisym::OutlineEdge &arriving,
+                      const axisym::OutlineEdge &leaving, const std::vector<axisym::Point> &sites,
+                      const double tol)
+    {
+      const axisym::Point x = leaving.start;
+      double room = std::min(arriving.length() * (is_one_of(sites, arriving.start, tol) ? 0.5 : 1.0),
+                             leaving.length() * (is_one_of(sites, leaving.end, tol) ? 0.5 : 1.0));
+      for (const axisym::OutlineEdge &e : edges)
+        if (&e != &arriving && &e != &leaving)
+          room = std::min(room, e.distance_to(x));
+      return room;
+    }
   } // namespace
 
   std::string axis_parity_obstacle(const axisym::Problem &problem, const DiscretizationOptions &options)
@@ -1313,6 +1338,10 @@ namespace rfm
     const double tol = 1e-9 * body.outline.size();
     using Kind = axisym::PartCondition::Kind;
     const std::vector<SingularVertex> vertices = singular_vertices(body, material_.poisson_ratio);
+    std::vector<axisym::Point> singular_points;
+    for (const SingularVertex &v : vertices)
+      singular_points.push_back(v.at);
+    const std::vector<axisym::Point> jump_points = axisym::traction_jump_vertices(body);
     bool has_die = false;
     for (const auto &[part, condition] : body.conditions)
       has_die |= condition.kind == Kind::die;
@@ -1348,17 +1377,7 @@ namespace rfm
         // The room: each face (half of it where its other end is a singular vertex too, which
         // takes the other half), the distance to every other edge, and clear of the contact
         // edges' supports.
-        auto singular_at = [&](const axisym::Point x) {
-          for (const SingularVertex &w : vertices)
-            if (std::hypot(w.at.r - x.r, w.at.z - x.z) < tol)
-              return true;
-          return false;
-        };
-        double room = std::min(arriving->length() * (singular_at(arriving->start) ? 0.5 : 1.0),
-                               leaving->length() * (singular_at(leaving->end) ? 0.5 : 1.0));
-        for (const axisym::OutlineEdge &e : edges)
-          if (&e != arriving && &e != leaving)
-            room = std::min(room, e.distance_to(v.at));
+        double room = room_alone(edges, *arriving, *leaving, singular_points, tol);
         for (const EdgeEnrichment &en : enrichments_)
           room = std::min(room, std::hypot(en.frame().r - v.at.r, en.frame().z - v.at.z) -
                                   en.cutoff_radius());
@@ -1375,24 +1394,13 @@ namespace rfm
         // degrees (radius 0.158 m, room 0.05 m) gave 5.2e-3, 5.7e-5 and 1.7e-5 at p = 16 with
         // an eighth, a quarter of the radius and the whole room.
         if (curved)
-          for (const axisym::Point x : axisym::traction_jump_vertices(body))
+          for (const axisym::Point x : jump_points)
             {
               const double d = std::hypot(x.r - v.at.r, x.z - v.at.z);
               const auto [a_x, l_x] = edges_at(edges, x, tol);
               if (!(d > tol) || !a_x || !l_x)
                 continue;
-              auto jump_at = [&](const axisym::Point y) {
-                for (const axisym::Point w : axisym::traction_jump_vertices(body))
-                  if (std::hypot(w.r - y.r, w.z - y.z) < tol)
-                    return true;
-                return false;
-              };
-              double alone = std::min(a_x->length() * (jump_at(a_x->start) ? 0.5 : 1.0),
-                                      l_x->length() * (jump_at(l_x->end) ? 0.5 : 1.0));
-              for (const axisym::OutlineEdge &e : edges)
-                if (&e != a_x && &e != l_x)
-                  alone = std::min(alone, e.distance_to(x));
-              room = std::min(room, std::max(d - alone, 0.25 * d));
+              room = std::min(room, std::max(d - room_alone(edges, *a_x, *l_x, jump_points, tol), 0.25 * d));
             }
         if (!(room > tol))
           continue;
@@ -1598,6 +1606,10 @@ namespace rfm
                                         material_.poisson_ratio)
                        .has_value();
       }
+    std::vector<axisym::Point> jump_points;
+    for (std::size_t i = 0; i < n_edges; ++i)
+      if (jump_at[i])
+        jump_points.push_back(edges[(i + 1) % n_edges].start);
     for (std::size_t i = 0; i < n_edges; ++i)
       {
         if (!jump_at[i])
@@ -1620,11 +1632,7 @@ namespace rfm
             // small: on a pressure band ending on a straight bore, the indicators at p = 8, 20
             // were 2.2e-3, 1.8e-5 with the whole room, 6.4e-3, 7.9e-5 with half of it and
             // 3.4e-3, 7.9e-4 with a quarter.
-            double room = std::min(arriving.length() * (jump_at[(i + n_edges - 1) % n_edges] ? 0.5 : 1.0),
-                                   leaving.length() * (jump_at[(i + 1) % n_edges] ? 0.5 : 1.0));
-            for (const axisym::OutlineEdge &e : edges)
-              if (&e != &arriving && &e != &leaving)
-                room = std::min(room, e.distance_to(v));
+            double room = room_alone(edges, arriving, leaving, jump_points, tol);
             for (const EdgeEnrichment &en : enrichments_)
               room = std::min(room, std::hypot(en.frame().r - v.r, en.frame().z - v.z) - en.cutoff_radius());
             for (const VertexEnrichment &w : vertices_)
@@ -1656,23 +1664,16 @@ namespace rfm
     const std::vector<axisym::OutlineEdge> &edges = body.outline.edges();
     const double tol = 1e-9 * body.outline.size();
     const std::vector<axisym::ResonantSite> sites = axisym::resonant_vertices(body, problem.body_loads);
-    auto resonant_at = [&](const axisym::Point x) {
-      for (const axisym::ResonantSite &s : sites)
-        if (std::hypot(s.at.r - x.r, s.at.z - x.z) < tol)
-          return true;
-      return false;
-    };
+    std::vector<axisym::Point> site_points;
+    for (const axisym::ResonantSite &s : sites)
+      site_points.push_back(s.at);
     for (const axisym::ResonantSite &site : sites)
       {
         const auto [arriving, leaving] = edges_at(edges, site.at, tol);
         if (!arriving || !leaving)
           continue;
         // The room, as a traction jump's.
-        double room = std::min(arriving->length() * (resonant_at(arriving->start) ? 0.5 : 1.0),
-                               leaving->length() * (resonant_at(leaving->end) ? 0.5 : 1.0));
-        for (const axisym::OutlineEdge &e : edges)
-          if (&e != arriving && &e != leaving)
-            room = std::min(room, e.distance_to(site.at));
+        double room = room_alone(edges, *arriving, *leaving, site_points, tol);
         for (const EdgeEnrichment &en : enrichments_)
           room = std::min(room, std::hypot(en.frame().r - site.at.r, en.frame().z - site.at.z) - en.cutoff_radius());
         for (const VertexEnrichment &w : vertices_)
