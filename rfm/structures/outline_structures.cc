@@ -70,6 +70,7 @@ namespace rfm
       const double length = std::sqrt(dot(d, d));
       const axisym::BoundingBox b = outline.bounding_box();
       r_box_max_ = b.r_max;
+      trim_length_ = outline.size();
       s_min_ = std::numeric_limits<double>::infinity();
       s_max_ = -s_min_;
       for (const axisym::Point corner :
@@ -210,7 +211,11 @@ namespace rfm
         const double len = std::sqrt(dot(m, m));
         t = {((r - cm.r) * m.r + (z - cm.z) * m.z) / len, m.r / len, m.z / len};
       }
-    return trimmed_segment(f, t);
+    // In units of the section's size: trimmed_segment adds f^4 to t^2.
+    const double l = trim_length_;
+    const RValue w = trimmed_segment({f.value / l, f.d_r / l, f.d_z / l},
+                                     {t.value / l, t.d_r / l, t.d_z / l});
+    return {w.value * l, w.d_r * l, w.d_z * l};
   }
 
   RValue EdgeOmega::edge_coordinate(const double r, const double z) const
@@ -739,10 +744,11 @@ namespace rfm
   {
     if (shear_y_edges_[e].empty())
       return 1.0;
+    const double l = body_.outline.size();
     double omega_y = 1.0;
     for (const int y : shear_y_edges_[e])
-      omega_y *= omegas_[y](r, z).value;
-    const double w = omegas_[e](r, z).value;
+      omega_y *= omegas_[y](r, z).value / l;
+    const double w = omegas_[e](r, z).value / l;
     return omega_y + w > 0.0 ? omega_y / (omega_y + w) : 0.0;
   }
 

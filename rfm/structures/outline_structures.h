@@ -10,7 +10,13 @@
 //    arcs) omega = f: smooth and polynomial. Otherwise it is trimmed to the edge,
 //    omega = sqrt(f^2 + ((sqrt(t^2 + f^4) - t) / 2)^2), with t >= 0 exactly on the edge's part
 //    of the carrier (a line: the strip ((L/2)^2 - s^2) / L; an arc under 180 degrees: the
-//    half-plane of its chord, on the arc's side).
+//    half-plane of its chord, on the arc's side). f and t enter in units of the section's
+//    size l (the diagonal of its box: omega = l w(f / l, t / l)), because f^4 and t^2 are not
+//    of one dimension: with them in metres the same problem given in millimetres had another
+//    stress space (issue 24's hub at p = 16 with its lengths times 0.1, 1, 10: indicator
+//    7.9e-5, 8.7e-5, 1.04e-4). Likewise the shear factor below takes its omegas over l. Now a
+//    problem scaled in length gives the same indicator and stresses to rounding
+//    (outline_structures_test.cc).
 //
 // 2. Edge sets. S (stress): traction-free, pressure and traction edges, sigma . n = t;
 //    Y (symmetry and axis): straight edges along r or z, u . n = 0 and sigma_rz = 0;
@@ -157,6 +163,7 @@ namespace rfm
     double sign_ = 1.0; ///< arcs: +1 when the body is inside the circle
     bool even_ = false;  ///< even in r (axis parity)
     double r_box_max_ = 1.0;
+    double trim_length_ = 1.0; ///< l of the header: the section's size
     double s_min_ = 0.0, s_max_ = 1.0; ///< the box's extent along the chord from the start
     bool angular_ = false;
   };
@@ -286,7 +293,8 @@ namespace rfm
     RValue blend(const std::vector<int> &edges, const std::vector<Prescribed> &values, double r,
                  double z) const;
     // The factor of the rz components of edge e at a point: omega_Ye / (omega_Ye + omega_e),
-    // omega_Ye the product over the Y edges where T_e or s0_e has shear (1 if none).
+    // omega_Ye the product over the Y edges where T_e or s0_e has shear (1 if none), every
+    // omega over the section's size (a product of two is not of omega_e's dimension).
     double shear_factor(int edge, double r, double z) const;
     /// The angle about an arc's centre from its even end (the start when both are), positive
     /// along the arc [rad].
