@@ -16,7 +16,7 @@
 //    stress space (issue 24's hub at p = 16 with its lengths times 0.1, 1, 10: indicator
 //    7.9e-5, 8.7e-5, 1.04e-4). Likewise the shear factor below takes its omegas over l. Now a
 //    problem scaled in length gives the same indicator and stresses to rounding
-//    (outline_structures_test.cc).
+//    (outline_model_test.cc: AProblemScaledInLengthGivesTheSameSolution).
 //
 // 2. Edge sets. S (stress): traction-free, pressure and traction edges, sigma . n = t;
 //    Y (symmetry and axis): straight edges along r or z, u . n = 0 and sigma_rz = 0;
