@@ -22,8 +22,13 @@ namespace rfm
             -dz / radius};
   }
 
-  RValue trimmed_segment(const RValue &f, const RValue &t)
+  RValue trimmed_segment(const RValue &f_length, const RValue &t_length, const double length)
   {
+    // In units of length: f = f_length / l, t = t_length / l, and w_length = l w, whose
+    // gradient is l times w's (f's and t's gradients are over l too).
+    const double l = length;
+    const RValue f{f_length.value / l, f_length.d_r / l, f_length.d_z / l};
+    const RValue t{t_length.value / l, t_length.d_r / l, t_length.d_z / l};
     // w^2 = f^2 + g^2 with g = (s - t)/2, s = sqrt(t^2 + f^4).
     const double f2 = f.value * f.value;
     const double s = std::sqrt(t.value * t.value + f2 * f2);
@@ -37,7 +42,7 @@ namespace rfm
     };
     const double dg_r = 0.5 * (ds(t.d_r, f.d_r) - t.d_r);
     const double dg_z = 0.5 * (ds(t.d_z, f.d_z) - t.d_z);
-    return {w, (f.value * f.d_r + g * dg_r) / w, (f.value * f.d_z + g * dg_z) / w};
+    return {l * w, l * (f.value * f.d_r + g * dg_r) / w, l * (f.value * f.d_z + g * dg_z) / w};
   }
 
   namespace

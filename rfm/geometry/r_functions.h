@@ -34,11 +34,13 @@ namespace rfm
   RValue disk(double r, double z, double r0, double z0, double radius);
 
   /// Trimmed segment: given f (normalized, f = 0 on the segment's line) and t (t >= 0 on
-  /// the segment, t < 0 beyond its ends), returns
-  ///   w = sqrt(f^2 + ((sqrt(t^2 + f^4) - t) / 2)^2),
+  /// the segment, t < 0 beyond its ends), both lengths, returns
+  ///   w = l w1(f / l, t / l),  w1(f, t) = sqrt(f^2 + ((sqrt(t^2 + f^4) - t) / 2)^2),
   /// which vanishes exactly on the segment, equals |f| near its inside and is not smooth
-  /// at its two end points only.
-  RValue trimmed_segment(const RValue &f, const RValue &t);
+  /// at its two end points only. f^4 and t^2 are not of one dimension, so the form needs a
+  /// length l (> 0) to be the same function of the geometry in any unit of length; the
+  /// outline structures take the section's size.
+  RValue trimmed_segment(const RValue &f, const RValue &t, double length);
 
   // 2. R0 operations (sufficient set of the R0 system), with chain-rule gradients.
   //    x AND y = x + y - sqrt(x^2 + y^2), x OR y = x + y + sqrt(x^2 + y^2), NOT x = -x.

@@ -29,7 +29,7 @@ namespace rfm
       const RValue f = half_plane(r, z, 0.2, 0.0, -1.0, 0.0);
       RValue t = strip(z, 0.0, 0.1);
       std::swap(t.d_r, t.d_z);
-      return trimmed_segment(f, t);
+      return trimmed_segment(f, t, 0.1);
     }
   } // namespace
 

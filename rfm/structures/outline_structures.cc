@@ -211,11 +211,7 @@ namespace rfm
         const double len = std::sqrt(dot(m, m));
         t = {((r - cm.r) * m.r + (z - cm.z) * m.z) / len, m.r / len, m.z / len};
       }
-    // In units of the section's size: trimmed_segment adds f^4 to t^2.
-    const double l = trim_length_;
-    const RValue w = trimmed_segment({f.value / l, f.d_r / l, f.d_z / l},
-                                     {t.value / l, t.d_r / l, t.d_z / l});
-    return {w.value * l, w.d_r * l, w.d_z * l};
+    return trimmed_segment(f, t, trim_length_);
   }
 
   RValue EdgeOmega::edge_coordinate(const double r, const double z) const
