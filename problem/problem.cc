@@ -674,7 +674,8 @@ namespace axisym
                               "local_max_box", "vertex_max_exponent", "vertex_mode_degree",
                               "vertex_cutoff", "vertex_local_degree",
                               "vertex_local_displacement_degree", "vertex_support",
-                              "resonant_displacement_degree", "axis_parity", "ritz_bound"});
+                              "resonant_displacement_degree", "axis_parity", "notch_roots",
+                              "ritz_bound"});
         if (r.has("degree") && r.has("tolerance"))
           fail("rfm", top.at("rfm"), "give rfm.degree (fixed p) or rfm.tolerance (p rises "
                                      "until the indicator is below it), not both");
@@ -739,6 +740,12 @@ namespace axisym
             if (!r.at("axis_parity").is_boolean())
               fail("rfm.axis_parity", r.at("axis_parity"), "must be true or false");
             p.rfm.axis_parity = r.at("axis_parity").get<bool>();
+          }
+        if (r.has("notch_roots"))
+          {
+            if (!r.at("notch_roots").is_boolean())
+              fail("rfm.notch_roots", r.at("notch_roots"), "must be true or false");
+            p.rfm.notch_roots = r.at("notch_roots").get<bool>();
           }
         if (r.has("ritz_bound"))
           {

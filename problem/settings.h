@@ -154,6 +154,16 @@ namespace axisym
     /// axis converge like the rest. Used where OutlineModel::axis_parity_obstacle finds
     /// nothing against it; false: never (the plain polynomials in r, as before).
     bool axis_parity = true;
+    /// Local resolution at notch roots (problem/wedge_modes.h: notch_roots; issue 24 item
+    /// 3): the vertex's smooth local columns (vertex_local_degree,
+    /// vertex_local_displacement_degree) in a disc about every root of a concave arc of radius
+    /// below a quarter of the section's size where it meets a symmetry line, without modes.
+    /// Measured at p = 16 (indicator without -> with): the sharp-lipped grooved shaft
+    /// 5.4e-3 -> 1.7e-5, the filleted groove 3.4e-6 -> 4.5e-7. Not at larger arcs: on the
+    /// thick sphere (its inner arc's radius 0.35 of the section's size) the same columns took
+    /// the indicator at p = 12 from 7e-10 to 1e-6 (their displacement columns; without them
+    /// 5e-10), and the hubs of issue 24 (0.46) gained less than they cost.
+    bool notch_roots = true;
     /// The displacement space's own upper bound of Phi beside Phi_L(u_h)
     /// (OutlineModel::ritz_lagrange; rfm_solve's functionals.lagrange_ritz and
     /// indicator_ritz): a displacement-only Ritz solve on the columns of u_h after the mixed

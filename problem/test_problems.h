@@ -95,6 +95,21 @@ namespace axisym::testing
       "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})");
   }
 
+  /// A solid shaft, radius 0.05 m, half-length 0.15 m (mid-plane symmetry), with a
+  /// quarter-circle groove of radius 0.01 m at the mid-plane meeting the surface at 90
+  /// degrees (a sharp lip), pulled by 10 MPa on its end (verification/problems/
+  /// grooved_shaft_tension.json). Parts: mid_plane, groove, surface, end, axis.
+  inline nlohmann::json grooved_shaft()
+  {
+    return nlohmann::json::parse(R"({
+      "geometry": {"outline": [{"start": [0.0, 0.0]}, {"line_to": [0.04, 0.0], "part": "mid_plane"},
+        {"arc_to": [0.05, 0.01], "center": [0.05, 0.0], "part": "groove"},
+        {"line_to": [0.05, 0.15], "part": "surface"}, {"line_to": [0.0, 0.15], "part": "end"},
+        {"line_to": [0.0, 0.0], "part": "axis"}]},
+      "boundary": {"mid_plane": {"symmetry": true}, "end": {"traction": [0.0, 1.0e7]}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})");
+  }
+
   /// The sector 0 <= polar angle from the equator <= 60 degrees of the same shell: the cone
   /// phi = 60 degrees is an inclined symmetry edge (u.n = 0 with n = (-sin 60, cos 60)),
   /// which a spherically symmetric solution satisfies; inner pressure 10 MPa, steel.

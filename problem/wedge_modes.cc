@@ -231,6 +231,34 @@ namespace axisym
     return out;
   }
 
+  std::vector<NotchRoot> notch_roots(const Body &body)
+  {
+    std::vector<NotchRoot> out;
+    using Kind = PartCondition::Kind;
+    const double size = body.outline.size();
+    auto traction = [](const Kind k) {
+      return k == Kind::traction_free || k == Kind::pressure || k == Kind::traction;
+    };
+    for_each_vertex_off_axis(body, [&](const OutlineEdge &a, const OutlineEdge &b) {
+        const Kind ka = body.conditions.at(a.part).kind, kb = body.conditions.at(b.part).kind;
+        // The arc and the symmetry line, in either order; concave: the arc runs clockwise
+        // about its centre, with the body on its left.
+        const OutlineEdge *arc = nullptr;
+        if (a.kind == OutlineEdge::Kind::arc && traction(ka) && kb == Kind::symmetry &&
+            b.kind == OutlineEdge::Kind::line)
+          arc = &a;
+        else if (b.kind == OutlineEdge::Kind::arc && traction(kb) && ka == Kind::symmetry &&
+                 a.kind == OutlineEdge::Kind::line)
+          arc = &b;
+        if (arc == nullptr || !(arc->sweep() < 0.0) || !(arc->radius() < notch_root_max_radius * size))
+          return;
+        const Point ta = a.tangent_at(1.0), tb = b.tangent_at(0.0);
+        const double turn = std::atan2(ta.r * tb.z - ta.z * tb.r, ta.r * tb.r + ta.z * tb.z);
+        out.push_back({a.end, pi - turn, arc->radius()});
+      });
+    return out;
+  }
+
   std::optional<Point> edge_traction(const Body &body, const OutlineEdge &e, const double t)
   {
     const PartCondition &c = body.conditions.at(e.part);

@@ -121,6 +121,23 @@ namespace axisym
   /// jumps at a vertex the particular field has logarithms this does not see (issue 24 item 4).
   std::vector<SingularVertex> singular_vertices(const Body &body, double poisson_ratio);
 
+  /// A notch root: a vertex off the axis where a concave arc (the body outside its circle)
+  /// that carries a traction (free, pressure, traction) meets a symmetry line, with the arc's
+  /// radius below notch_root_max_radius times the section's size (the diagonal of its box).
+  /// The field is smooth there (its mirror image is a smooth notch), but it concentrates on
+  /// the scale of the radius, below what global polynomials of moderate degree resolve
+  /// (issue 24 item 3: local resolution; rfm.notch_roots).
+  struct NotchRoot
+  {
+    Point at;
+    double angle = 0;  ///< interior angle [rad]
+    double radius = 0; ///< the arc's [m]
+  };
+  inline constexpr double notch_root_max_radius = 0.25;
+
+  /// The notch roots of the body's outline, in the outline's order.
+  std::vector<NotchRoot> notch_roots(const Body &body);
+
   /// The traction [Pa] that a traction part (traction free, pressure, traction) prescribes on
   /// edge e at its parameter t (a pressure p: -p n with n the outward normal there); nothing
   /// for any other condition.

@@ -262,6 +262,29 @@ namespace axisym
 
 namespace axisym
 {
+  // Notch roots: the grooved shaft's groove (radius 0.01 m, 0.063 of the section's size)
+  // meets the mid-plane at (0.04, 0) at 90 degrees; its lip (the groove against the free
+  // surface) is no root. The hub's inner arc (radius 0.8 m, 0.46 of its size) and the thick
+  // sphere's (0.35) are too large, and the hub's outer arc is convex.
+  TEST(WedgeModes, FindsTheNotchRoots)
+  {
+    const Problem shaft = parse_problem(testing::grooved_shaft());
+    const std::vector<NotchRoot> n = notch_roots(*shaft.body);
+    ASSERT_EQ(n.size(), 1u);
+    EXPECT_NEAR(n[0].at.r, 0.04, 1e-12);
+    EXPECT_NEAR(n[0].at.z, 0.0, 1e-12);
+    EXPECT_NEAR(n[0].angle, pi / 2, 1e-12);
+    EXPECT_NEAR(n[0].radius, 0.01, 1e-12);
+    EXPECT_TRUE(notch_roots(*parse_problem(testing::tapered_hub()).body).empty());
+    EXPECT_TRUE(notch_roots(*parse_problem(testing::thick_sphere()).body).empty());
+    // The groove turned into a bead (the same arc, convex: centre (0.05, 0) reached from
+    // (0.06, 0) counter-clockwise): no root.
+    nlohmann::json bead = testing::grooved_shaft();
+    bead["geometry"]["outline"][1]["line_to"] = {0.06, 0.0};
+    bead["geometry"]["outline"][2]["center"] = {0.05, 0.0};
+    EXPECT_TRUE(notch_roots(*parse_problem(bead).body).empty());
+  }
+
   // Resonant vertices: issue 24's hub with its pressure kept (a traction part) and a body
   // load. Its symmetry lines z = 0 and z = 1.6 meet the arcs and the neck and bore at right
   // angles: T_z crosses them (four vertices), T_r runs along them (none); gravity is left out.

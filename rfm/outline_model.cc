@@ -1337,7 +1337,15 @@ namespace rfm
     const std::vector<axisym::OutlineEdge> &edges = body.outline.edges();
     const double tol = 1e-9 * body.outline.size();
     using Kind = axisym::PartCondition::Kind;
-    const std::vector<SingularVertex> vertices = singular_vertices(body, material_.poisson_ratio);
+    std::vector<SingularVertex> vertices = singular_vertices(body, material_.poisson_ratio);
+    // The notch roots (wedge_modes.h): the local columns alone, no modes (the field is
+    // smooth there), unless a root is singular after all (then it is one of the above).
+    if (options.notch_roots && options.vertex_local_degree >= 0)
+      for (const axisym::NotchRoot &n : axisym::notch_roots(body))
+        if (std::none_of(vertices.begin(), vertices.end(), [&](const SingularVertex &v) {
+              return std::hypot(v.at.r - n.at.r, v.at.z - n.at.z) < tol;
+            }))
+          vertices.push_back({n.at, n.angle, {}, {}, {}});
     std::vector<axisym::Point> singular_points;
     for (const SingularVertex &v : vertices)
       singular_points.push_back(v.at);
@@ -1406,7 +1414,8 @@ namespace rfm
           continue;
         const Wedge wedge(v.angle, wedge_face(body.conditions.at(leaving->part)),
                           wedge_face(body.conditions.at(arriving->part)), material_.poisson_ratio);
-        std::vector<WedgeMode> modes = wedge.modes(options.vertex_max_exponent);
+        std::vector<WedgeMode> modes =
+          v.modes.empty() ? std::vector<WedgeMode>{} : wedge.modes(options.vertex_max_exponent);
         const axisym::Point t = leaving->tangent_at(0.0);
         vertices_.emplace_back(v.at, std::array<double, 2>{t.r, t.z}, wedge, std::move(modes),
                                options.vertex_cutoff * room, material_, options.vertex_mode_degree,
@@ -1418,7 +1427,7 @@ namespace rfm
         // the stepped shaft 9.8e-5 and 4.5e-5, 3.4e-5 and 1.5e-5, 3.2e-5 and 1.3e-5, 2.0e-5
         // and 1.0e-5; the stepped ring 2.5e-6 and 6.4e-7, 1.3e-6 and 4.1e-7, 1.0e-6 and
         // 3.5e-7, 9.6e-7 and 3.5e-7; assembly at p = 16 2.1, 2.9, 3.0, 3.4 s on the shaft.
-        if (options.vertex_support == DiscretizationOptions::VertexSupport::section && !curved &&
+        if (options.vertex_support == DiscretizationOptions::VertexSupport::section && !curved && !modes.empty() &&
             v.angle > 3.14159265358979323846 * (1.0 + 1e-9) && zones_.empty() && !has_die)
           {
             const int a = static_cast<int>(arriving - edges.data()), l = static_cast<int>(leaving - edges.data());

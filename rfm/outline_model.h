@@ -213,7 +213,8 @@ namespace rfm
     /// times the room (each face, half of it where its other end is singular too; the
     /// distance to every other edge; clear of the contact edges' supports), as extra columns
     /// of both spaces after the edge modes; their products are integrated on the near-vertex
-    /// rules (VertexEnrichment::near_rule).
+    /// rules (VertexEnrichment::near_rule). With rfm.notch_roots, every notch root
+    /// (axisym::notch_roots) gets the smooth local columns alone, in the same form (no modes).
     const std::vector<VertexEnrichment> &vertex_enrichments() const { return vertices_; }
     /// Traction jumps (traction_jump.h; issue 24 item 4): at every vertex of the outline off
     /// the axis between two traction parts (free, pressure, traction; no die) whose tractions

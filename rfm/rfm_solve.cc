@@ -539,6 +539,23 @@ namespace
             bare->modes.front().lambda.imag() != 0.0 ? fmt::format(" {:+.4g} i", bare->modes.front().lambda.imag())
                                                      : "");
       }
+    // Notch roots (wedge_modes.h: notch_roots): the local columns the model placed there.
+    if (model)
+      {
+        nlohmann::json list = nlohmann::json::array();
+        for (const axisym::NotchRoot &n : axisym::notch_roots(*problem.body))
+          for (const rfm::VertexEnrichment &e : model->vertex_enrichments())
+            if (e.modes().empty() &&
+                std::hypot(e.vertex().r - n.at.r, e.vertex().z - n.at.z) <= 1e-9 * problem.body->outline.size())
+              list.push_back({{"r", n.at.r},
+                              {"z", n.at.z},
+                              {"angle_degrees", n.angle * 180.0 / 3.14159265358979323846},
+                              {"arc_radius", n.radius},
+                              {"columns", e.n_columns()},
+                              {"cutoff_radius", e.cutoff_radius()}});
+        if (!list.empty())
+          result["diagnostics"]["notch_roots"] = list;
+      }
     // Traction jumps (traction_jump.h, issue 24 item 4): the loaded wedge's stress added to the
     // particular solution at each.
     if (model && !model->traction_jumps().empty())
