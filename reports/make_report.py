@@ -927,9 +927,9 @@ def bodies_section(bor, out_dir):
              f"{min(shaft_falls):.1f}-{max(shaft_falls):.1f} per two degrees (p = {shaft_ps[0]}-{shaft_ps[-1]})" +
              (f", against {1 / indicator_factor(sph['rfm'], *sphere_ps):.0f} on the sphere (section 5.1, "
               f"p = {sphere_ps[0]}-{sphere_ps[1]})" if sphere_ps else "") +
-             ". The cause is not isolated yet; the "
-             "likeliest is the R-function blending where the traction edges join (the R-conjunction "
-             "and the trimmed arcs are not smooth at the joins). " + axis_text(sh))
+             ". The notch root carries the local columns of `rfm.notch_roots` (the groove's radius is 0.17 of "
+             "the section's size; at p = 16 they took the indicator from 3.4e-6 to 4.5e-7, session 53). "
+             + axis_text(sh))
     md.append(text)
     md.append("")
     if "sharp_groove_shaft" in bor:
@@ -944,25 +944,21 @@ def bodies_section(bor, out_dir):
         sg_ls = [int(k[1:]) for k in numbered(sg["fem"], "L")]
         e_fem = sg["fem"][f"L{sg_ls[-1]}"]["reissner"]
         e_rfm = sg["rfm"][f"p{sg_ps[-1]}"]["reissner"]
-        md.append(f"The RFM converges here, but slowly: its indicator falls by a factor of "
-                  f"{min(sg_falls):.1f}-{max(sg_falls):.1f} per two degrees (p = {sg_ps[0]}-{sg_ps[-1]}), and "
+        md.append(f"With the local columns at the notch root (`rfm.notch_roots`, on by default; issue 24 item 3: "
+                  "the vertex's smooth local columns in a disc about (0.04, 0), where the groove of radius "
+                  "0.063 of the section's size meets the mid-plane, without modes) the indicator falls by a "
+                  f"factor of {min(sg_falls):.1f}-{max(sg_falls):.1f} per two degrees (p = {sg_ps[0]}-{sg_ps[-1]}), and "
                   f"Phi_R at p = {sg_ps[-1]} is {abs(e_rfm / e_fem - 1):.1e} from the FEM's at L = {sg_ls[-1]}. "
                   f"Its K_t at p = {sg_ps[-1]} is {100 * (sg['rfm'][f'p{sg_ps[-1]}']['stress_concentration'] / sg['fem'][f'L{sg_ls[-1]}']['stress_concentration'] - 1):+.1f} % "
-                  "from the FEM's. Measured outside the report (`rfm_solve --degree`, two threads, session 49): the "
-                  "indicator is 1.7e-5, 1.9e-6 and 1.9e-7 at p = 28, 32 and 36 (the last two in 159 and 293 s with "
-                  "their checks at p - 2), K_t is 2.2197, 2.1889 and 2.1892 (+1.1 %, -0.29 % and -0.27 % from the "
-                  "FEM's 2.1952 at L = 3), and sigma_zz(0, 0) reads 5.3, 11.4 and 11.9 MPa against the FEM's 11.31. "
-                  "Before the even coordinate of the groove's boundary columns at the notch plane (session 49: the "
-                  "root is no longer the end of their interval, where the Legendre polynomials cluster, so its "
-                  "resolution there is that of an interior point), K_t at p = 24 was +2.0 % and at p = 36 -0.05 % "
-                  "from the FEM's at L = 4, and sigma_zz(0, 0) 5.7, 11.4 and 12.1 MPa at p = 28, 32 and 36. The default tolerance "
-                  "1e-8 would need about p = 42, above rfm.max_degree = 24, so `rfm_solve` on that file exits 3 "
-                  "and says so. Where the error sits (the same runs, against p = 36): along the notch plane z = 0 "
-                  "and at the notch root, not at the lip. The notch plane is the section's edge z = 0, where the "
-                  "polynomials resolve best; the same groove in a bar of twice the length (the notch plane in "
-                  "the middle of the section, a roller end below) gave indicators of 0.36 to 0.19 at p = 16 to 32: "
-                  "the groove's radius is 1/30 of that section's height, below the global polynomials' resolution. A section whose "
-                  "small features are not at its box's edges needs local resolution (issue 24 item 3).")
+                  "from the FEM's. Without them (this report before session 53, the same degrees): the indicator "
+                  "5.4e-3, 7.6e-4 and 1.4e-4 at p = 16, 20 and 24, K_t -2.8 %, +4.4 % and +3.7 % from the FEM's, "
+                  "and 1.7e-5, 1.9e-6 and 1.9e-7 at p = 28, 32 and 36 (session 49, outside the report). The "
+                  "default tolerance 1e-8 is still out of reach within rfm.max_degree = 24: `rfm_solve` on that "
+                  "file exits 3 at p = 8, where its indicator 2.2e-3 falls by 0.28 per step and predicts p = 28 "
+                  "(without the columns: p = 14, predicting p = 60). The concentration at the root is on the "
+                  "groove's radius, below what global polynomials over the section resolve; the local columns "
+                  "resolve it in one disc of the root's room (the distance to the lip), a single scale: nested "
+                  "discs, as the die's local boxes, are the next step.")
         md.append("")
     else:
         md.append("The sharp-lipped variant (`grooved_shaft_tension.json`) runs in the report's full mode only.")
