@@ -156,6 +156,7 @@ namespace
       Case{"degree_fraction", with("/rfm/degree", 2.5), "rfm.degree"},
       Case{"grading_ratio", with("/rfm/grading_ratio", 1.5), "rfm.grading_ratio"},
       Case{"ritz_bound_not_a_bool", with("/rfm/ritz_bound", 1), "rfm.ritz_bound"},
+      Case{"notch_roots_not_a_bool", with("/rfm/notch_roots", "yes"), "rfm.notch_roots"},
       Case{"fem_degree", with("/fem/degree", 9), "fem.degree"},
       Case{"outline_open", sphere_with("/geometry/outline/4/arc_to", {0.1, 0.01}),
            "geometry.outline"},
@@ -256,6 +257,35 @@ namespace
     EXPECT_NEAR(r.at("samples")[0].at("sigma_rr").get<double>(), -1.9577e6, 4e4);
     EXPECT_LT(r.at("functionals").at("indicator").get<double>(), 1e-3);
     EXPECT_TRUE(fs::exists(dir / "vtu" / "rfm_solution.vtu"));
+  }
+
+  // A notch root (rfm.notch_roots) is listed in diagnostics.notch_roots with its columns; with
+  // the option off it has none and is not listed.
+  TEST(RfmSolveCli, NotchRootIsListedWithItsColumns)
+  {
+    const fs::path dir = fs::temp_directory_path() / "rfm_cli_notch";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path in = dir / "problem.json", out = dir / "result.json";
+    nlohmann::json problem = axisym::testing::grooved_shaft();
+    std::ofstream(in) << problem;
+    const Outcome o = run(in.string() + " --degree 6 --output " + out.string());
+    EXPECT_EQ(o.status, 0) << o.err;
+    const nlohmann::json r = nlohmann::json::parse(std::ifstream(out));
+    ASSERT_TRUE(r.at("diagnostics").contains("notch_roots"));
+    const nlohmann::json &roots = r.at("diagnostics").at("notch_roots");
+    ASSERT_EQ(roots.size(), 1u);
+    EXPECT_NEAR(roots[0].at("r").get<double>(), 0.04, 1e-12);
+    EXPECT_NEAR(roots[0].at("arc_radius").get<double>(), 0.01, 1e-12);
+    EXPECT_GT(roots[0].at("columns").get<int>(), 0);
+    EXPECT_EQ(r.at("discretization").at("vertex_columns").get<int>(), roots[0].at("columns").get<int>());
+    problem["rfm"]["notch_roots"] = false;
+    std::ofstream(in) << problem;
+    const Outcome off = run(in.string() + " --degree 6 --output " + out.string());
+    EXPECT_EQ(off.status, 0) << off.err;
+    const nlohmann::json r_off = nlohmann::json::parse(std::ifstream(out));
+    EXPECT_FALSE(r_off.at("diagnostics").contains("notch_roots"));
+    EXPECT_EQ(r_off.at("discretization").at("vertex_columns").get<int>(), 0);
   }
 
   // --ritz-bound (rfm.ritz_bound) adds the displacement space's own bound: on Lame's sphere
