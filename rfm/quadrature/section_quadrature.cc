@@ -385,11 +385,25 @@ namespace rfm
           if (v.z > b.z_min + tol && v.z < b.z_max - tol)
             z_breaks.push_back(v.z);
         }
-    auto with_ends = [&](std::vector<double> ends, const std::vector<double> &extra, double lo,
-                         double hi) {
-      for (const double x : extra)
-        if (x > lo + tol && x < hi - tol)
-          ends.push_back(x);
+    // Across the side of each vertex of graded_across: the side itself as a break of its own
+    // grading (section_cells grades toward a break at the interval's end from inside).
+    std::array<std::vector<double>, 2> across;
+    for (const axisym::Point &v : cells.graded_across)
+      {
+        const bool inside_r = v.r > b.r_min + tol && v.r < b.r_max - tol;
+        const bool inside_z = v.z > b.z_min + tol && v.z < b.z_max - tol;
+        if (inside_z && (std::abs(v.r - b.r_min) < tol || std::abs(v.r - b.r_max) < tol))
+          for (const double x : section_cells(b.r_min, b.r_max, 1, {v.r}, cells.n_normal_layers, cells.grading_ratio))
+            across[0].push_back(x);
+        if (inside_r && (std::abs(v.z - b.z_min) < tol || std::abs(v.z - b.z_max) < tol))
+          for (const double x : section_cells(b.z_min, b.z_max, 1, {v.z}, cells.n_normal_layers, cells.grading_ratio))
+            across[1].push_back(x);
+      }
+    auto with_ends = [&](std::vector<double> ends, const int axis, double lo, double hi) {
+      for (const std::vector<double> *more : {&extra_ends[axis], static_cast<const std::vector<double> *>(&across[axis])})
+        for (const double x : *more)
+          if (x > lo + tol && x < hi - tol)
+            ends.push_back(x);
       std::sort(ends.begin(), ends.end());
       ends.erase(std::unique(ends.begin(), ends.end(),
                              [&](double x, double y) { return std::abs(x - y) < tol; }),
@@ -398,10 +412,10 @@ namespace rfm
     };
     return tensor_gauss(with_ends(section_cells(b.r_min, b.r_max, cells.n_uniform_r, r_breaks,
                                                 cells.n_graded_layers, cells.grading_ratio),
-                                  extra_ends[0], b.r_min, b.r_max),
+                                  0, b.r_min, b.r_max),
                         with_ends(section_cells(b.z_min, b.z_max, cells.n_uniform_z, z_breaks,
                                                 cells.n_graded_layers, cells.grading_ratio),
-                                  extra_ends[1], b.z_min, b.z_max),
+                                  1, b.z_min, b.z_max),
                         n_points, even_in_r);
   }
 } // namespace rfm

@@ -91,6 +91,12 @@ namespace rfm
     int n_uniform_r = 1, n_uniform_z = 1; ///< uniform cells before splitting
     int n_graded_layers = 8;              ///< geometric layers toward each break point
     double grading_ratio = 0.35;          ///< width ratio between successive layers
+    /// Vertices inside a side toward whose side the cells are graded across it too, in
+    /// n_normal_layers layers (traction jumps: the particular stress depends on the direction
+    /// from the vertex there, and a cell that spans the section across the side resolves
+    /// that only as its Gauss points allow). Points not inside a side are ignored.
+    std::vector<axisym::Point> graded_across;
+    int n_normal_layers = 3;
   };
 
   /// True if every edge of the outline is a line on its bounding box, i.e. the section is

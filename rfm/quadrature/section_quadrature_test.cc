@@ -208,6 +208,19 @@ namespace rfm
     EXPECT_LT(z_min_above - 0.25, 0.1 * 0.125 * 0.15);
     EXPECT_LT(0.25 - z_max_below, 0.1 * 0.125 * 0.25);
 
+    // Graded across the side too (graded_across: traction jumps): the vertex (0.3, 0.25) on
+    // the outer side adds 3 layers in r toward r = 0.3 (4 cells in r); a point not on a side
+    // adds nothing. The nodes nearest the side lie within the first layer's width 0.5^3 0.2.
+    RectangleCells across = cells;
+    across.graded_across = {{0.3, 0.25}, {0.2, 0.2}};
+    across.n_normal_layers = 3;
+    const Quadrature2D g = rectangle_gauss(split, 6, across);
+    EXPECT_EQ(g.n_points(), 8 * 4 * 36);
+    expect_inside_with_positive_weights(g, split);
+    expect_moments(g, [](int i, int j) { return rectangle_moment(0.1, 0.3, 0, 0.4, i, j); }, 11, polygon_exact,
+                   "rectangle_gauss, graded across");
+    EXPECT_LT(0.3 - g.r.maxCoeff(), 0.1 * 0.125 * 0.2);
+
     // Not rectangles: an L-shape, a trapezium, an arc.
     EXPECT_FALSE(is_axis_aligned_rectangle(Outline(
       {0.1, 0}, {line({0.3, 0}), line({0.3, 0.1}), line({0.2, 0.1}), line({0.2, 0.3}),
