@@ -1437,8 +1437,8 @@ namespace rfm
         // the stepped shaft 9.8e-5 and 4.5e-5, 3.4e-5 and 1.5e-5, 3.2e-5 and 1.3e-5, 2.0e-5
         // and 1.0e-5; the stepped ring 2.5e-6 and 6.4e-7, 1.3e-6 and 4.1e-7, 1.0e-6 and
         // 3.5e-7, 9.6e-7 and 3.5e-7; assembly at p = 16 2.1, 2.9, 3.0, 3.4 s on the shaft.
-        if (options.vertex_support == DiscretizationOptions::VertexSupport::section && !curved && !v.modes.empty() &&
-            v.angle > 3.14159265358979323846 * (1.0 + 1e-9) && zones_.empty() && !has_die)
+        if (options.vertex_support == DiscretizationOptions::VertexSupport::section && !curved &&
+            !v.modes.empty() && v.angle > 3.14159265358979323846 * (1.0 + 1e-9) && zones_.empty() && !has_die)
           {
             const int a = static_cast<int>(arriving - edges.data()), l = static_cast<int>(leaving - edges.data());
             if (set_section_support(vertices_.back(), body, a, l) && options.vertex_mode_degree < 4)

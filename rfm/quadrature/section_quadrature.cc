@@ -393,17 +393,20 @@ namespace rfm
         const bool inside_r = v.r > b.r_min + tol && v.r < b.r_max - tol;
         const bool inside_z = v.z > b.z_min + tol && v.z < b.z_max - tol;
         if (inside_z && (std::abs(v.r - b.r_min) < tol || std::abs(v.r - b.r_max) < tol))
-          for (const double x : section_cells(b.r_min, b.r_max, 1, {v.r}, cells.n_normal_layers, cells.grading_ratio))
+          for (const double x :
+               section_cells(b.r_min, b.r_max, 1, {v.r}, cells.n_normal_layers, cells.grading_ratio))
             across[0].push_back(x);
         if (inside_r && (std::abs(v.z - b.z_min) < tol || std::abs(v.z - b.z_max) < tol))
-          for (const double x : section_cells(b.z_min, b.z_max, 1, {v.z}, cells.n_normal_layers, cells.grading_ratio))
+          for (const double x :
+               section_cells(b.z_min, b.z_max, 1, {v.z}, cells.n_normal_layers, cells.grading_ratio))
             across[1].push_back(x);
       }
     auto with_ends = [&](std::vector<double> ends, const int axis, double lo, double hi) {
-      for (const std::vector<double> *more : {&extra_ends[axis], static_cast<const std::vector<double> *>(&across[axis])})
-        for (const double x : *more)
-          if (x > lo + tol && x < hi - tol)
-            ends.push_back(x);
+      std::vector<double> more = extra_ends[axis];
+      more.insert(more.end(), across[axis].begin(), across[axis].end());
+      for (const double x : more)
+        if (x > lo + tol && x < hi - tol)
+          ends.push_back(x);
       std::sort(ends.begin(), ends.end());
       ends.erase(std::unique(ends.begin(), ends.end(),
                              [&](double x, double y) { return std::abs(x - y) < tol; }),
