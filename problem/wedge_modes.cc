@@ -208,6 +208,22 @@ namespace axisym
             f(a, b);
         }
     }
+
+    /// The interior angle [rad] at the vertex where edge a ends and edge b starts: pi minus
+    /// the turn from a to b (+ to the left), outlines running counter-clockwise with the body
+    /// on the left (the parser's rule).
+    double interior_angle(const OutlineEdge &a, const OutlineEdge &b)
+    {
+      const Point ta = a.tangent_at(1.0), tb = b.tangent_at(0.0);
+      return pi - std::atan2(ta.r * tb.z - ta.z * tb.r, ta.r * tb.r + ta.z * tb.z);
+    }
+
+    /// A part whose condition prescribes the traction (free, pressure, traction).
+    bool is_traction_part(const PartCondition &c)
+    {
+      using Kind = PartCondition::Kind;
+      return c.kind == Kind::traction_free || c.kind == Kind::pressure || c.kind == Kind::traction;
+    }
   } // namespace
 
   std::vector<SingularVertex> singular_vertices(const Body &body, const double poisson_ratio)
@@ -215,11 +231,7 @@ namespace axisym
     std::vector<SingularVertex> out;
     for_each_vertex_off_axis(body, [&](const OutlineEdge &a, const OutlineEdge &b) {
         const Point v = a.end;
-        const Point ta = a.tangent_at(1.0), tb = b.tangent_at(0.0);
-        // The turn from a to b (+ to the left); outlines run counter-clockwise with the body on
-        // the left (the parser's rule), so the interior angle is pi minus the turn.
-        const double turn = std::atan2(ta.r * tb.z - ta.z * tb.r, ta.r * tb.r + ta.z * tb.z);
-        const double angle = pi - turn;
+        const double angle = interior_angle(a, b);
         if (!(angle > 1e-9))
           return; // a cusp: no wedge
         const PartCondition &ca = body.conditions.at(a.part), &cb = body.conditions.at(b.part);
@@ -236,25 +248,20 @@ namespace axisym
     std::vector<NotchRoot> out;
     using Kind = PartCondition::Kind;
     const double size = body.outline.size();
-    auto traction = [](const Kind k) {
-      return k == Kind::traction_free || k == Kind::pressure || k == Kind::traction;
-    };
     for_each_vertex_off_axis(body, [&](const OutlineEdge &a, const OutlineEdge &b) {
-        const Kind ka = body.conditions.at(a.part).kind, kb = body.conditions.at(b.part).kind;
+        const PartCondition &ca = body.conditions.at(a.part), &cb = body.conditions.at(b.part);
         // The arc and the symmetry line, in either order; concave: the arc runs clockwise
         // about its centre, with the body on its left.
         const OutlineEdge *arc = nullptr;
-        if (a.kind == OutlineEdge::Kind::arc && traction(ka) && kb == Kind::symmetry &&
+        if (a.kind == OutlineEdge::Kind::arc && is_traction_part(ca) && cb.kind == Kind::symmetry &&
             b.kind == OutlineEdge::Kind::line)
           arc = &a;
-        else if (b.kind == OutlineEdge::Kind::arc && traction(kb) && ka == Kind::symmetry &&
+        else if (b.kind == OutlineEdge::Kind::arc && is_traction_part(cb) && ca.kind == Kind::symmetry &&
                  a.kind == OutlineEdge::Kind::line)
           arc = &b;
         if (arc == nullptr || !(arc->sweep() < 0.0) || !(arc->radius() < notch_root_max_radius * size))
           return;
-        const Point ta = a.tangent_at(1.0), tb = b.tangent_at(0.0);
-        const double turn = std::atan2(ta.r * tb.z - ta.z * tb.r, ta.r * tb.r + ta.z * tb.z);
-        out.push_back({a.end, pi - turn, arc->radius()});
+        out.push_back({a.end, interior_angle(a, b), arc->radius()});
       });
     return out;
   }
@@ -303,17 +310,12 @@ namespace axisym
     if (!(t_grad > 0.0))
       return out;
     using Kind = PartCondition::Kind;
-    auto traction_part = [](const PartCondition &c) {
-      return c.kind == Kind::traction_free || c.kind == Kind::pressure || c.kind == Kind::traction;
-    };
     for_each_vertex_off_axis(body, [&](const OutlineEdge &a, const OutlineEdge &b) {
-        const Point ta = a.tangent_at(1.0), tb = b.tangent_at(0.0);
-        const double turn = std::atan2(ta.r * tb.z - ta.z * tb.r, ta.r * tb.r + ta.z * tb.z);
-        if (!(std::abs(turn - 0.5 * pi) < 1e-9)) // interior angle pi - turn
+        if (!(std::abs(interior_angle(a, b) - 0.5 * pi) < 1e-9))
           return;
         const PartCondition &ca = body.conditions.at(a.part), &cb = body.conditions.at(b.part);
-        const bool sym_a = ca.kind == Kind::symmetry && traction_part(cb);
-        const bool sym_b = cb.kind == Kind::symmetry && traction_part(ca);
+        const bool sym_a = ca.kind == Kind::symmetry && is_traction_part(cb);
+        const bool sym_b = cb.kind == Kind::symmetry && is_traction_part(ca);
         if (!sym_a && !sym_b)
           return;
         const OutlineEdge &line = sym_a ? a : b;
