@@ -675,7 +675,7 @@ namespace axisym
                               "vertex_cutoff", "vertex_local_degree",
                               "vertex_local_displacement_degree", "vertex_support",
                               "resonant_displacement_degree", "axis_parity", "notch_roots",
-                              "ritz_bound"});
+                              "rough_vertices", "ritz_bound"});
         if (r.has("degree") && r.has("tolerance"))
           fail("rfm", top.at("rfm"), "give rfm.degree (fixed p) or rfm.tolerance (p rises "
                                      "until the indicator is below it), not both");
@@ -746,6 +746,12 @@ namespace axisym
             if (!r.at("notch_roots").is_boolean())
               fail("rfm.notch_roots", r.at("notch_roots"), "must be true or false");
             p.rfm.notch_roots = r.at("notch_roots").get<bool>();
+          }
+        if (r.has("rough_vertices"))
+          {
+            if (!r.at("rough_vertices").is_boolean())
+              fail("rfm.rough_vertices", r.at("rough_vertices"), "must be true or false");
+            p.rfm.rough_vertices = r.at("rough_vertices").get<bool>();
           }
         if (r.has("ritz_bound"))
           {

@@ -164,6 +164,15 @@ namespace axisym
     /// the indicator at p = 12 from 7e-10 to 1e-6 (their displacement columns; without them
     /// 5e-10), and the hubs of issue 24 (0.46) gained less than they cost.
     bool notch_roots = true;
+    /// Rough vertices where a traction jumps (problem/wedge_modes.h: rough_vertices; issue
+    /// 24 items 3 and 4): where the stress is bounded but its gradient is not (a non-integer
+    /// exponent with 1 < Re lambda < 2) and the prescribed traction jumps, as where issue 24's
+    /// hub's inner-arc pressure ends at its bore (133 degrees, lambda = 1.905 +- 0.388 i), the
+    /// vertex's modes and smooth local columns as at a singular vertex, in a disc clear of the
+    /// other vertices' discs; the jump's field takes the same disc. Indicator of that hub at
+    /// p = 8 / 12 / 16 / 20: 2.0e-3 / 2.8e-4 / 4.0e-5 / 1.2e-5 without, 5.0e-5 / 5.4e-6 /
+    /// 1.2e-6 / 1.5e-7 with them. false: none (as before).
+    bool rough_vertices = true;
     /// The displacement space's own upper bound of Phi beside Phi_L(u_h)
     /// (OutlineModel::ritz_lagrange; rfm_solve's functionals.lagrange_ritz and
     /// indicator_ritz): a displacement-only Ritz solve on the columns of u_h after the mixed

@@ -243,6 +243,30 @@ namespace axisym
     return out;
   }
 
+  std::vector<SingularVertex> rough_vertices(const Body &body, const double poisson_ratio)
+  {
+    std::vector<SingularVertex> out;
+    for_each_vertex_off_axis(body, [&](const OutlineEdge &a, const OutlineEdge &b) {
+        const double angle = interior_angle(a, b);
+        if (!(angle > 1e-9))
+          return;
+        const PartCondition &ca = body.conditions.at(a.part), &cb = body.conditions.at(b.part);
+        const Wedge w(angle, wedge_face(ca), wedge_face(cb), poisson_ratio);
+        std::vector<WedgeMode> modes = w.modes(rough_vertex_max_exponent - 1e-3);
+        if (std::any_of(modes.begin(), modes.end(), [](const WedgeMode &m) { return m.lambda.real() < 0.999; }))
+          return; // singular: singular_vertices
+        modes.erase(std::remove_if(modes.begin(), modes.end(),
+                                   [](const WedgeMode &m) {
+                                     return std::abs(m.lambda.imag()) < 1e-9 &&
+                                            std::abs(m.lambda.real() - std::round(m.lambda.real())) < 1e-7;
+                                   }),
+                    modes.end());
+        if (!modes.empty())
+          out.push_back({a.end, angle, a.part, b.part, std::move(modes)});
+      });
+    return out;
+  }
+
   std::vector<NotchRoot> notch_roots(const Body &body)
   {
     std::vector<NotchRoot> out;

@@ -121,6 +121,18 @@ namespace axisym
   /// jumps at a vertex the particular field has logarithms this does not see (issue 24 item 4).
   std::vector<SingularVertex> singular_vertices(const Body &body, double poisson_ratio);
 
+  /// Every vertex of the body's outline off the axis where the stress is bounded but not
+  /// smooth: not singular, with a non-integer exponent of its wedge with Re lambda below
+  /// rough_vertex_max_exponent, in the outline's order; each with those exponents' modes. The
+  /// stress there has a term rho^(lambda - 1) whose gradient is unbounded, which global
+  /// polynomials resolve only at an algebraic rate. Free faces meeting at an obtuse angle
+  /// (from about 117 degrees to 180) are such vertices, e.g. issue 24's hub where the inner
+  /// arc's pressure ends at the bore (133 degrees, lambda = 1.905 +- 0.388 i); a free face
+  /// meeting a symmetry line at a right angle, or two free faces at one, is not (its exponents
+  /// are integers, or 2.74 +- 1.12 i).
+  std::vector<SingularVertex> rough_vertices(const Body &body, double poisson_ratio);
+  inline constexpr double rough_vertex_max_exponent = 2.0;
+
   /// A notch root: a vertex off the axis where a concave arc (the body outside its circle)
   /// that carries a traction (free, pressure, traction) meets a symmetry line, with the arc's
   /// radius below notch_root_max_radius times the section's size (the diagonal of its box).

@@ -285,6 +285,35 @@ namespace axisym
     EXPECT_TRUE(notch_roots(*parse_problem(bead).body).empty());
   }
 
+  // Rough vertices: on issue 24's hub the bore meets the pressed inner arc at 133.4 degrees,
+  // two free faces in the wedge: its exponents solve the symmetric free-free equation
+  // sin(lambda beta) + lambda sin(beta) = 0 (Williams), whose first root off the integers is
+  // 1.9047 +- 0.3884 i (Newton on that closed form, outside this code). The stepped ring's
+  // 270-degree vertex is singular, not rough, and its right-angled corners (free-free:
+  // 2.74 +- 1.12 i; free against symmetry: integers) are smooth enough; so is the pressure
+  // band's straight jump (a half plane).
+  TEST(WedgeModes, FindsTheRoughVertices)
+  {
+    const Problem hub = parse_problem(testing::tapered_hub());
+    const std::vector<SingularVertex> v = rough_vertices(*hub.body, nu);
+    ASSERT_EQ(v.size(), 1u);
+    EXPECT_NEAR(v[0].at.r, 0.55, 1e-12);
+    EXPECT_NEAR(v[0].at.z, 0.5809475019311126, 1e-12);
+    EXPECT_EQ(v[0].part_before, "bore");
+    EXPECT_EQ(v[0].part_after, "inner_arc");
+    const double beta = v[0].angle;
+    EXPECT_NEAR(beta * 180.0 / pi, 133.4325, 1e-3);
+    ASSERT_EQ(v[0].modes.size(), 1u); // the conjugate pair, once
+    const std::complex<double> lambda = v[0].modes[0].lambda;
+    EXPECT_NEAR(lambda.real(), 1.90475, 1e-4);
+    EXPECT_NEAR(std::abs(lambda.imag()), 0.38844, 1e-4);
+    EXPECT_LT(std::abs(std::sin(lambda * beta) + lambda * std::sin(beta)), 1e-8);
+    for (const SingularVertex &s : singular_vertices(*hub.body, nu))
+      EXPECT_GT(std::hypot(s.at.r - v[0].at.r, s.at.z - v[0].at.z), 0.1);
+    EXPECT_TRUE(rough_vertices(*parse_problem(testing::stepped_ring()).body, nu).empty());
+    EXPECT_TRUE(rough_vertices(*parse_problem(testing::pressure_band()).body, nu).empty());
+  }
+
   // Resonant vertices: issue 24's hub with its pressure kept (a traction part) and a body
   // load. Its symmetry lines z = 0 and z = 1.6 meet the arcs and the neck and bore at right
   // angles: T_z crosses them (four vertices), T_r runs along them (none); gravity is left out.

@@ -90,9 +90,15 @@ namespace rfm
     // the axis r = 0 itself except on axis edges, whose weight r ds is zero there anyway.
     // graded[e] (optional): edge e has a contact edge at its start (bit 1) or end (bit 2),
     // where the stress has a rho^(-1/2) term: there t = s^2 from that end (on each half when
-    // both), so that the singular traces integrate as smooth functions of s.
+    // both), so that the singular traces integrate as smooth functions of s. rims: the
+    // circles where a cutoff ends (vertices, traction jumps, resonant vertices); the panels
+    // break where an edge crosses one, since the cutoff's third derivative jumps there. (On
+    // issue 24's hub the pressed inner arc carries the columns of the vertex where its
+    // pressure ends, cut off at 0.39 m of its 0.65 m: at p = 8 Phi_R moved by 1.1e-5 with 10
+    // more points a panel before the break, by 1e-10 after.)
     EdgeQuadrature edge_gauss(const axisym::Outline &outline, const int n_points,
-                              const std::vector<int> &graded = {})
+                              const std::vector<int> &graded = {},
+                              const std::vector<VertexEnrichment::Circle> &rims = {})
     {
       const GaussRule1D g = gauss_legendre(n_points);
       std::vector<double> r, z, w, nr, nz;
@@ -101,20 +107,69 @@ namespace rfm
         {
           const axisym::OutlineEdge &edge = outline.edges()[e];
           const int ends = graded.empty() ? 0 : graded[e];
-          // Panels of t: [0, 1], or its halves; each maps s in [0, 1] to t, graded or not.
+          // Where the edge crosses a rim: sign changes of |x(t) - c|^2 - rho_0^2 on a fine
+          // sampling of t, bisected.
+          std::vector<double> breaks;
+          for (const VertexEnrichment::Circle &k : rims)
+            {
+              auto f = [&](const double t) {
+                const axisym::Point x = edge.point_at(t);
+                return (x.r - k.centre.r) * (x.r - k.centre.r) + (x.z - k.centre.z) * (x.z - k.centre.z) -
+                       k.radius * k.radius;
+              };
+              const int n_samples = 256;
+              double t_lo = 0.0, f_lo = f(0.0);
+              for (int i = 1; i <= n_samples; ++i)
+                {
+                  const double t_hi = static_cast<double>(i) / n_samples, f_hi = f(t_hi);
+                  if ((f_lo < 0.0) != (f_hi < 0.0) && f_lo != 0.0 && f_hi != 0.0)
+                    {
+                      double a = t_lo, b = t_hi, f_a = f_lo;
+                      for (int it = 0; it < 60; ++it)
+                        {
+                          const double m = 0.5 * (a + b), f_m = f(m);
+                          if ((f_m < 0.0) == (f_a < 0.0))
+                            a = m, f_a = f_m;
+                          else
+                            b = m;
+                        }
+                      const double t = 0.5 * (a + b);
+                      if (t > 1e-6 && t < 1.0 - 1e-6)
+                        breaks.push_back(t);
+                    }
+                  t_lo = t_hi, f_lo = f_hi;
+                }
+            }
+          std::sort(breaks.begin(), breaks.end());
+          breaks.erase(std::unique(breaks.begin(), breaks.end(),
+                                   [](const double a, const double b) { return b - a < 1e-9; }),
+                       breaks.end());
+          // Panels of t: [0, 1], or its halves, or its pieces between the rims; each maps s in
+          // [0, 1] to t, the first graded toward t = 0 (bit 1), the last toward t = 1 (bit 2).
           struct Panel
           {
             double t0, t1;
             int grade; // 0: none, -1: toward t0, +1: toward t1
           };
           std::vector<Panel> panels;
-          if (ends == 3)
-            {
-              panels.push_back({0.0, 0.5, -1});
-              panels.push_back({0.5, 1.0, 1});
-            }
-          else
+          if (breaks.empty() && ends == 3)
+            breaks.push_back(0.5);
+          if (breaks.empty())
             panels.push_back({0.0, 1.0, ends == 0 ? 0 : (ends == 1 ? -1 : 1)});
+          else
+            {
+              breaks.insert(breaks.begin(), 0.0);
+              breaks.push_back(1.0);
+              for (std::size_t i = 0; i + 1 < breaks.size(); ++i)
+                {
+                  int grade = 0;
+                  if (i == 0 && (ends & 1))
+                    grade = -1;
+                  else if (i + 2 == breaks.size() && (ends & 2))
+                    grade = 1;
+                  panels.push_back({breaks[i], breaks[i + 1], grade});
+                }
+            }
           for (const Panel &panel : panels)
             for (Eigen::Index k = 0; k < g.nodes.size(); ++k)
               {
@@ -285,7 +340,17 @@ namespace rfm
     make_vertex_enrichments(problem, options, graded);
     make_traction_jumps(problem, options);
     make_resonant_vertices(problem, options);
-    edge_quadrature_ = edge_gauss(structures_.body().outline, qo.n_points, graded);
+    {
+      std::vector<VertexEnrichment::Circle> rims;
+      for (const VertexEnrichment &v : vertices_)
+        if (!v.section_support())
+          rims.push_back({v.vertex(), v.cutoff_radius()});
+      for (const TractionJump &j : jumps_)
+        rims.push_back({j.vertex(), j.cutoff_radius()});
+      for (const ResonantVertex &v : resonances_)
+        rims.push_back({v.vertex(), v.cutoff_radius()});
+      edge_quadrature_ = edge_gauss(structures_.body().outline, qo.n_points, graded, rims);
+    }
     // The near-edge rules: the half disc of each enrichment's support, polar with
     // rho = rho_0 s^2 (quadrature.h), placed in its frame.
     {
@@ -1359,7 +1424,27 @@ namespace rfm
     std::vector<axisym::Point> singular_points;
     for (const SingularVertex &v : vertices)
       singular_points.push_back(v.at);
+    // The rough vertices (wedge_modes.h) where a traction jumps, last: each keeps its disc
+    // clear of those before it. (Where two discs overlap, the partition of unity's shares
+    // bend inside each disc's rule along the other's rim: issue 24's hub with its jump
+    // vertex's disc reaching into the taper's gave a Phi_R at p = 12 that moved by 3e-5
+    // between 13, 18, 23 and 33 points a direction, and converged to 1e-10 when kept clear.)
+    // The jump excites their modes at the jump's size; elsewhere the far field sets them, and
+    // on the heated hub of issue 24 (the same 133-degree vertex, free, no jump) they bought
+    // little: indicator at p = 16 1.01e-6 without, 9.8e-7 with the modes (19.5 s against
+    // 17.0 s), 8.0e-7 with the local columns too (30.6 s). On the pressed hub, with both:
+    // 4.0e-5 -> 1.2e-6 (15.2 s -> 24.9 s); with the modes alone 2.6e-5.
     const std::vector<axisym::Point> jump_points = axisym::traction_jump_vertices(body);
+    const std::size_t n_singular = vertices.size();
+    if (options.rough_vertices)
+      for (SingularVertex &v : rough_vertices(body, material_.poisson_ratio))
+        if (std::any_of(jump_points.begin(), jump_points.end(), [&](const axisym::Point &x) {
+              return std::hypot(x.r - v.at.r, x.z - v.at.z) < tol;
+            }))
+          vertices.push_back(std::move(v));
+    std::vector<axisym::Point> all_points;
+    for (const SingularVertex &v : vertices)
+      all_points.push_back(v.at);
     bool has_die = false;
     for (const auto &[part, condition] : body.conditions)
       has_die |= condition.kind == Kind::die;
@@ -1374,8 +1459,10 @@ namespace rfm
       options.vertex_local_degree < 0
         ? -1
         : std::min(options.vertex_local_degree, std::max(local_displacement_degree, options.degree / 2));
-    for (const SingularVertex &v : vertices)
+    for (std::size_t i = 0; i < vertices.size(); ++i)
       {
+        const SingularVertex &v = vertices[i];
+        const bool rough = i >= n_singular;
         // The two parts at v: lines, or arcs that carry a traction (the mapped stresses of
         // vertex_enrichment.h: set_curved_faces), and no die (a zone's reach is not known
         // before the solve; its own ends are contact edges).
@@ -1395,10 +1482,13 @@ namespace rfm
         // The room: each face (half of it where its other end is a singular vertex too, which
         // takes the other half), the distance to every other edge, and clear of the contact
         // edges' supports.
-        double room = room_alone(edges, *arriving, *leaving, singular_points, tol);
+        double room = room_alone(edges, *arriving, *leaving, rough ? all_points : singular_points, tol);
         for (const EdgeEnrichment &en : enrichments_)
           room = std::min(room, std::hypot(en.frame().r - v.at.r, en.frame().z - v.at.z) -
                                   en.cutoff_radius());
+        if (rough)
+          for (const VertexEnrichment &w : vertices_)
+            room = std::min(room, std::hypot(w.vertex().r - v.at.r, w.vertex().z - v.at.z) - w.cutoff_radius());
         // A vertex on an arc leaves each traction jump elsewhere the room it would have
         // alone (its faces, halved where their other ends jump too, and the distance to every
         // other edge; make_traction_jumps), but takes at least a quarter of the distance: the

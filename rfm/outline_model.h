@@ -215,6 +215,9 @@ namespace rfm
     /// of both spaces after the edge modes; their products are integrated on the near-vertex
     /// rules (VertexEnrichment::near_rule). With rfm.notch_roots, every notch root
     /// (axisym::notch_roots) gets the smooth local columns alone, in the same form (no modes).
+    /// With rfm.rough_vertices, every rough vertex (axisym::rough_vertices) where a traction
+    /// jumps gets the modes and local columns as a singular vertex, its disc also clear of
+    /// the other vertices' discs.
     const std::vector<VertexEnrichment> &vertex_enrichments() const { return vertices_; }
     /// Traction jumps (traction_jump.h; issue 24 item 4): at every vertex of the outline off
     /// the axis between two traction parts (free, pressure, traction; no die) whose tractions

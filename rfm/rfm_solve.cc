@@ -556,6 +556,33 @@ namespace
         if (!list.empty())
           result["diagnostics"]["notch_roots"] = list;
       }
+    // Rough vertices (wedge_modes.h: rough_vertices): the bounded non-smooth terms' exponents
+    // and the columns the model placed there (none with rfm.rough_vertices false).
+    if (model)
+      {
+        nlohmann::json list = nlohmann::json::array();
+        for (const rfm::SingularVertex &v : rfm::rough_vertices(*problem.body, problem.material.poisson_ratio))
+          {
+            nlohmann::json exponents = nlohmann::json::array();
+            for (const rfm::WedgeMode &m : v.modes)
+              exponents.push_back({m.lambda.real(), m.lambda.imag()});
+            nlohmann::json enrichment = nullptr;
+            for (const rfm::VertexEnrichment &e : model->vertex_enrichments())
+              if (std::hypot(e.vertex().r - v.at.r, e.vertex().z - v.at.z) <= 1e-9 * problem.body->outline.size())
+                enrichment = {{"columns", e.n_columns()},
+                              {"modes", e.modes().size()},
+                              {"cutoff_radius", e.cutoff_radius()},
+                              {"curved_faces", e.curved()}};
+            list.push_back({{"r", v.at.r},
+                            {"z", v.at.z},
+                            {"angle_degrees", v.angle * 180.0 / 3.14159265358979323846},
+                            {"parts", {v.part_before, v.part_after}},
+                            {"exponents", exponents},
+                            {"enrichment", enrichment}});
+          }
+        if (!list.empty())
+          result["diagnostics"]["rough_vertices"] = list;
+      }
     // Traction jumps (traction_jump.h, issue 24 item 4): the loaded wedge's stress added to the
     // particular solution at each.
     if (model && !model->traction_jumps().empty())

@@ -157,6 +157,7 @@ namespace
       Case{"grading_ratio", with("/rfm/grading_ratio", 1.5), "rfm.grading_ratio"},
       Case{"ritz_bound_not_a_bool", with("/rfm/ritz_bound", 1), "rfm.ritz_bound"},
       Case{"notch_roots_not_a_bool", with("/rfm/notch_roots", "yes"), "rfm.notch_roots"},
+      Case{"rough_vertices_not_a_bool", with("/rfm/rough_vertices", 1), "rfm.rough_vertices"},
       Case{"fem_degree", with("/fem/degree", 9), "fem.degree"},
       Case{"outline_open", sphere_with("/geometry/outline/4/arc_to", {0.1, 0.01}),
            "geometry.outline"},
@@ -286,6 +287,43 @@ namespace
     const nlohmann::json r_off = nlohmann::json::parse(std::ifstream(out));
     EXPECT_FALSE(r_off.at("diagnostics").contains("notch_roots"));
     EXPECT_EQ(r_off.at("discretization").at("vertex_columns").get<int>(), 0);
+  }
+
+  // A rough vertex (wedge_modes.h: rough_vertices) is listed in diagnostics.rough_vertices
+  // with its exponents, and with the columns the model placed there where a traction jumps
+  // (issue 24's hub: its inner arc's pressure ends at the bore); with rfm.rough_vertices off it
+  // is listed without them.
+  TEST(RfmSolveCli, RoughVertexIsListedWithItsColumns)
+  {
+    const fs::path dir = fs::temp_directory_path() / "rfm_cli_rough";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path in = dir / "problem.json", out = dir / "result.json";
+    nlohmann::json problem = axisym::testing::tapered_hub();
+    std::ofstream(in) << problem;
+    const Outcome o = run(in.string() + " --degree 6 --output " + out.string());
+    EXPECT_EQ(o.status, 0) << o.err;
+    const nlohmann::json r = nlohmann::json::parse(std::ifstream(out));
+    ASSERT_TRUE(r.at("diagnostics").contains("rough_vertices"));
+    const nlohmann::json &rough = r.at("diagnostics").at("rough_vertices");
+    ASSERT_EQ(rough.size(), 1u);
+    EXPECT_NEAR(rough[0].at("r").get<double>(), 0.55, 1e-12);
+    EXPECT_NEAR(rough[0].at("z").get<double>(), 0.5809475019311126, 1e-12);
+    EXPECT_NEAR(rough[0].at("exponents")[0][0].get<double>(), 1.90475, 1e-4);
+    ASSERT_FALSE(rough[0].at("enrichment").is_null());
+    EXPECT_GT(rough[0].at("enrichment").at("modes").get<int>(), 0);
+    EXPECT_GT(rough[0].at("enrichment").at("columns").get<int>(), 0);
+    EXPECT_EQ(rough[0].at("enrichment").at("cutoff_radius").get<double>(),
+              r.at("diagnostics").at("traction_jumps")[0].at("cutoff_radius").get<double>());
+    problem["rfm"]["rough_vertices"] = false;
+    std::ofstream(in) << problem;
+    const Outcome off = run(in.string() + " --degree 6 --output " + out.string());
+    EXPECT_EQ(off.status, 0) << off.err;
+    const nlohmann::json r_off = nlohmann::json::parse(std::ifstream(out));
+    ASSERT_TRUE(r_off.at("diagnostics").contains("rough_vertices"));
+    EXPECT_TRUE(r_off.at("diagnostics").at("rough_vertices")[0].at("enrichment").is_null());
+    EXPECT_LT(r_off.at("discretization").at("vertex_columns").get<int>(),
+              r.at("discretization").at("vertex_columns").get<int>());
   }
 
   // --ritz-bound (rfm.ritz_bound) adds the displacement space's own bound: on Lame's sphere

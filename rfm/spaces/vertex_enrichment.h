@@ -86,6 +86,7 @@ namespace rfm
 {
   // The wedge analysis lives in the problem layer (both solvers read it: the FEM grades its
   // mesh toward the same vertices).
+  using axisym::rough_vertices;
   using axisym::singular_vertices;
   using axisym::SingularVertex;
   using axisym::Wedge;
