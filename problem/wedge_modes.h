@@ -126,7 +126,7 @@ namespace axisym
   /// rough_vertex_max_exponent, in the outline's order; each with those exponents' modes. The
   /// stress there has a term rho^(lambda - 1) whose gradient is unbounded, which global
   /// polynomials resolve only at an algebraic rate. Free faces meeting at an obtuse angle
-  /// (from about 117 degrees to 180) are such vertices, e.g. issue 24's hub where the inner
+  /// (from about 126 degrees to 180) are such vertices, e.g. issue 24's hub where the inner
   /// arc's pressure ends at the bore (133 degrees, lambda = 1.905 +- 0.388 i); a free face
   /// meeting a symmetry line at a right angle, or two free faces at one, is not (its exponents
   /// are integers, or 2.74 +- 1.12 i).

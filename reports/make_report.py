@@ -1671,7 +1671,13 @@ def traction_jump_rows(corners, out_dir):
           "term); its energy limit is Richardson's from the last three levels. Sample errors "
           "are per point, the largest component's difference from the FEM's finest level over the "
           "largest sample stress; points on a symmetry line (z = 0) converge more slowly than the rest "
-          "(as on the axis: issue 24 item 5).", ""]
+          "(as on the axis: issue 24 item 5). Where the jump's vertex is rough as well (a non-integer "
+          "exponent with 1 < Re lambda < 2, whose stress rho^(lambda - 1) has an unbounded gradient: the "
+          "hub's 133 degrees between two free faces in the wedge, lambda = 1.905 +- 0.388 i; "
+          "`axisym::rough_vertices`), the vertex takes its modes and local columns as a singular vertex "
+          "does, in a disc clear of the other vertices', which the jump's field shares "
+          "(`rfm.rough_vertices`; 'without the rough vertex' switches that off, the jump's field then "
+          "with its own disc). The pressure band's straight jump is a half plane, not rough.", ""]
     fig, axes = plt.subplots(1, len(cases), figsize=(5 * len(cases), 4), squeeze=False)
     for (key, title), ax in zip(cases, axes[0]):
         c = corners[key]
@@ -1681,7 +1687,8 @@ def traction_jump_rows(corners, out_dir):
                   "from it).")
         md.append("")
         fem_level_rows(md, f)
-        degree_rows(md, ax, c, (("rfm", "RFM"), ("rfm_without_jump_field", "RFM without the field")),
+        degree_rows(md, ax, c, (("rfm", "RFM"), ("rfm_without_rough_vertices", "RFM without the rough vertex"),
+                                ("rfm_without_jump_field", "RFM without the field")),
                     lambda r: " | ".join(f"{e:.1e}" for e in r["sample_errors_relative"]))
         md.append("")
         decorate(ax, "degree p", "Phi_R against the FEM's limit (relative); indicator", key.replace("_", " "))

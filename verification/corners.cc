@@ -245,7 +245,7 @@ namespace
                            const std::vector<int> &degrees, const std::vector<int> &levels,
                            const std::string &without_key = "rfm_without_jump_field",
                            const std::string &without_text = "without the jump's field",
-                           const int resonant_displacement_degree = -1)
+                           const int resonant_displacement_degree = -1, const bool without_rough = false)
   {
     const axisym::Problem problem = axisym::read_problem_file(context.problem_path(file));
     nlohmann::json c = {{"problem_file", "verification/problems/" + file}};
@@ -278,17 +278,23 @@ namespace
     const double limit = energy_limit(energies, file, c["fem"]);
     const double scale = largest_component(fem_samples);
     const auto [r, z] = sample_points(problem);
-    // The defaults, without the vertex terms, and (resonant_displacement_degree >= 0) with the
-    // resonant vertices' displacement columns of that degree.
-    for (const int variant : {0, 1, 2})
+    // The defaults, without the vertex terms, (resonant_displacement_degree >= 0) with the
+    // resonant vertices' displacement columns of that degree, and (without_rough) without the
+    // rough vertices' columns (rfm.rough_vertices false; the jump's field with its own disc).
+    for (const int variant : {0, 1, 2, 3})
       {
-        if (variant == 2 && resonant_displacement_degree < 0)
+        if ((variant == 2 && resonant_displacement_degree < 0) || (variant == 3 && !without_rough))
           continue;
         const bool with = variant != 1;
-        const std::string key = variant == 0 ? "rfm" : variant == 1 ? without_key : "rfm_with_displacement_columns";
+        const std::string key = variant == 0   ? "rfm"
+                                : variant == 1 ? without_key
+                                : variant == 2 ? "rfm_with_displacement_columns"
+                                               : "rfm_without_rough_vertices";
         axisym::Problem run = problem;
         if (variant == 2)
           run.rfm.resonant_displacement_degree = resonant_displacement_degree;
+        if (variant == 3)
+          run.rfm.rough_vertices = false;
         double last_indicator = 0.0;
         bool falling = true;
         for (const int p : degrees)
@@ -314,10 +320,10 @@ namespace
             last_indicator = f.indicator();
             fmt::print("RFM{} p = {:>2}: Phi_R {:.10e} ({:.2e} from the FEM's limit), indicator {:.2e}, "
                        "samples {:.2e} of max |sigma| from the FEM's ({:.1f} s)\n",
-                       variant == 0 ? std::string()
-                       : variant == 1
-                         ? " " + without_text
-                         : fmt::format(" with displacement columns of degree {}", resonant_displacement_degree),
+                       variant == 0   ? std::string()
+                       : variant == 1 ? " " + without_text
+                       : variant == 2 ? fmt::format(" with displacement columns of degree {}", resonant_displacement_degree)
+                                      : std::string(" without the rough vertices' columns"),
                        p, f.reissner, energy_error, f.indicator(),
                        sample_error, seconds);
             c[key]["p" + std::to_string(p)] = {{"reissner", f.reissner},
@@ -361,7 +367,8 @@ nlohmann::json run(const verification::DriverContext &context)
     jump_case("pressure_band_ring.json", context, full ? std::vector<int>{8, 12, 16} : std::vector<int>{8, 12},
               full ? std::vector<int>{1, 2, 3} : std::vector<int>{0, 1, 2});
   if (full)
-    results["tapered_hub"] = jump_case("tapered_hub_pressure.json", context, {8, 10, 12, 14}, {0, 1, 2});
+    results["tapered_hub"] = jump_case("tapered_hub_pressure.json", context, {8, 10, 12, 14}, {0, 1, 2},
+                                       "rfm_without_jump_field", "without the jump's field", -1, true);
   // The same hub under the temperature T = 100 r + 100 z [K] instead of the pressure (issue 24
   // item 8; no traction jump, the taper-neck vertex enriched), full mode only: FEM L = 0, 1, 2
   // on graded meshes (0.2, 0.8 and 2.8 s alone), the RFM to p = 16.
