@@ -555,7 +555,7 @@ namespace rfm
           options.extra_gauss_points,
         [&] {
           RectangleCells cells{options.n_cells_r, options.n_cells_z, options.n_graded_layers,
-                               options.grading_ratio};
+                               options.grading_ratio, {}};
           for (const TractionJump &j : jumps_)
             cells.graded_across.push_back(j.vertex());
           return cells;

@@ -869,8 +869,10 @@ namespace rfm
     ASSERT_GT(rough->n_local_columns(), 0);
     for (const VertexEnrichment &v : with.vertex_enrichments())
       if (&v != rough)
-        EXPECT_LE(rough->cutoff_radius() + v.cutoff_radius(),
-                  std::hypot(v.vertex().r - at.r, v.vertex().z - at.z) + 1e-12);
+        {
+          EXPECT_LE(rough->cutoff_radius() + v.cutoff_radius(),
+                    std::hypot(v.vertex().r - at.r, v.vertex().z - at.z) + 1e-12);
+        }
     ASSERT_EQ(with.traction_jumps().size(), 1u);
     EXPECT_EQ(with.traction_jumps()[0].cutoff_radius(), rough->cutoff_radius());
     // Points on the bore (outward normal -e_r) and on the inner arc (centre the origin, the
