@@ -1427,13 +1427,15 @@ namespace rfm
     // The rough vertices (wedge_modes.h) where a traction jumps, last: each keeps its disc
     // clear of those before it. (Where two discs overlap, the partition of unity's shares
     // bend inside each disc's rule along the other's rim: issue 24's hub with its jump
-    // vertex's disc reaching into the taper's gave a Phi_R at p = 12 that moved by 3e-5
-    // between 13, 18, 23 and 33 points a direction, and converged to 1e-10 when kept clear.)
+    // vertex's disc reaching into the taper's gave a Phi_R at p = 12 that moved by 3e-4
+    // between 13, 18, 23, 33 and 43 points a direction (3e-5 among the last four, not
+    // monotonically), and agreed to 2e-10 between 13 and 23 when kept clear.)
     // The jump excites their modes at the jump's size; elsewhere the far field sets them, and
     // on the heated hub of issue 24 (the same 133-degree vertex, free, no jump) they bought
     // little: indicator at p = 16 1.01e-6 without, 9.8e-7 with the modes (19.5 s against
     // 17.0 s), 8.0e-7 with the local columns too (30.6 s). On the pressed hub, with both:
-    // 4.0e-5 -> 1.2e-6 (15.2 s -> 24.9 s); with the modes alone 2.6e-5.
+    // 4.0e-5 -> 1.2e-6 (15.2 s -> 24.9 s), with the modes alone 2.6e-5 (before the edge
+    // rule broke at the rims; with the breaks, both: 2.8e-7 in 28.8 s).
     const std::vector<axisym::Point> jump_points = axisym::traction_jump_vertices(body);
     const std::size_t n_singular = vertices.size();
     if (options.rough_vertices)

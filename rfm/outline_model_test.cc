@@ -849,7 +849,7 @@ namespace rfm
   // depends on the rules' points: 10 more a direction move Phi_R at p = 8 by 2.3e-7 (the
   // section's own rule; 1.8e-7 without the vertex), by 1.1e-5 before the edge rule broke at
   // the disc's rim on the pressed arc, and with the disc reaching into the taper's the
-  // vertex's rule alone moved it by 3e-5 at p = 12. Indicator at p = 8: 2.0e-3 without,
+  // vertex's rule alone moved it by 3e-4 at p = 12. Indicator at p = 8: 2.0e-3 without,
   // 4.9e-5 with (measured).
   TEST(OutlineModel, RoughVertexAtATractionJumpKeepsTheFacesFreeAndConverges)
   {
