@@ -33,6 +33,30 @@
 
 namespace
 {
+  /// The enrichment the model made at x (vertex_enrichment.h), if any.
+  const rfm::VertexEnrichment *enrichment_at(const rfm::OutlineModel &model, const axisym::Point x,
+                                             const double tol)
+  {
+    for (const rfm::VertexEnrichment &e : model.vertex_enrichments())
+      if (std::hypot(e.vertex().r - x.r, e.vertex().z - x.z) <= tol)
+        return &e;
+    return nullptr;
+  }
+
+  /// A vertex's entry in diagnostics.singular_vertices and .rough_vertices: its point, interior
+  /// angle, parts and exponents (real, imaginary), and enrichment (null here).
+  nlohmann::json vertex_entry(const rfm::SingularVertex &v)
+  {
+    nlohmann::json exponents = nlohmann::json::array();
+    for (const rfm::WedgeMode &m : v.modes)
+      exponents.push_back({m.lambda.real(), m.lambda.imag()});
+    return {{"r", v.at.r},
+            {"z", v.at.z},
+            {"angle_degrees", v.angle * 180.0 / 3.14159265358979323846},
+            {"parts", {v.part_before, v.part_after}},
+            {"exponents", exponents},
+            {"enrichment", nullptr}};
+  }
   /// Above this indicator a solve at a fixed degree warns (status "warning", exit 0).
   constexpr double fixed_degree_indicator_limit = 1e-5;
   /// Marks the result as in doubt with `why` (after any warning already there) and says so.
@@ -474,55 +498,48 @@ namespace
         std::size_t n_bare = 0;
         for (const rfm::SingularVertex &v : vertices)
           {
-            nlohmann::json exponents = nlohmann::json::array();
-            for (const rfm::WedgeMode &m : v.modes)
-              exponents.push_back({m.lambda.real(), m.lambda.imag()});
-            // The enrichment at v, if the model made one (vertex_enrichment.h).
-            nlohmann::json enrichment = nullptr;
-            for (const rfm::VertexEnrichment &e : model->vertex_enrichments())
-              if (std::hypot(e.vertex().r - v.at.r, e.vertex().z - v.at.z) <= 1e-9 * problem.body->outline.size())
-                {
-                  enrichment = {{"columns", e.n_columns()},
-                                {"modes", e.modes().size()},
-                                {"cutoff_radius", e.cutoff_radius()},
-                                {"support", e.section_support() ? "section" : "local"},
-                                {"curved_faces", e.curved()}};
-                  // The generalized stress intensities (vertex_intensity.h) over the support;
-                  // not where a face is an arc (the dual modes meet the faces' conditions on
-                  // lines only).
-                  if (e.curved())
-                    enrichment["intensities"] = nullptr,
-                    enrichment["intensity_note"] = "not computed: a face is an arc (the interaction integral "
-                                                   "needs straight faces)";
-                  else if (model->ok())
-                    {
-                      const std::vector<rfm::VertexIntensity> k = rfm::vertex_intensities(
-                        [&](const Eigen::Ref<const Eigen::VectorXd> &r, const Eigen::Ref<const Eigen::VectorXd> &z) {
-                          return model->evaluate(r, z);
-                        },
-                        e, problem, e.cutoff_radius());
-                      for (const rfm::VertexIntensity &x : k)
-                        fmt::print(stderr, "rfm_solve: vertex ({:.6g}, {:.6g}) m: K = {:.6e}{} Pa m^{:.4g} "
-                                           "(lambda = {:.6g})\n",
-                                   v.at.r, v.at.z, x.value.real(),
-                                   x.value.imag() != 0.0 ? fmt::format(" {:+.6e} i", x.value.imag()) : "",
-                                   1.0 - x.lambda.real(), x.lambda.real());
-                      enrichment["intensities"] = rfm::to_json(k);
-                      enrichment["intensity_units"] = "Pa m^(1 - lambda); K of the notch normalization "
-                                                      "sqrt(2 pi) rho^(1 - lambda) sigma_thth(rho, 0) -> K";
-                    }
-                }
+            nlohmann::json entry = vertex_entry(v);
+            nlohmann::json &enrichment = entry["enrichment"];
+            const double tol = 1e-9 * problem.body->outline.size();
+            if (const rfm::VertexEnrichment *found = enrichment_at(*model, v.at, tol))
+              {
+                const rfm::VertexEnrichment &e = *found;
+                enrichment = {{"columns", e.n_columns()},
+                              {"modes", e.modes().size()},
+                              {"cutoff_radius", e.cutoff_radius()},
+                              {"support", e.section_support() ? "section" : "local"},
+                              {"curved_faces", e.curved()}};
+                // The generalized stress intensities (vertex_intensity.h) over the support;
+                // not where a face is an arc (the dual modes meet the faces' conditions on
+                // lines only).
+                if (e.curved())
+                  enrichment["intensities"] = nullptr,
+                  enrichment["intensity_note"] = "not computed: a face is an arc (the interaction integral "
+                                                 "needs straight faces)";
+                else if (model->ok())
+                  {
+                    const std::vector<rfm::VertexIntensity> k = rfm::vertex_intensities(
+                      [&](const Eigen::Ref<const Eigen::VectorXd> &r, const Eigen::Ref<const Eigen::VectorXd> &z) {
+                        return model->evaluate(r, z);
+                      },
+                      e, problem, e.cutoff_radius());
+                    for (const rfm::VertexIntensity &x : k)
+                      fmt::print(stderr, "rfm_solve: vertex ({:.6g}, {:.6g}) m: K = {:.6e}{} Pa m^{:.4g} "
+                                         "(lambda = {:.6g})\n",
+                                 v.at.r, v.at.z, x.value.real(),
+                                 x.value.imag() != 0.0 ? fmt::format(" {:+.6e} i", x.value.imag()) : "",
+                                 1.0 - x.lambda.real(), x.lambda.real());
+                    enrichment["intensities"] = rfm::to_json(k);
+                    enrichment["intensity_units"] = "Pa m^(1 - lambda); K of the notch normalization "
+                                                    "sqrt(2 pi) rho^(1 - lambda) sigma_thth(rho, 0) -> K";
+                  }
+              }
             if (enrichment.is_null())
               {
                 bare = bare ? bare : &v;
                 ++n_bare;
               }
-            list.push_back({{"r", v.at.r},
-                            {"z", v.at.z},
-                            {"angle_degrees", v.angle * 180.0 / 3.14159265358979323846},
-                            {"parts", {v.part_before, v.part_after}},
-                            {"exponents", exponents},
-                            {"enrichment", enrichment}});
+            list.push_back(std::move(entry));
           }
         result["diagnostics"]["singular_vertices"] = list;
         // A vertex with its columns converges like the rest (the indicator sees it); one
@@ -544,15 +561,14 @@ namespace
       {
         nlohmann::json list = nlohmann::json::array();
         for (const axisym::NotchRoot &n : axisym::notch_roots(*problem.body))
-          for (const rfm::VertexEnrichment &e : model->vertex_enrichments())
-            if (e.modes().empty() &&
-                std::hypot(e.vertex().r - n.at.r, e.vertex().z - n.at.z) <= 1e-9 * problem.body->outline.size())
-              list.push_back({{"r", n.at.r},
-                              {"z", n.at.z},
-                              {"angle_degrees", n.angle * 180.0 / 3.14159265358979323846},
-                              {"arc_radius", n.radius},
-                              {"columns", e.n_columns()},
-                              {"cutoff_radius", e.cutoff_radius()}});
+          if (const rfm::VertexEnrichment *e = enrichment_at(*model, n.at, 1e-9 * problem.body->outline.size());
+              e && e->modes().empty())
+            list.push_back({{"r", n.at.r},
+                            {"z", n.at.z},
+                            {"angle_degrees", n.angle * 180.0 / 3.14159265358979323846},
+                            {"arc_radius", n.radius},
+                            {"columns", e->n_columns()},
+                            {"cutoff_radius", e->cutoff_radius()}});
         if (!list.empty())
           result["diagnostics"]["notch_roots"] = list;
       }
@@ -563,22 +579,13 @@ namespace
         nlohmann::json list = nlohmann::json::array();
         for (const rfm::SingularVertex &v : rfm::rough_vertices(*problem.body, problem.material.poisson_ratio))
           {
-            nlohmann::json exponents = nlohmann::json::array();
-            for (const rfm::WedgeMode &m : v.modes)
-              exponents.push_back({m.lambda.real(), m.lambda.imag()});
-            nlohmann::json enrichment = nullptr;
-            for (const rfm::VertexEnrichment &e : model->vertex_enrichments())
-              if (std::hypot(e.vertex().r - v.at.r, e.vertex().z - v.at.z) <= 1e-9 * problem.body->outline.size())
-                enrichment = {{"columns", e.n_columns()},
-                              {"modes", e.modes().size()},
-                              {"cutoff_radius", e.cutoff_radius()},
-                              {"curved_faces", e.curved()}};
-            list.push_back({{"r", v.at.r},
-                            {"z", v.at.z},
-                            {"angle_degrees", v.angle * 180.0 / 3.14159265358979323846},
-                            {"parts", {v.part_before, v.part_after}},
-                            {"exponents", exponents},
-                            {"enrichment", enrichment}});
+            nlohmann::json entry = vertex_entry(v);
+            if (const rfm::VertexEnrichment *e = enrichment_at(*model, v.at, 1e-9 * problem.body->outline.size()))
+              entry["enrichment"] = {{"columns", e->n_columns()},
+                                     {"modes", e->modes().size()},
+                                     {"cutoff_radius", e->cutoff_radius()},
+                                     {"curved_faces", e->curved()}};
+            list.push_back(std::move(entry));
           }
         if (!list.empty())
           result["diagnostics"]["rough_vertices"] = list;
