@@ -383,6 +383,7 @@ namespace rfm
     };
     std::vector<ZoneEdge> edges_;
     std::vector<VertexEnrichment> vertices_;
+    std::vector<bool> rough_; ///< per vertices_: a rough vertex (make_vertex_enrichments)
     std::vector<TractionJump> jumps_;
     std::vector<ResonantVertex> resonances_;
     std::vector<bool> jump_rules_;

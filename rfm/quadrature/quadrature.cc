@@ -296,4 +296,47 @@ namespace rfm
                 cells.end());
     return cells;
   }
+  double disc_partition_step(const double t)
+  {
+    return t < 1.0 ? t * t * t * t * (35.0 - 84.0 * t + 70.0 * t * t - 20.0 * t * t * t) : 1.0;
+  }
+
+  Quadrature2D blend_disc_rules(const Quadrature2D &region, const std::vector<DiscRule> &discs)
+  {
+    std::vector<double> s(discs.size());
+    // 1 + sum_j s_j at (r, z), with the s_j in s.
+    auto shares = [&](const double r, const double z) {
+      double sum = 1.0;
+      for (std::size_t j = 0; j < discs.size(); ++j)
+        {
+          const double rho = std::hypot(r - discs[j].r_c, z - discs[j].z_c) / discs[j].radius;
+          const double step = disc_partition_step(rho * rho);
+          s[j] = step < 1e-300 ? 1e300 : (1.0 - step) / step;
+          sum += s[j];
+        }
+      return sum;
+    };
+    Eigen::Index total = region.n_points();
+    for (const DiscRule &d : discs)
+      total += d.rule.n_points();
+    Quadrature2D out;
+    out.r.resize(total), out.z.resize(total), out.weights.resize(total);
+    Eigen::Index at = 0;
+    for (Eigen::Index k = 0; k < region.n_points(); ++k, ++at)
+      {
+        out.r[at] = region.r[k], out.z[at] = region.z[k];
+        out.weights[at] = region.weights[k] / shares(region.r[k], region.z[k]);
+      }
+    for (std::size_t j = 0; j < discs.size(); ++j)
+      {
+        const Quadrature2D &q = discs[j].rule;
+        for (Eigen::Index k = 0; k < q.n_points(); ++k, ++at)
+          {
+            const double sum = shares(q.r[k], q.z[k]);
+            out.r[at] = q.r[k], out.z[at] = q.z[k];
+            out.weights[at] = q.weights[k] * s[j] / sum;
+          }
+      }
+    return out;
+  }
 } // namespace rfm

@@ -84,4 +84,22 @@ namespace rfm
   Quadrature2D half_disc_gauss(double r_c, double z_c, double rho_0, int n_radial,
                                int n_angular,
                                double z_max = std::numeric_limits<double>::infinity());
+  /// The step of the partition of unity between a disc's rule and the rules around it:
+  /// S(t) of order 3 in t = (rho / rho_0)^2, S = O(t^4) at 0, 1 - O((1 - t)^4) at 1 (three
+  /// continuous derivatives on the rim), 1 from t = 1 on.
+  double disc_partition_step(double t);
+
+  /// A disc's own rule (plain area weights) and the disc it covers.
+  struct DiscRule
+  {
+    Quadrature2D rule;
+    double r_c, z_c, radius;
+  };
+
+  /// One rule from a rule over a whole region and rules over discs inside it: at x the
+  /// region's rule takes the share 1 / (1 + sum_j s_j) of its weight and disc j's rule
+  /// s_j / (1 + sum_j s_j), s_j = (1 - S_j) / S_j with S_j the step at x for disc j (0 outside
+  /// it). Every integrand is counted once, and the region's share vanishes like rho^8 at each
+  /// disc's centre, so that a disc's rule alone takes what is singular or rough there.
+  Quadrature2D blend_disc_rules(const Quadrature2D &region, const std::vector<DiscRule> &discs);
 } // namespace rfm

@@ -167,4 +167,39 @@ namespace rfm
     EXPECT_GT(std::abs(moment(4 * n) - 1.0 / (4 * n + 2)), 1e-12);
     EXPECT_GT(std::abs(moment(1) - 1.0 / 3.0), 1e-6);
   }
+  // A square's tensor rule blended with a full disc's polar rule (two half discs) about its
+  // centre: the blended weights still integrate polynomials over the square, and the disc's
+  // rule alone takes the singularity 1 / rho at the centre, which the square's rule misses.
+  // The square's rule crosses the disc's rim, where the step has three continuous
+  // derivatives: one cell of 40 x 40 points is 2.1e-6 off on the polynomial (measured), of
+  // 80 x 80 2.3e-8 (3.1e-8 on 1 / rho; the square's rule alone 8.9e-3 there).
+  TEST(BlendDiscRules, CountsEveryIntegrandOnceAndLeavesTheCentreToTheDisc)
+  {
+    const double c = 0.5, rho0 = 0.3;
+    const Quadrature2D square = tensor_gauss({0.0, 1.0}, {0.0, 1.0}, 80);
+    Quadrature2D disc = half_disc_gauss(c, c, rho0, 16, 24);
+    const Eigen::Index h = disc.n_points();
+    disc.r.conservativeResize(2 * h), disc.z.conservativeResize(2 * h), disc.weights.conservativeResize(2 * h);
+    disc.r.tail(h) = (2.0 * c - disc.r.head(h).array()).matrix();
+    disc.z.tail(h) = disc.z.head(h), disc.weights.tail(h) = disc.weights.head(h);
+    const Quadrature2D q = blend_disc_rules(square, {{disc, c, c, rho0}});
+    ASSERT_EQ(q.n_points(), square.n_points() + disc.n_points());
+    // int (1 + r)^5 (1 + z)^4 over the unit square: (2^6 - 1) / 6 (2^5 - 1) / 5.
+    double poly = 0.0, singular = 0.0, singular_square = 0.0;
+    for (Eigen::Index k = 0; k < q.n_points(); ++k)
+      {
+        poly += q.weights[k] * std::pow(1.0 + q.r[k], 5) * std::pow(1.0 + q.z[k], 4);
+        singular += q.weights[k] / std::hypot(q.r[k] - c, q.z[k] - c);
+      }
+    for (Eigen::Index k = 0; k < square.n_points(); ++k)
+      singular_square += square.weights[k] / std::hypot(square.r[k] - c, square.z[k] - c);
+    EXPECT_NEAR(poly, 63.0 / 6.0 * 31.0 / 5.0, 1e-7 * 63.0 / 6.0 * 31.0 / 5.0);
+    // int 1 / rho over the square about its centre: 4 asinh(1).
+    const double exact = 4.0 * std::asinh(1.0);
+    EXPECT_NEAR(singular, exact, 1e-7 * exact);
+    EXPECT_GT(std::abs(singular_square - exact), 1e-4 * exact);
+    EXPECT_NEAR(disc_partition_step(0.0), 0.0, 0.0);
+    EXPECT_NEAR(disc_partition_step(1.0), 1.0, 1e-15);
+    EXPECT_EQ(disc_partition_step(1.5), 1.0);
+  }
 } // namespace rfm
