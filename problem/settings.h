@@ -169,9 +169,10 @@ namespace axisym
     /// exponent with 1 < Re lambda < 2) and the prescribed traction jumps, as where issue 24's
     /// hub's inner-arc pressure ends at its bore (133 degrees, lambda = 1.905 +- 0.388 i), the
     /// vertex's modes and smooth local columns as at a singular vertex, in a disc clear of the
-    /// other vertices' discs; the jump's field takes the same disc. Indicator of that hub at
-    /// p = 8 / 12 / 16 / 20: 2.0e-3 / 2.8e-4 / 4.0e-5 / 1.2e-5 without, 4.9e-5 / 6.1e-6 /
-    /// 2.8e-7 / 3.6e-7 with them (7.8e-7 at p = 18). false: none (as before).
+    /// other vertices' discs; the jump's field takes the same disc, and the polynomials'
+    /// products are taken on the disc's rule there too. Indicator of that hub at p = 8 / 12 /
+    /// 16 / 20: 2.0e-3 / 2.8e-4 / 4.0e-5 / 1.2e-5 without, 4.9e-5 / 6.4e-6 / 1.1e-6 / 5.3e-7
+    /// with them, falling at every even p. false: none (as before).
     bool rough_vertices = true;
     /// The displacement space's own upper bound of Phi beside Phi_L(u_h)
     /// (OutlineModel::ritz_lagrange; rfm_solve's functionals.lagrange_ritz and

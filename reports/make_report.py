@@ -1677,7 +1677,9 @@ def traction_jump_rows(corners, out_dir):
           "`axisym::rough_vertices`), the vertex takes its modes and local columns as a singular vertex "
           "does, in a disc clear of the other vertices', which the jump's field shares "
           "(`rfm.rough_vertices`; 'without the rough vertex' switches that off, the jump's field then "
-          "with its own disc). The pressure band's straight jump is a half plane, not rough.", ""]
+          "with its own disc); inside that disc the polynomials' products are taken on the disc's rule "
+          "too, blended with the section's by a partition of unity (`rfm::blend_disc_rules`). The "
+          "pressure band's straight jump is a half plane, not rough.", ""]
     fig, axes = plt.subplots(1, len(cases), figsize=(5 * len(cases), 4), squeeze=False)
     for (key, title), ax in zip(cases, axes[0]):
         c = corners[key]

@@ -217,7 +217,8 @@ namespace rfm
     /// (axisym::notch_roots) gets the smooth local columns alone, in the same form (no modes).
     /// With rfm.rough_vertices, every rough vertex (axisym::rough_vertices) where a traction
     /// jumps gets the modes and local columns as a singular vertex, its disc also clear of
-    /// the other vertices' discs.
+    /// the other vertices' discs; there the polynomials' products are taken on the disc's
+    /// rule too, blended with the section's (blend_disc_rules, quadrature.h).
     const std::vector<VertexEnrichment> &vertex_enrichments() const { return vertices_; }
     /// Traction jumps (traction_jump.h; issue 24 item 4): at every vertex of the outline off
     /// the axis between two traction parts (free, pressure, traction; no die) whose tractions

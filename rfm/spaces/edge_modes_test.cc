@@ -160,8 +160,10 @@ namespace rfm
             EXPECT_NEAR(v.u_r, w.u_r, 1e-7 * u_scale) << n << " " << rho;
             EXPECT_NEAR(v.u_z, w.u_z, 1e-7 * u_scale) << n << " " << rho;
             if (n == 1)
-              EXPECT_NEAR(v.u_r * f.n[0] + v.u_z * f.n[1], (kappa + 1) * std::sqrt(rho) / (2 * mu),
-                          1e-12 * u_scale);
+              {
+                EXPECT_NEAR(v.u_r * f.n[0] + v.u_z * f.n[1], (kappa + 1) * std::sqrt(rho) / (2 * mu),
+                            1e-12 * u_scale);
+              }
           }
   }
 

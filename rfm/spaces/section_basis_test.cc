@@ -219,9 +219,13 @@ TEST(SectionBasis, EvenInRSpansThePolynomialsInRSquared)
                              });
         EXPECT_LT(res[0], 1e-12) << i << " " << j;
         if (i > 0)
-          EXPECT_LT(res[1], 1e-10) << i << " " << j;
+          {
+            EXPECT_LT(res[1], 1e-10) << i << " " << j;
+          }
         if (j > 0)
-          EXPECT_LT(res[2], 1e-10) << i << " " << j;
+          {
+            EXPECT_LT(res[2], 1e-10) << i << " " << j;
+          }
       }
   auto zero = [](double, double) { return 0.0; };
   EXPECT_GT(fit([](double r, double) { return r; }, zero, zero)[0], 1e-3);

@@ -312,8 +312,10 @@ namespace rfm
             EXPECT_NEAR(a.d_r, -b.d_r, 1e-13) << e;
             EXPECT_NEAR(a.d_z, b.d_z, 1e-13) << e;
             if (s.omegas()[e].edge().kind == axisym::OutlineEdge::Kind::line)
-              EXPECT_NEAR(s.omegas()[e].edge_coordinate(r[k], z[k]).value,
-                          s.omegas()[e].edge_coordinate(-r[k], z[k]).value, 1e-14) << e;
+              {
+                EXPECT_NEAR(s.omegas()[e].edge_coordinate(r[k], z[k]).value,
+                            s.omegas()[e].edge_coordinate(-r[k], z[k]).value, 1e-14) << e;
+              }
             plain_even &= std::abs(plain.omegas()[e](r[k], z[k]).value -
                                    plain.omegas()[e](-r[k], z[k]).value) < 1e-15;
           }
