@@ -846,10 +846,13 @@ namespace rfm
   // arc's pressure ends at the bore at 133.4 degrees (lambda = 1.905 +- 0.388 i). Its columns
   // keep both faces free (the pressure is the particular solution's), its disc stays clear
   // of the other vertices' discs and the jump takes the same one, and the energy hardly
-  // depends on the rules' points: 10 more a direction move Phi_R at p = 8 by 2.3e-7 (the
-  // section's own rule; 1.8e-7 without the vertex), by 1.1e-5 before the edge rule broke at
-  // the disc's rim on the pressed arc, and with the disc reaching into the taper's the
-  // vertex's rule alone moved it by 3e-4 at p = 12. Indicator at p = 8: 2.0e-3 without,
+  // depends on the rules' points: 10 more a direction move Phi_R at p = 8 by 7.7e-7 (the
+  // section's own rule, whose share in the disc, blend_disc_rules, is a polynomial of degree
+  // 14 that its 20 points a direction do not integrate exactly with the products of degree
+  // 32: 2.4e-7 with the polynomials on the section's rule alone, 1.8e-7 without the vertex;
+  // at p = 16 the other way round, 1.8e-8 against 5.8e-7), by 1.1e-5 before the edge rule
+  // broke at the disc's rim on the pressed arc, and with the disc reaching into the taper's
+  // the vertex's rule alone moved it by 3e-4 at p = 12. Indicator at p = 8: 2.0e-3 without,
   // 4.9e-5 with (measured).
   TEST(OutlineModel, RoughVertexAtATractionJumpKeepsTheFacesFreeAndConverges)
   {
