@@ -278,7 +278,6 @@ namespace rfm
           room = std::min(room, e.distance_to(x));
       return room;
     }
-
   } // namespace
 
   std::string axis_parity_obstacle(const axisym::Problem &problem, const DiscretizationOptions &options)
@@ -577,7 +576,7 @@ namespace rfm
     // partition of unity as the near rules. Issue 24's pressed hub at p = 16: ten more
     // Gauss points a direction on the section moved Phi_R by 5.8e-7 of it, 1.8e-8 so; the
     // sample (0.8, 0) 0.19 % below the FEM's, 0.04 % above; Phi_C, above the FEM's limit
-    // by 5.6e-7 (a defect of equilibrium), below it by 5.2e-7, so that the indicator
+    // by 5.9e-7 (a defect of equilibrium), below it by 5.3e-7, so that the indicator
     // (2.8e-7, 1.1e-6 so) bounds the energy error again. Not at the other vertices: on the
     // clamped cylinder (tensor rule in r^2) it took the indicator at p = 12 from 1.1e-8 to
     // 4.9e-5 (20 more directions dropped), and the stepped shaft and ring (section support)

@@ -296,6 +296,7 @@ namespace rfm
                 cells.end());
     return cells;
   }
+
   double disc_partition_step(const double t)
   {
     return t < 1.0 ? t * t * t * t * (35.0 - 84.0 * t + 70.0 * t * t - 20.0 * t * t * t) : 1.0;

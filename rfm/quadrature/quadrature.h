@@ -84,6 +84,7 @@ namespace rfm
   Quadrature2D half_disc_gauss(double r_c, double z_c, double rho_0, int n_radial,
                                int n_angular,
                                double z_max = std::numeric_limits<double>::infinity());
+
   /// The step of the partition of unity between a disc's rule and the rules around it:
   /// S(t) of order 3 in t = (rho / rho_0)^2, S = O(t^4) at 0, 1 - O((1 - t)^4) at 1 (three
   /// continuous derivatives on the rim), 1 from t = 1 on.

@@ -167,6 +167,7 @@ namespace rfm
     EXPECT_GT(std::abs(moment(4 * n) - 1.0 / (4 * n + 2)), 1e-12);
     EXPECT_GT(std::abs(moment(1) - 1.0 / 3.0), 1e-6);
   }
+
   // A square's tensor rule blended with a full disc's polar rule (two half discs) about its
   // centre: the blended weights still integrate polynomials over the square, and the disc's
   // rule alone takes the singularity 1 / rho at the centre, which the square's rule misses.
