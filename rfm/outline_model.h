@@ -74,6 +74,7 @@
 #include "rfm/structures/outline_structures.h"
 
 #include <array>
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -220,6 +221,14 @@ namespace rfm
     /// the other vertices' discs; there the polynomials' products are taken on the disc's
     /// rule too, blended with the section's (blend_disc_rules, quadrature.h).
     const std::vector<VertexEnrichment> &vertex_enrichments() const { return vertices_; }
+    /// The vertex enrichment at x (within tol of its vertex), or nullptr.
+    const VertexEnrichment *vertex_enrichment_at(const axisym::Point &x, double tol) const
+    {
+      for (const VertexEnrichment &e : vertices_)
+        if (std::hypot(e.vertex().r - x.r, e.vertex().z - x.z) <= tol)
+          return &e;
+      return nullptr;
+    }
     /// Traction jumps (traction_jump.h; issue 24 item 4): at every vertex of the outline off
     /// the axis between two traction parts (free, pressure, traction; no die) whose tractions
     /// no constant stress meets, the loaded wedge's stress S of degree 0, added as

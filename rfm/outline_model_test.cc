@@ -862,10 +862,7 @@ namespace rfm
     const OutlineModel with(problem, o);
     ASSERT_TRUE(with.ok()) << with.summary().message;
     const axisym::Point at{0.55, 0.5809475019311126};
-    const VertexEnrichment *rough = nullptr;
-    for (const VertexEnrichment &v : with.vertex_enrichments())
-      if (std::hypot(v.vertex().r - at.r, v.vertex().z - at.z) < 1e-12)
-        rough = &v;
+    const VertexEnrichment *rough = with.vertex_enrichment_at(at, 1e-12);
     ASSERT_NE(rough, nullptr);
     EXPECT_FALSE(rough->modes().empty());
     EXPECT_TRUE(rough->curved());
@@ -991,10 +988,7 @@ namespace rfm
     const OutlineModel m(problem, o);
     ASSERT_TRUE(m.ok()) << m.summary().message;
     const axisym::Point v{1.0875693444439798, 0.5071419140888394};
-    const VertexEnrichment *arc_vertex = nullptr;
-    for (const VertexEnrichment &e : m.vertex_enrichments())
-      if (std::hypot(e.vertex().r - v.r, e.vertex().z - v.z) < 1e-9)
-        arc_vertex = &e;
+    const VertexEnrichment *arc_vertex = m.vertex_enrichment_at(v, 1e-9);
     ASSERT_NE(arc_vertex, nullptr);
     EXPECT_TRUE(arc_vertex->curved());
     EXPECT_FALSE(arc_vertex->section_support());

@@ -33,16 +33,6 @@
 
 namespace
 {
-  /// The enrichment the model made at x (vertex_enrichment.h), if any.
-  const rfm::VertexEnrichment *enrichment_at(const rfm::OutlineModel &model, const axisym::Point x,
-                                             const double tol)
-  {
-    for (const rfm::VertexEnrichment &e : model.vertex_enrichments())
-      if (std::hypot(e.vertex().r - x.r, e.vertex().z - x.z) <= tol)
-        return &e;
-    return nullptr;
-  }
-
   /// A vertex's entry in diagnostics.singular_vertices and .rough_vertices: its point, interior
   /// angle, parts and exponents (real, imaginary), and enrichment (null here).
   nlohmann::json vertex_entry(const rfm::SingularVertex &v)
@@ -501,7 +491,7 @@ namespace
             nlohmann::json entry = vertex_entry(v);
             nlohmann::json &enrichment = entry["enrichment"];
             const double tol = 1e-9 * problem.body->outline.size();
-            if (const rfm::VertexEnrichment *found = enrichment_at(*model, v.at, tol))
+            if (const rfm::VertexEnrichment *found = model->vertex_enrichment_at(v.at, tol))
               {
                 const rfm::VertexEnrichment &e = *found;
                 enrichment = {{"columns", e.n_columns()},
@@ -561,7 +551,7 @@ namespace
       {
         nlohmann::json list = nlohmann::json::array();
         for (const axisym::NotchRoot &n : axisym::notch_roots(*problem.body))
-          if (const rfm::VertexEnrichment *e = enrichment_at(*model, n.at, 1e-9 * problem.body->outline.size());
+          if (const rfm::VertexEnrichment *e = model->vertex_enrichment_at(n.at, 1e-9 * problem.body->outline.size());
               e && e->modes().empty())
             list.push_back({{"r", n.at.r},
                             {"z", n.at.z},
@@ -580,7 +570,7 @@ namespace
         for (const rfm::SingularVertex &v : rfm::rough_vertices(*problem.body, problem.material.poisson_ratio))
           {
             nlohmann::json entry = vertex_entry(v);
-            if (const rfm::VertexEnrichment *e = enrichment_at(*model, v.at, 1e-9 * problem.body->outline.size()))
+            if (const rfm::VertexEnrichment *e = model->vertex_enrichment_at(v.at, 1e-9 * problem.body->outline.size()))
               entry["enrichment"] = {{"columns", e->n_columns()},
                                      {"modes", e->modes().size()},
                                      {"cutoff_radius", e->cutoff_radius()},

@@ -24,6 +24,15 @@ namespace
     return axisym::testing::run_command(std::string(RFM_SOLVE) + " " + args);
   }
 
+  /// An empty directory for one test's files: <temp>/rfm_cli_<name>.
+  fs::path scratch(const std::string &name)
+  {
+    const fs::path dir = fs::temp_directory_path() / ("rfm_cli_" + name);
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+  }
+
   nlohmann::json valid()
   {
     return nlohmann::json::parse(R"({
@@ -244,9 +253,7 @@ namespace
   // three functionals, and the VTU with cells inside the section only.
   TEST(RfmSolveCli, OutlineSectionSolves)
   {
-    const fs::path dir = fs::temp_directory_path() / "rfm_cli_outline";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const fs::path dir = scratch("outline");
     const fs::path in = dir / "problem.json", out = dir / "result.json";
     std::ofstream(in) << sphere_with("/samples", {{0.15, 0.0}});
     const Outcome o = run(in.string() + " --degree 10 --output " + out.string() + " --vtu " +
@@ -264,9 +271,7 @@ namespace
   // the option off it has none and is not listed.
   TEST(RfmSolveCli, NotchRootIsListedWithItsColumns)
   {
-    const fs::path dir = fs::temp_directory_path() / "rfm_cli_notch";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const fs::path dir = scratch("notch");
     const fs::path in = dir / "problem.json", out = dir / "result.json";
     nlohmann::json problem = axisym::testing::grooved_shaft();
     std::ofstream(in) << problem;
@@ -295,9 +300,7 @@ namespace
   // is listed without them.
   TEST(RfmSolveCli, RoughVertexIsListedWithItsColumns)
   {
-    const fs::path dir = fs::temp_directory_path() / "rfm_cli_rough";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const fs::path dir = scratch("rough");
     const fs::path in = dir / "problem.json", out = dir / "result.json";
     nlohmann::json problem = axisym::testing::tapered_hub();
     std::ofstream(in) << problem;
@@ -333,9 +336,7 @@ namespace
   // it), and the indicator with it not above the other.
   TEST(RfmSolveCli, RitzBoundIsWrittenBesideTheFunctionals)
   {
-    const fs::path dir = fs::temp_directory_path() / "rfm_cli_ritz";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const fs::path dir = scratch("ritz");
     const fs::path in = dir / "problem.json", out = dir / "result.json";
     std::ofstream(in) << sphere_with("/samples", {{0.15, 0.0}});
     const Outcome o = run(in.string() + " --degree 6 --ritz-bound --output " + out.string());
@@ -359,9 +360,7 @@ namespace
   // rfm.tolerance 1e-3 chooses (a tolerance run says nothing more: it asked for that).
   TEST(RfmSolveCli, FixedDegreeWithALargeIndicatorWarns)
   {
-    const fs::path dir = fs::temp_directory_path() / "rfm_cli_fixed_degree";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const fs::path dir = scratch("fixed_degree");
     const fs::path in = dir / "problem.json", out = dir / "result.json";
     std::ofstream(in) << sphere_with("/samples", {{0.15, 0.0}});
     for (const auto &[args, status] : {std::pair{"--degree 4", "warning"}, std::pair{"--degree 10", "ok"},
@@ -387,9 +386,7 @@ namespace
   // p = 16 warns that it grows and why; p = 12 (3.6e-8, 2.6 times below p = 10's) does not.
   TEST(RfmSolveCli, FixedDegreeWithAGrowingIndicatorWarns)
   {
-    const fs::path dir = fs::temp_directory_path() / "rfm_cli_growing";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const fs::path dir = scratch("growing");
     const fs::path in = dir / "problem.json", out = dir / "result.json";
     // verification/problems/clamped_cylinder_tension.json without its samples, without the
     // axis parity and with the vertex's smooth stress columns of degree 4 (the defaults this
@@ -443,9 +440,7 @@ namespace
   // switched off the vertex warns.
   TEST(RfmSolveCli, SingularVertexWarnsWithoutItsColumns)
   {
-    const fs::path dir = fs::temp_directory_path() / "rfm_cli_vertex";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const fs::path dir = scratch("vertex");
     const fs::path in = dir / "problem.json", out = dir / "result.json";
     nlohmann::json problem = axisym::testing::stepped_ring();
     std::ofstream(in) << problem.dump();
@@ -503,9 +498,7 @@ namespace
   // refused (exit 2) until the outline RFM has it.
   TEST(RfmSolveCli, OutlineDieOnAGivenZone)
   {
-    const fs::path dir = fs::temp_directory_path() / "rfm_cli_outline_die";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const fs::path dir = scratch("outline_die");
     nlohmann::json j = axisym::testing::paper_die_outline();
     j["contact"] = {{"method", "fixed"}};
     const fs::path in = dir / "problem.json", out = dir / "result.json";
@@ -561,9 +554,7 @@ namespace
   // zone with two free ends. (Its own test: the sanitizers' run stays short.)
   TEST(RfmSolveCli, IterateOnAnOutlineDie)
   {
-    const fs::path dir = fs::temp_directory_path() / "rfm_cli_outline_iterate";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const fs::path dir = scratch("outline_iterate");
     nlohmann::json j = axisym::testing::paper_die_outline();
     const fs::path in = dir / "problem.json", out = dir / "result.json";
     // p = 6 keeps it short under the sanitizers (measured: c 1.6e-5 from the FEM's, 27 solves).
@@ -601,9 +592,7 @@ namespace
   // with contact.method fixed (no local boxes: quick); iterate searches one die: bad input.
   TEST(RfmSolveCli, SeveralDiesAreAllInTheResult)
   {
-    const fs::path dir = fs::temp_directory_path() / "rfm_cli_dies";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const fs::path dir = scratch("dies");
     nlohmann::json j = axisym::testing::cylinder_between_two_dies();
     j["rfm"]["local_levels"] = 0;
     j["contact"] = {{"method", "fixed"}, {"half_width", 0.005}};
@@ -640,9 +629,7 @@ namespace
   // the displacement as one vector; a DIR that is a file is bad input.
   TEST(RfmSolveCli, VtuCreatesTheFolderAndWritesTheFields)
   {
-    const fs::path dir = fs::temp_directory_path() / "rfm_cli_vtu";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const fs::path dir = scratch("vtu");
     const fs::path in = dir / "problem.json", vtu = dir / "new" / "nested";
     std::ofstream(in) << valid().dump();
     Outcome o = run(in.string() + " --vtu " + vtu.string());

@@ -100,6 +100,15 @@ namespace rfm
     for (int f = 0; f < 2; ++f)
       if (face[f] == WedgeFace::symmetry)
         vector_families_.push_back({t[f], constrained(1 - f)});
+    // A complex pair's two columns, Re and Im of rho^lambda F, mix under a change of the unit
+    // of length (rho^(i b) turns by b log s): they are taken of (rho / rho_0)^(i b) rho^a F
+    // instead, the same span, so that the orthonormalization's cut keeps the same directions
+    // in any unit (issue 24's hub at 133 degrees, lambda = 1.905 + 0.388 i: stresses at p = 8
+    // 1.3e-4 of the largest apart between metres and decimetres).
+    column_modes_ = modes_;
+    for (WedgeMode &mode : column_modes_)
+      if (mode.lambda.imag() != 0.0)
+        mode.a *= std::exp(std::complex<double>(0.0, -mode.lambda.imag() * std::log(cutoff_radius_)));
   }
 
   Eigen::Index VertexEnrichment::n_local_columns() const
@@ -164,15 +173,8 @@ namespace rfm
           }
         const double c_turn = std::cos(turn), s_turn = std::sin(turn);
         std::size_t f = 0;
-        for (WedgeMode mode : modes_)
+        for (const WedgeMode &mode : column_modes_)
           {
-            // A complex pair's two columns, Re and Im of rho^lambda F, mix under a change of the
-            // unit of length (rho^(i b) turns by b log s): they are taken of (rho / rho_0)^(i b)
-            // rho^a F instead, the same span, so that the orthonormalization's cut keeps the same
-            // directions in any unit (issue 24's hub at 133 degrees, lambda = 1.905 + 0.388 i:
-            // stresses at p = 8 1.3e-4 of the largest apart between metres and decimetres).
-            if (mode.lambda.imag() != 0.0)
-              mode.a *= std::exp(std::complex<double>(0.0, -mode.lambda.imag() * std::log(cutoff_radius_)));
             const bool singular = mode.lambda.real() < 1.0;
             WedgeFieldValues v{}, v_mapped{};
             if (rho > 0.0)

@@ -247,6 +247,7 @@ namespace rfm
     double beta_; ///< the bisector's angle in the (r, z) plane
     Wedge wedge_;
     std::vector<WedgeMode> modes_;
+    std::vector<WedgeMode> column_modes_; ///< modes_ as the columns take them (the constructor)
     double cutoff_radius_;
     Material material_;
     int multiplier_degree_;
