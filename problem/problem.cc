@@ -675,7 +675,7 @@ namespace axisym
                               "vertex_cutoff", "vertex_local_degree",
                               "vertex_local_displacement_degree", "vertex_support",
                               "resonant_displacement_degree", "axis_parity", "notch_roots",
-                              "rough_vertices", "ritz_bound"});
+                              "rough_vertices", "ritz_bound", "vertex_shadow"});
         if (r.has("degree") && r.has("tolerance"))
           fail("rfm", top.at("rfm"), "give rfm.degree (fixed p) or rfm.tolerance (p rises "
                                      "until the indicator is below it), not both");
@@ -752,6 +752,12 @@ namespace axisym
             if (!r.at("rough_vertices").is_boolean())
               fail("rfm.rough_vertices", r.at("rough_vertices"), "must be true or false");
             p.rfm.rough_vertices = r.at("rough_vertices").get<bool>();
+          }
+        if (r.has("vertex_shadow"))
+          {
+            if (!r.at("vertex_shadow").is_boolean())
+              fail("rfm.vertex_shadow", r.at("vertex_shadow"), "must be true or false");
+            p.rfm.vertex_shadow = r.at("vertex_shadow").get<bool>();
           }
         if (r.has("ritz_bound"))
           {

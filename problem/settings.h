@@ -174,6 +174,15 @@ namespace axisym
     /// 16 / 20: 2.0e-3 / 2.8e-4 / 4.0e-5 / 1.2e-5 without, 4.9e-5 / 6.4e-6 / 1.1e-6 / 5.3e-7
     /// with them, falling at every even p. false: none (as before).
     bool rough_vertices = true;
+    /// The hoop shadow at singular vertices (rfm/spaces/wedge_shadow.h): each vertex mode's
+    /// first axisymmetric correction rho^(lambda + 1) V(theta), from the hoop terms of the
+    /// equations and the curvature of arc faces, as one more column per mode; its angular
+    /// function solves the wedge's inhomogeneous problem (Chebyshev collocation). Not at rough
+    /// vertices, nor where lambda + 1 lies within 0.1 of another exponent, nor at a re-entrant
+    /// vertex between lines that keeps its disc (OutlineModel; README). Indicator at p = 16
+    /// without -> with: the clamped cylinder 3.2e-9 -> 9.6e-10, the stepped ring 6.6e-8 ->
+    /// 4.9e-8, the stepped shaft 4.4e-6 -> 3.6e-6.
+    bool vertex_shadow = true;
     /// The displacement space's own upper bound of Phi beside Phi_L(u_h)
     /// (OutlineModel::ritz_lagrange; rfm_solve's functionals.lagrange_ritz and
     /// indicator_ritz): a displacement-only Ritz solve on the columns of u_h after the mixed

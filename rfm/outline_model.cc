@@ -1559,6 +1559,13 @@ namespace rfm
                 set_section_support(vertices_.back(), body, a, l);
               }
           }
+        // The hoop shadow (rfm.vertex_shadow; problem/settings.h) at singular vertices, but
+        // not at a re-entrant one between lines that keeps its disc: measured there (the
+        // stepped ring with rfm.vertex_support local) the indicator at p = 16 went from
+        // 1.2e-6 to 4.1e-6 with it, for reasons not understood yet.
+        const bool reentrant_disc = !curved && !vertices_.back().section_support() &&
+                                    v.angle > 3.14159265358979323846 * (1.0 + 1e-9);
+        vertices_.back().set_hoop_shadow(options.vertex_shadow && !rough && !reentrant_disc);
         // The traces on the faces integrate graded toward v.
         for (std::size_t e = 0; e < split.edges().size(); ++e)
           {

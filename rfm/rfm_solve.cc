@@ -498,7 +498,8 @@ namespace
                               {"modes", e.modes().size()},
                               {"cutoff_radius", e.cutoff_radius()},
                               {"support", e.section_support() ? "section" : "local"},
-                              {"curved_faces", e.curved()}};
+                              {"curved_faces", e.curved()},
+                              {"hoop_shadow", e.hoop_shadow()}};
                 // The generalized stress intensities (vertex_intensity.h) over the support;
                 // not where a face is an arc (the dual modes meet the faces' conditions on
                 // lines only).
@@ -574,7 +575,8 @@ namespace
               entry["enrichment"] = {{"columns", e->n_columns()},
                                      {"modes", e->modes().size()},
                                      {"cutoff_radius", e->cutoff_radius()},
-                                     {"curved_faces", e->curved()}};
+                                     {"curved_faces", e->curved()},
+                                     {"hoop_shadow", e->hoop_shadow()}};
             list.push_back(std::move(entry));
           }
         if (!list.empty())

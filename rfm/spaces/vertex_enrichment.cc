@@ -111,6 +111,18 @@ namespace rfm
         mode.a *= std::exp(std::complex<double>(0.0, -mode.lambda.imag() * std::log(cutoff_radius_)));
   }
 
+  void VertexEnrichment::set_hoop_shadow(const bool on)
+  {
+    shadows_.clear();
+    if (!on)
+      return;
+    for (const WedgeMode &mode : column_modes_)
+      shadows_.emplace_back(wedge_, mode, beta_, at_.r, material_.poisson_ratio, frame_ ? &*frame_ : nullptr);
+    // None at all (every mode near a resonance): no columns.
+    if (std::none_of(shadows_.begin(), shadows_.end(), [](const WedgeShadow &s) { return s.valid(); }))
+      shadows_.clear();
+  }
+
   Eigen::Index VertexEnrichment::n_local_columns() const
   {
     if (local_degree_ < 0)
@@ -145,6 +157,7 @@ namespace rfm
       double s[4], e[3], u[2];
     };
     std::vector<Field> fields(static_cast<std::size_t>(n_fields()));
+    std::vector<Field> shadow_fields(fields.size()); // the hoop shadows (set_hoop_shadow)
     const bool wide = section_support();
     VertexFactors factors;
     if (wide)
@@ -210,6 +223,42 @@ namespace rfm
                   }
                 for (int comp = 0; comp < 4; ++comp)
                   fl.s[comp] = s[comp];
+                // The hoop shadow: displacement and strains at the point, the stresses T at
+                // the mapped angle and turned on curved faces (wedge_shadow.h).
+                Field &sh = shadow_fields[f];
+                sh = Field{};
+                const std::size_t mi = static_cast<std::size_t>(&mode - column_modes_.data());
+                if (mi < shadows_.size() && shadows_[mi].valid() && rho > 0.0)
+                  {
+                    const WedgeShadow::Values sv = shadows_[mi].evaluate(rho, theta);
+                    const WedgeShadow::Values st = frame_ ? shadows_[mi].evaluate(rho, theta_m) : sv;
+                    auto take = [&](const std::complex<double> x) { return part == 0 ? x.real() : x.imag(); };
+                    const double c = std::cos(phi), sn = std::sin(phi);
+                    const double u_p = take(sv.u[0]), u_q = take(sv.u[1]);
+                    const double e_pp = take(sv.e[0]), e_qq = take(sv.e[1]), g_pq = take(sv.e[2]);
+                    const double t_pp = take(st.t[0]), t_qq = take(st.t[1]), t_pq = take(st.t[2]);
+                    const double cm = std::cos(phi_m), sm = std::sin(phi_m);
+                    double s_xx = t_pp * cm * cm + t_qq * sm * sm - 2.0 * t_pq * cm * sm;
+                    double s_yy = t_pp * sm * sm + t_qq * cm * cm + 2.0 * t_pq * cm * sm;
+                    double s_xy = (t_pp - t_qq) * cm * sm + t_pq * (cm * cm - sm * sm);
+                    if (frame_)
+                      {
+                        const double ct = c_turn, st_ = s_turn;
+                        const double xx = ct * ct * s_xx - 2.0 * ct * st_ * s_xy + st_ * st_ * s_yy;
+                        const double yy = st_ * st_ * s_xx + 2.0 * ct * st_ * s_xy + ct * ct * s_yy;
+                        const double xy = ct * st_ * (s_xx - s_yy) + (ct * ct - st_ * st_) * s_xy;
+                        s_xx = xx, s_yy = yy, s_xy = xy;
+                      }
+                    sh.s[rr] = s_xx;
+                    sh.s[zz] = s_yy;
+                    sh.s[rz] = s_xy;
+                    sh.s[tt] = nu * (s_xx + s_yy); // the hoop term is added with the column's u_r
+                    sh.e[0] = (e_pp * c * c + e_qq * sn * sn - g_pq * sn * c) / mu;
+                    sh.e[1] = (e_pp * sn * sn + e_qq * c * c + g_pq * sn * c) / mu;
+                    sh.e[2] = (2.0 * (e_pp - e_qq) * sn * c + g_pq * (c * c - sn * sn)) / mu;
+                    sh.u[0] = (u_p * c - u_q * sn) / mu;
+                    sh.u[1] = (u_p * sn + u_q * c) / mu;
+                  }
               }
           }
         // grad chi = chi'(rho) (dr, dz) / rho (chi'(0) = 0).
@@ -227,15 +276,16 @@ namespace rfm
             xi_pow[i] = xi_pow[i - 1] * xi_m;
             eta_pow[i] = eta_pow[i - 1] * eta_m;
           }
+        const int last = d + (shadows_.empty() ? 0 : 1); // the shadow after the monomials
         for (std::size_t j = 0; j < fields.size(); ++j)
           {
-            const Field &fl = fields[j];
             Eigen::Index col = static_cast<Eigen::Index>(j) * per;
-            for (int deg = 0; deg <= d; ++deg)
-              for (int b = 0; b <= deg; ++b, ++col)
+            for (int deg = 0; deg <= last; ++deg)
+              for (int b = 0; b <= (deg > d ? 0 : deg); ++b, ++col)
                 {
-                  // g = f xi^a eta^b (a + b = deg) and its gradient.
-                  const int a = deg - b;
+                  const Field &fl = deg > d ? shadow_fields[j] : fields[j];
+                  // g = f xi^a eta^b (a + b = deg; the shadow's 1) and its gradient.
+                  const int a = deg > d ? 0 : deg - b;
                   const double mono = xi_pow[a] * eta_pow[b];
                   const double mono_r = a > 0 ? a * xi_pow[a - 1] * eta_pow[b] / mode_scale : 0.0;
                   const double mono_z = b > 0 ? b * xi_pow[a] * eta_pow[b - 1] / mode_scale : 0.0;
@@ -393,6 +443,8 @@ namespace rfm
         throw std::invalid_argument("VertexEnrichment::set_curved_faces: a curved face must be a traction face");
     if (frame.curved())
       frame_ = frame;
+    if (!shadows_.empty())
+      set_hoop_shadow(true); // with the faces' curvature
   }
 
   Quadrature2D VertexEnrichment::near_rule(const int n_radial, const int n_angular,

@@ -72,6 +72,7 @@
 #include "rfm/quadrature/quadrature.h"
 #include "rfm/spaces/edge_modes.h"
 #include "rfm/spaces/wedge_frame.h"
+#include "rfm/spaces/wedge_shadow.h"
 #include "problem/wedge_modes.h"
 
 #include <Eigen/Core>
@@ -160,10 +161,10 @@ namespace rfm
     Eigen::Index n_fields() const;
     Eigen::Index columns_per_field() const
     {
-      return (multiplier_degree_ + 1) * (multiplier_degree_ + 2) / 2;
+      return (multiplier_degree_ + 1) * (multiplier_degree_ + 2) / 2 + (shadows_.empty() ? 0 : 1);
     }
     /// Columns: for each field (modes in order; real part, then imaginary part) every
-    /// monomial, ordered by i + j, then by j.
+    /// monomial, ordered by i + j, then by j, and last its hoop shadow (set_hoop_shadow).
     Eigen::Index n_mode_columns() const { return n_fields() * columns_per_field(); }
     /// The local stress columns after the modes' (local_degree >= 0): chi q T with q a
     /// monomial xi^i eta^j (i + j <= local_degree) and T one of the smooth tensor families
@@ -219,6 +220,16 @@ namespace rfm
     /// and no curved face is clamped or a symmetry line.
     void set_curved_faces(const WedgeFrame &frame);
     bool curved() const { return frame_.has_value(); }
+
+    /// The hoop shadow (wedge_shadow.h): each field gets one more column after its
+    /// monomials', its first axisymmetric correction u1 ~ rho^(lambda + 1) V(theta) (the
+    /// hoop terms, and the faces' curvature where they are arcs: set_curved_faces first, or
+    /// again after it) times the cutoff or the section support's factors; its stresses are
+    /// traction free on the faces like the mode's. A zero column where lambda + 1 lies near
+    /// another exponent of the wedge (WedgeShadow::valid), none at all if that holds for
+    /// every mode (hoop_shadow() false then).
+    void set_hoop_shadow(bool on);
+    bool hoop_shadow() const { return !shadows_.empty(); }
 
     /// A circle of the section (another rule's disc) across which the integrands that the
     /// section rule takes have a kink (the partition of unity's shares).
@@ -276,5 +287,6 @@ namespace rfm
     std::vector<VectorFamily> vector_families_;
     std::array<double, 2> normal_[2]; ///< unit normals of the leaving, arriving face
     std::optional<WedgeFrame> frame_;  ///< set: a face is an arc
+    std::vector<WedgeShadow> shadows_; ///< per column mode (set_hoop_shadow)
   };
 } // namespace rfm

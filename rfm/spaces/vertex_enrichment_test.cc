@@ -538,6 +538,90 @@ namespace rfm
     EXPECT_LE((s.u[1] - m.u[1]).cwiseAbs().maxCoeff(), 0.0);
   }
 
+  // The hoop shadow at a curved vertex (wedge_shadow.h): its columns keep the arc and the
+  // line traction free exactly; and the mode's displacement with its shadow displacement,
+  // through the axisymmetric Hooke's law (e_tt = u_r / r), leaves a traction on the arc of
+  // one order of rho less than the mode's alone (the shadow's curvature and hoop terms), the
+  // check of its face condition against the body itself.
+  TEST(VertexEnrichment, HoopShadowAtACurvedVertex)
+  {
+    // The hub's arc, with a line leaving its end so that the interior angle is 240 degrees
+    // (lambda = 0.616; at the hub's 186 degrees lambda + 1 lies near the next exponents and
+    // the shadow is left out: wedge_shadow.h).
+    ArcCase c;
+    const double d0 = (295.0 - 240.0) * pi / 180.0;
+    c.taper.end = {c.arc.end.r + 0.5 * std::cos(d0), c.arc.end.z + 0.5 * std::sin(d0)};
+    ASSERT_NEAR(c.angle() * 180.0 / pi, 240.0, 0.01);
+    // A wide disc: the cutoff's gradient times u adds a traction of order (rho / rho_0)^3,
+    // which should stay below the one checked here.
+    VertexEnrichment v = make_curved(c, 0.5, true);
+    v.set_hoop_shadow(true);
+    ASSERT_TRUE(v.hoop_shadow());
+    const Eigen::Index per = v.columns_per_field();
+    const Material m = steel();
+    const double mu = m.youngs_modulus / (2 * (1 + m.poisson_ratio)), lame = 2 * mu * 0.3 / 0.4;
+    const double phi_v = std::atan2(c.arc.end.z, c.arc.end.r);
+    const axisym::Point t = c.taper.tangent_at(0.0);
+    // Every column free on the arc and the line.
+    {
+      const int n = 6;
+      Eigen::VectorXd r_arc(n), z_arc(n), r_line(n), z_line(n);
+      for (int k = 0; k < n; ++k)
+        {
+          const double s = 0.01 + 0.13 * k / (n - 1);
+          r_arc[k] = 1.2 * std::cos(phi_v - s / 1.2), z_arc[k] = 1.2 * std::sin(phi_v - s / 1.2);
+          r_line[k] = c.arc.end.r + s * t.r, z_line[k] = c.arc.end.z + s * t.z;
+        }
+      const EdgeColumns a = v.evaluate(r_arc, z_arc), l = v.evaluate(r_line, z_line);
+      for (Eigen::Index j = per - 1; j < v.n_mode_columns(); j += per)
+        {
+          const double scale = a.stress[0].col(j).cwiseAbs().maxCoeff() + a.stress[1].col(j).cwiseAbs().maxCoeff();
+          ASSERT_GT(scale, 0.0) << "shadow column " << j;
+          for (Eigen::Index k = 0; k < n; ++k)
+            {
+              const double nr = r_arc[k] / 1.2, nz = z_arc[k] / 1.2;
+              EXPECT_LE(std::hypot(a.stress[0](k, j) * nr + a.stress[3](k, j) * nz,
+                                   a.stress[3](k, j) * nr + a.stress[1](k, j) * nz),
+                        1e-10 * scale);
+              EXPECT_LE(std::hypot(-l.stress[0](k, j) * t.z + l.stress[3](k, j) * t.r,
+                                   -l.stress[3](k, j) * t.z + l.stress[1](k, j) * t.r),
+                        1e-10 * scale);
+            }
+        }
+      // Inside the body (the shadow's angular functions are polynomials in theta on the
+      // wedge's angle, not meant beyond it).
+      const Eigen::VectorXd r = (Eigen::VectorXd(3) << 1.0, 1.05, 1.06).finished();
+      const Eigen::VectorXd z = (Eigen::VectorXd(3) << 0.5, 0.45, 0.52).finished();
+      expect_strains_are_derivatives(v, r, z);
+    }
+    // The displacement's traction on the arc at the distance s from v (points just inside).
+    auto traction = [&](const double s, const bool shadow) {
+      const double h = 1e-5 * s, back = 3e-5 * s;
+      const double rr = (1.2 - back) * std::cos(phi_v - s / 1.2), zz = (1.2 - back) * std::sin(phi_v - s / 1.2);
+      auto u = [&](const double r, const double z) {
+        const EdgeColumns e = v.evaluate((Eigen::VectorXd(1) << r).finished(), (Eigen::VectorXd(1) << z).finished());
+        return std::array<double, 2>{e.u[0](0, 0) + (shadow ? e.u[0](0, per - 1) : 0.0),
+                                     e.u[1](0, 0) + (shadow ? e.u[1](0, per - 1) : 0.0)};
+      };
+      const auto rp = u(rr + h, zz), rm = u(rr - h, zz), zp = u(rr, zz + h), zm = u(rr, zz - h), c0 = u(rr, zz);
+      const double e_rr = (rp[0] - rm[0]) / (2 * h), e_zz = (zp[1] - zm[1]) / (2 * h);
+      const double g = (zp[0] - zm[0]) / (2 * h) + (rp[1] - rm[1]) / (2 * h), e_tt = c0[0] / rr;
+      const double tr = e_rr + e_zz + e_tt;
+      const double s_rr = lame * tr + 2 * mu * e_rr, s_zz = lame * tr + 2 * mu * e_zz, s_rz = mu * g;
+      const double nr = rr / std::hypot(rr, zz), nz = zz / std::hypot(rr, zz);
+      return std::array<double, 2>{std::hypot(s_rr * nr + s_rz * nz, s_rz * nr + s_zz * nz),
+                                   std::hypot(s_rr, s_zz)};
+    };
+    // The mode alone: a traction of order rho / R of its stress (R = 1.2 m); with the
+    // shadow, of order (rho / R)^2: it falls faster by rho.
+    const auto plain_8 = traction(0.008, false), shadowed_8 = traction(0.008, true);
+    const auto plain_4 = traction(0.004, false), shadowed_4 = traction(0.004, true);
+    EXPECT_GT(plain_4[0], 0.1 * 0.004 / 1.2 * plain_4[1]);
+    EXPECT_LT(shadowed_8[0], 0.2 * plain_8[0]);
+    EXPECT_LT(shadowed_4[0], 0.1 * plain_4[0]);
+    EXPECT_LT(shadowed_4[0] / plain_4[0], 0.6 * shadowed_8[0] / plain_8[0]);
+  }
+
   // The curved vertex's near rule follows the arc: it integrates the area of the body within
   // rho_0 of v (the disc's part inside the circle of the arc and left of the taper's line).
   TEST(VertexEnrichment, CurvedNearRuleFollowsTheArc)
