@@ -23,6 +23,8 @@ namespace rfm
   {
     if (n_points < 8)
       throw std::invalid_argument("WedgeShadow: at least 8 collocation points");
+    if (!(r_v > 0.0))
+      throw std::invalid_argument("WedgeShadow: the vertex must lie off the axis");
     // Resonance, or near it (the header).
     for (const axisym::WedgeMode &other : wedge.modes(m_.real() + 0.5))
       if (std::abs(other.lambda - m_) < resonance_distance ||
@@ -52,8 +54,6 @@ namespace rfm
       }
     d /= alpha_;
     const Eigen::MatrixXd d2 = d * d;
-    if (!(r_v > 0.0))
-      throw std::invalid_argument("WedgeShadow: the vertex must lie off the axis");
     // The forcing at the points (shear modulus 1), and the mode's stresses F (rho = 1).
     const double nu = poisson_ratio, a = a_;
     Eigen::VectorXcd c_rho(n), c_th(n), f_rr(n), f_tt(n), f_rt(n);
@@ -194,7 +194,6 @@ namespace rfm
     out.e[0] = rho_l * m * p;
     out.e[1] = rho_l * (dq + p);
     out.e[2] = rho_l * g;
-    out.w = rho_l * (m * q - 0.5 * g);
     out.s[0] = rho_l * (((a + 2.0) * m + a) * p + a * dq + a * h);
     out.s[1] = rho_l * ((a * m + a + 2.0) * p + (a + 2.0) * dq + a * h);
     out.s[2] = rho_l * g;
