@@ -185,6 +185,15 @@ namespace rfm
             turn = a;
           }
         const double c_turn = std::cos(turn), s_turn = std::sin(turn);
+        // Meridian stresses turned by the rotation Q(turn): Q S Q^T (sigma_tt, nu times the
+        // trace, stays).
+        auto turned = [c_turn, s_turn](const double (&w)[4], double (&out)[4]) {
+          const double c = c_turn, sn = s_turn, w_rr = w[rr], w_zz = w[zz], w_rz = w[rz];
+          out[rr] = c * c * w_rr - 2.0 * c * sn * w_rz + sn * sn * w_zz;
+          out[zz] = sn * sn * w_rr + 2.0 * c * sn * w_rz + c * c * w_zz;
+          out[rz] = c * sn * (w_rr - w_zz) + (c * c - sn * sn) * w_rz;
+          out[tt] = w[tt];
+        };
         std::size_t f = 0;
         for (const WedgeMode &mode : column_modes_)
           {
@@ -213,14 +222,7 @@ namespace rfm
                 fl.u[0] = m.u[0];
                 fl.u[1] = m.u[1];
                 if (frame_ && !no_value)
-                  {
-                    const MeridianWedgeField w = meridian_wedge_field(v_mapped, 1.0, part, phi_m, mu, nu);
-                    const double c = c_turn, sn = s_turn;
-                    s[rr] = c * c * w.s[rr] - 2.0 * c * sn * w.s[rz] + sn * sn * w.s[zz];
-                    s[zz] = sn * sn * w.s[rr] + 2.0 * c * sn * w.s[rz] + c * c * w.s[zz];
-                    s[rz] = c * sn * (w.s[rr] - w.s[zz]) + (c * c - sn * sn) * w.s[rz];
-                    s[tt] = w.s[tt]; // nu times the trace, which the turn keeps
-                  }
+                  turned(meridian_wedge_field(v_mapped, 1.0, part, phi_m, mu, nu).s, s);
                 for (int comp = 0; comp < 4; ++comp)
                   fl.s[comp] = s[comp];
                 // The hoop shadow: displacement and strains at the point, the stresses T at
@@ -233,31 +235,24 @@ namespace rfm
                     const WedgeShadow::Values sv = shadows_[mi].evaluate(rho, theta);
                     const WedgeShadow::Values st = frame_ ? shadows_[mi].evaluate(rho, theta_m) : sv;
                     auto take = [&](const std::complex<double> x) { return part == 0 ? x.real() : x.imag(); };
-                    const double c = std::cos(phi), sn = std::sin(phi);
-                    const double u_p = take(sv.u[0]), u_q = take(sv.u[1]);
-                    const double e_pp = take(sv.e[0]), e_qq = take(sv.e[1]), g_pq = take(sv.e[2]);
-                    const double t_pp = take(st.t[0]), t_qq = take(st.t[1]), t_pq = take(st.t[2]);
-                    const double cm = std::cos(phi_m), sm = std::sin(phi_m);
-                    double s_xx = t_pp * cm * cm + t_qq * sm * sm - 2.0 * t_pq * cm * sm;
-                    double s_yy = t_pp * sm * sm + t_qq * cm * cm + 2.0 * t_pq * cm * sm;
-                    double s_xy = (t_pp - t_qq) * cm * sm + t_pq * (cm * cm - sm * sm);
+                    // Stresses (nu times the trace for sigma_tt; the hoop term is added with
+                    // the column's u_r) and displacement in meridian components.
+                    const MeridianWedgeField ts = meridian_wedge_field({st.t[0], st.t[1], st.t[2], sv.u[0], sv.u[1]},
+                                                                       1.0, part, phi_m, mu, nu);
+                    const MeridianWedgeField us =
+                      frame_ ? meridian_wedge_field({0.0, 0.0, 0.0, sv.u[0], sv.u[1]}, 1.0, part, phi, mu, nu) : ts;
+                    for (int comp = 0; comp < 4; ++comp)
+                      sh.s[comp] = ts.s[comp];
                     if (frame_)
-                      {
-                        const double ct = c_turn, st_ = s_turn;
-                        const double xx = ct * ct * s_xx - 2.0 * ct * st_ * s_xy + st_ * st_ * s_yy;
-                        const double yy = st_ * st_ * s_xx + 2.0 * ct * st_ * s_xy + ct * ct * s_yy;
-                        const double xy = ct * st_ * (s_xx - s_yy) + (ct * ct - st_ * st_) * s_xy;
-                        s_xx = xx, s_yy = yy, s_xy = xy;
-                      }
-                    sh.s[rr] = s_xx;
-                    sh.s[zz] = s_yy;
-                    sh.s[rz] = s_xy;
-                    sh.s[tt] = nu * (s_xx + s_yy); // the hoop term is added with the column's u_r
+                      turned(ts.s, sh.s);
+                    sh.u[0] = us.u[0];
+                    sh.u[1] = us.u[1];
+                    // The strains (polar, engineering shear) in meridian components.
+                    const double c = std::cos(phi), sn = std::sin(phi);
+                    const double e_pp = take(sv.e[0]), e_qq = take(sv.e[1]), g_pq = take(sv.e[2]);
                     sh.e[0] = (e_pp * c * c + e_qq * sn * sn - g_pq * sn * c) / mu;
                     sh.e[1] = (e_pp * sn * sn + e_qq * c * c + g_pq * sn * c) / mu;
                     sh.e[2] = (2.0 * (e_pp - e_qq) * sn * c + g_pq * (c * c - sn * sn)) / mu;
-                    sh.u[0] = (u_p * c - u_q * sn) / mu;
-                    sh.u[1] = (u_p * sn + u_q * c) / mu;
                   }
               }
           }
