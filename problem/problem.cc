@@ -675,7 +675,7 @@ namespace axisym
                               "vertex_cutoff", "vertex_local_degree",
                               "vertex_local_displacement_degree", "vertex_support",
                               "resonant_displacement_degree", "axis_parity", "notch_roots",
-                              "rough_vertices", "ritz_bound", "vertex_shadow"});
+                              "rough_vertices", "ritz_bound", "vertex_shadow", "z_degree_ratio"});
         if (r.has("degree") && r.has("tolerance"))
           fail("rfm", top.at("rfm"), "give rfm.degree (fixed p) or rfm.tolerance (p rises "
                                      "until the indicator is below it), not both");
@@ -765,6 +765,10 @@ namespace axisym
               fail("rfm.ritz_bound", r.at("ritz_bound"), "must be true or false");
             p.rfm.ritz_bound = r.at("ritz_bound").get<bool>();
           }
+        if (r.has("z_degree_ratio"))
+          p.rfm.z_degree_ratio = r.number(
+            "z_degree_ratio", "must be in [0.25, 4]: the polynomials' degree along z over the degree along r",
+            [](double x) { return x >= 0.25 && x <= 4.0; });
         if (r.has("vertex_cutoff"))
           p.rfm.vertex_cutoff = r.number(
             "vertex_cutoff", "must be in (0, 1]: the cutoff radius as a fraction of the room around the vertex",

@@ -2,6 +2,9 @@
 
 #include "problem/input_error.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace axisym
 {
   std::string IntRange::rule() const
@@ -39,6 +42,14 @@ namespace axisym
       throw InputError("rfm.vertex_cutoff = " + std::to_string(vertex_cutoff) +
                        ": must be in (0, 1] (a fraction of the room around the vertex)");
     ranges::rfm_max_degree.check(max_degree);
+    if (!(z_degree_ratio >= 0.25 && z_degree_ratio <= 4.0))
+      throw InputError("rfm.z_degree_ratio = " + std::to_string(z_degree_ratio) +
+                       ": must be in [0.25, 4] (the degree along z over the degree along r)");
+    if (const long long top = std::llround(z_degree_ratio * (degree_given ? degree : std::max(degree, max_degree)));
+        top > max_degree_z)
+      throw InputError("rfm.z_degree_ratio = " + std::to_string(z_degree_ratio) + ": the degree along z, " +
+                       std::to_string(top) + " at p = " + std::to_string(degree_given ? degree : std::max(degree, max_degree)) +
+                       ", must stay <= " + std::to_string(max_degree_z) + " (lower it, or rfm.max_degree)");
     ranges::rfm_local_levels.check(local_levels);
     ranges::rfm_local_degree.check(local_degree);
     ranges::rfm_local_stress_degree.check(local_stress_degree);

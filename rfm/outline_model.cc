@@ -311,7 +311,8 @@ namespace rfm
     , loads_(problem.body_loads)
     , mirrored_(problem.body->mirrored)
     , axis_parity_obstacle_(rfm::axis_parity_obstacle(problem, options))
-    , structures_(*problem.body, options.degree, faded_zones(*problem.body, zones, local_),
+    , structures_(*problem.body, std::max(options.degree, options.degree_z()),
+                  faded_zones(*problem.body, zones, local_),
                   axis_parity_obstacle_.empty())
     , basis_([&]() -> std::variant<TensorLegendreBasis, SectionPolynomialBasis> {
       const axisym::Outline &o = problem.body->outline;
@@ -322,11 +323,9 @@ namespace rfm
         {
           const axisym::BoundingBox b = o.bounding_box();
           return TensorLegendreBasis(options.degree, b.r_min, b.r_max, b.z_min, b.z_max,
-                                     structures_.axis_parity());
+                                     structures_.axis_parity(), options.degree_z());
         }
-      if (structures_.axis_parity())
-        return basis_of(o, options.degree, options.degree, true);
-      return basis_of(o, options.degree, options.degree);
+      return basis_of(o, options.degree, options.degree_z(), structures_.axis_parity());
     }())
   {
     const auto t0 = std::chrono::steady_clock::now();
@@ -335,7 +334,7 @@ namespace rfm
     // structures: the collapsed Gauss rule is exact for total degree 2n - 2 on straight
     // triangles.
     SectionQuadratureOptions qo;
-    qo.n_points = 2 * options.degree + options.extra_gauss_points;
+    qo.n_points = 2 * std::max(options.degree, options.degree_z()) + options.extra_gauss_points;
     std::vector<int> graded = make_enrichments(problem, zones, options);
     make_vertex_enrichments(problem, options, graded);
     make_traction_jumps(problem, options);
@@ -358,7 +357,7 @@ namespace rfm
       // The polynomials' degree in r: 2 p with the axis parity (on the clamped cylinder at
       // p = 16 the vertex rule for degree p left the indicator at 9.3e-6, 7.2e-9 with 2 p;
       // 1.6 p gave 7.5e-9, 1.4 p 3.0e-9 instead of 2.05e-9 at p = 20).
-      const int n_near = (structures_.axis_parity() ? 2 : 1) * options.degree +
+      const int n_near = std::max((structures_.axis_parity() ? 2 : 1) * options.degree, options.degree_z()) +
                          options.extra_gauss_points + options.edge_extra_points;
       std::vector<Quadrature2D> rules;
       Eigen::Index total = 0;
@@ -552,7 +551,8 @@ namespace rfm
     else if (is_axis_aligned_rectangle(split))
       quadrature_ = rectangle_gauss(
         split,
-        (local_.empty() ? options.degree : std::max(options.degree, local_.degree() + 2)) +
+        (local_.empty() ? std::max(options.degree, options.degree_z())
+                        : std::max({options.degree, options.degree_z(), local_.degree() + 2})) +
           options.extra_gauss_points,
         [&] {
           RectangleCells cells{options.n_cells_r, options.n_cells_z, options.n_graded_layers,
@@ -661,8 +661,9 @@ namespace rfm
           }
         const SectionPolynomialBasis &full = std::get<SectionPolynomialBasis>(basis_);
         const bool even = full.even_in_r();
-        const Quadrature2D samples = basis_samples(problem.body->outline, even ? 2 * p : p);
-        const int p_r = std::max(0, p - k[0]), p_z = std::max(0, p - k[1]);
+        const Quadrature2D samples =
+          basis_samples(problem.body->outline, std::max(even ? 2 * p : p, options.degree_z()));
+        const int p_r = std::max(0, p - k[0]), p_z = std::max(0, options.degree_z() - k[1]);
         const SectionPolynomialBasis reduced = basis_of(problem.body->outline, p_r, p_z, even);
         // The local columns are kept as they are (the omega of u_m multiplies them too).
         const Eigen::Index n_g = full.n_basis_functions(), n_l = n - n_g, n_r = reduced.n_basis_functions();
@@ -2350,8 +2351,9 @@ namespace rfm
       }
     auto local_columns = [&](const double d) { return box_weight * n_boxes * (d + 1.0) * (d + 1.0); };
     const bool two_sided = box_weight > static_cast<double>(body.die_parts().size());
-    const double p = options.degree,
-                 n = (p + 1) * (p + 1) + local_columns(options.resolved_local_degree(two_sided));
+    const double p = std::max(options.degree, options.degree_z()),
+                 n = (options.degree + 1.0) * (options.degree_z() + 1.0) +
+                     local_columns(options.resolved_local_degree(two_sided));
     double n_q = 0;
     if (is_axis_aligned_rectangle(body.outline))
       {
@@ -2383,7 +2385,7 @@ namespace rfm
       {
         // The section's rule has n^2 points per triangle; a zone's end adds two triangles.
         SectionQuadratureOptions qo;
-        qo.n_points = 2 * options.degree + options.extra_gauss_points;
+        qo.n_points = 2 * static_cast<int>(p) + options.extra_gauss_points;
         const double per_triangle = static_cast<double>(qo.n_points) * qo.n_points;
         n_q = static_cast<double>(section_gauss(body.outline, qo).n_points()) + 2.0 * n_dies * per_triangle;
       }

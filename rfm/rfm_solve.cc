@@ -430,11 +430,14 @@ namespace
       }
     else
       {
-        fmt::print(stderr, "rfm_solve: outline section, degree p = {}\n", problem.rfm.degree);
+        fmt::print(stderr, "rfm_solve: outline section, degree p = {}{}\n", problem.rfm.degree,
+                   problem.rfm.degree_z() != problem.rfm.degree
+                     ? fmt::format(" (p_z = {} along z)", problem.rfm.degree_z())
+                     : std::string());
         model = std::make_unique<rfm::OutlineModel>(problem, problem.rfm);
       }
     const int p = problem.rfm.degree;
-    // N per component: the global polynomials' (p + 1)^2 and the local boxes' functions.
+    // N per component: the global polynomials' (p + 1)(p_z + 1) and the local boxes' functions.
     const long n_basis = static_cast<long>(model->n_basis_functions());
     const long n_edge = static_cast<long>(model->n_edge_columns()) +
                         static_cast<long>(model->n_vertex_columns());
@@ -443,6 +446,7 @@ namespace
     result["problem"] = problem.source;
     result["discretization"] = {
       {"degree", p},
+      {"degree_z", problem.rfm.degree_z()},
       {"N", n_basis},
       {"local_functions", model->n_local_functions()},
       {"local_boxes", model->local_basis().patches().size()},
@@ -786,7 +790,8 @@ int main(int argc, char **argv)
       int degree = -1;
       double tolerance = -1.0;
       app.add_option("problem", problem_path, "problem file (JSON, SI units)")->required();
-      app.add_option("--degree", degree, "polynomial degree p per variable (r^2 and z with the axis parity): N = (p+1)^2")
+      app.add_option("--degree", degree, "polynomial degree p per variable (r^2 and z with the axis parity): N = (p+1)^2; "
+                     "along z round(rfm.z_degree_ratio p) where that is given")
         ->check(CLI::Range(axisym::ranges::rfm_degree.lo, axisym::ranges::rfm_degree.hi));
       app.add_option("--tolerance", tolerance,
                      "raise p (2, 4, ...) until |Phi_L - Phi_C| / |Phi_R| < this; without "
@@ -840,6 +845,7 @@ int main(int argc, char **argv)
         axisym::check_output_path("--output", output_path);
       if (!vtu_directory.empty())
         axisym::ensure_output_directory("--vtu", vtu_directory);
+      problem.rfm.validate(); // the settings with the command line's, before any work
       {
         // Memory: estimated before any allocation, against the machine's physical memory.
         const double bytes = rfm::estimate_memory_bytes(problem, problem.rfm);
@@ -875,7 +881,8 @@ int main(int argc, char **argv)
         }
       const int p = problem.rfm.degree;
       if (!target_indicator)
-        fmt::print(stderr, "rfm_solve: degree p = {}, N = {} per component\n", p, (p + 1) * (p + 1));
+        fmt::print(stderr, "rfm_solve: degree p = {}, N = {} per component\n", p,
+                   (p + 1) * (problem.rfm.degree_z() + 1));
       if (target_indicator)
         ; // solved above
       else if (problem.die)
@@ -887,10 +894,11 @@ int main(int argc, char **argv)
       else
         model_ptr = std::make_unique<rfm::OutlineModel>(problem, problem.rfm);
 
-      const auto n_basis = static_cast<long>((p + 1) * (p + 1));
+      const auto n_basis = static_cast<long>((p + 1) * (problem.rfm.degree_z() + 1));
       const long n_edge = model_ptr ? static_cast<long>(model_ptr->n_edge_columns()) : 0;
       result["discretization"] = {
         {"degree", p},
+        {"degree_z", problem.rfm.degree_z()},
         {"N", n_basis},
         {"unknowns", 6 * n_basis + 2 * n_edge},
         {"stress_unknowns", 4 * n_basis + n_edge},

@@ -63,12 +63,15 @@ namespace
   }
 
   // The RFM at degree p (no tolerance), with the vertex modes and traction-jump fields or
-  // without them (rfm.vertex_max_exponent = 0 switches both off). Numerical failure throws.
+  // without them (rfm.vertex_max_exponent = 0 switches both off), and the degree along z
+  // round(z_degree_ratio p). Numerical failure throws.
   std::unique_ptr<rfm::OutlineModel> solve_at(const axisym::Problem &problem, const std::string &file,
-                                              const int p, const bool with_vertex_terms)
+                                              const int p, const bool with_vertex_terms,
+                                              const double z_degree_ratio = 1.0)
   {
     rfm::DiscretizationOptions o = problem.rfm;
     o.degree = p;
+    o.z_degree_ratio = z_degree_ratio;
     o.tolerance.reset();
     if (!with_vertex_terms)
       o.vertex_max_exponent = 0.0;
@@ -78,8 +81,11 @@ namespace
     return m;
   }
 
+  // z_degree_ratio > 0: a third variant, the RFM with that rfm.z_degree_ratio
+  // ("rfm_z_degree_ratio").
   nlohmann::json corner_case(const verification::DriverContext &context, const std::string &file,
-                             const std::vector<int> &degrees, const std::vector<int> &levels)
+                             const std::vector<int> &degrees, const std::vector<int> &levels,
+                             const double z_degree_ratio = 0.0)
   {
     const axisym::Problem problem = axisym::read_problem_file(context.problem_path(file));
     nlohmann::json c = {{"problem_file", "verification/problems/" + file}};
@@ -178,12 +184,22 @@ namespace
     const double scale = largest_component(fem_samples);
     const auto [r, z] = sample_points(problem);
     const bool on_axis = (r.array() == 0.0).any();
-    for (const bool enriched : {true, false})
+    struct Variant
+    {
+      std::string key;
+      bool enriched;
+      double z_degree_ratio;
+    };
+    std::vector<Variant> variants{{"rfm", true, 1.0}, {"rfm_without_vertex_columns", false, 1.0}};
+    if (z_degree_ratio > 0.0)
+      variants.push_back({"rfm_z_degree_ratio", true, z_degree_ratio});
+    for (const Variant &variant : variants)
       {
-        const std::string key = enriched ? "rfm" : "rfm_without_vertex_columns";
+        const std::string &key = variant.key;
+        const bool enriched = variant.enriched;
         for (const int p : degrees)
           {
-            const auto model = solve_at(problem, file, p, enriched);
+            const auto model = solve_at(problem, file, p, enriched, variant.z_degree_ratio);
             const rfm::OutlineModel &m = *model;
             const rfm::Functionals f = m.functionals();
             const rfm::FieldValues v = m.evaluate(r, z);
@@ -192,6 +208,14 @@ namespace
             const auto differences = verification::axis_and_off_axis_differences(
               r, fem_samples, [&](Eigen::Index k, int comp) { return v.sigma(k, comp); });
             const double axis_error = differences[0] / scale, sample_error = differences[1] / scale;
+            // sigma_zz on the axis relative to the FEM's own value there (issue 24 item 8 asks
+            // 0.5 % for the stepped shaft).
+            double axis_zz_error = 0.0;
+            for (Eigen::Index i = 0; i < r.size(); ++i)
+              if (r[i] == 0.0)
+                axis_zz_error = std::max(axis_zz_error, std::abs(v.sigma(i, axisym::zz) /
+                                                                   fem_samples[static_cast<std::size_t>(i)][axisym::zz] -
+                                                                 1.0));
             const double seconds = m.assembly_seconds() + m.solve_seconds();
             const double energy_error = std::abs(f.reissner - limit) / std::abs(limit);
             // The intensities against the finest FEM level's, each relative to its own K.
@@ -206,10 +230,15 @@ namespace
             fmt::print("RFM{} p = {:>2}: Phi_R {:.10e} ({:.2e} from the FEM's limit), indicator {:.2e}, "
                        "samples {:.2e} of max |sigma| from the FEM's{}, K {:.2e} from the FEM's, {} vertex "
                        "columns ({:.1f} s)\n",
-                       enriched ? "" : " without vertex columns", p, f.reissner, energy_error,
-                       f.indicator(), sample_error,
-                       on_axis ? fmt::format(" (on the axis {:.2e})", axis_error) : std::string(), k_error,
-                       m.n_vertex_columns(), seconds);
+                       !enriched ? " without vertex columns"
+                                 : variant.z_degree_ratio != 1.0
+                                     ? fmt::format(" with p_z = {}", std::lround(variant.z_degree_ratio * p))
+                                     : std::string(),
+                       p, f.reissner, energy_error, f.indicator(), sample_error,
+                       on_axis ? fmt::format(" (on the axis {:.2e}, sigma_zz there {:.2e} of the FEM's)", axis_error,
+                                             axis_zz_error)
+                               : std::string(),
+                       k_error, m.n_vertex_columns(), seconds);
             nlohmann::json samples = nlohmann::json::array();
             for (Eigen::Index i = 0; i < r.size(); ++i)
               samples.push_back({{"r", r[i]},
@@ -225,9 +254,14 @@ namespace
                                                {"energy_error_relative", energy_error},
                                                {"sample_error_relative", sample_error},
                                                {"vertex_columns", m.n_vertex_columns()},
+                                               {"N", m.n_basis_functions()},
+                                               {"degree_z", std::lround(variant.z_degree_ratio * p)},
                                                {"seconds", seconds}};
             if (on_axis)
-              c[key]["p" + std::to_string(p)]["axis_sample_error_relative"] = axis_error;
+              {
+                c[key]["p" + std::to_string(p)]["axis_sample_error_relative"] = axis_error;
+                c[key]["p" + std::to_string(p)]["axis_sigma_zz_error_relative"] = axis_zz_error;
+              }
             // The displacement space's own bound (OutlineModel::ritz_lagrange) beside Phi_L(u_h).
             if (enriched)
               c[key]["p" + std::to_string(p)]["lagrange_ritz"] = m.ritz_lagrange();
@@ -358,7 +392,7 @@ nlohmann::json run(const verification::DriverContext &context)
   // axis; full mode only, FEM L = 0, 1, 2 (on the radical grading L = 2 has 350 254 DoFs and
   // took 8.1 s alone; L = 3 would have about 1.4 million).
   if (full)
-    results["stepped_shaft"] = corner_case(context, "stepped_shaft_tension.json", degrees, {0, 1, 2});
+    results["stepped_shaft"] = corner_case(context, "stepped_shaft_tension.json", degrees, {0, 1, 2}, 2.0);
   // Traction jumps (issue 24 item 4): the pressure band on a straight bore; the tapered hub of
   // the issue (a jump on an arc, besides its two vertices) in full mode only, to p = 16 (its
   // p = 16 takes 26 s with the rough vertex's columns; p = 18 and 20, 40 and 50 s, are in the

@@ -22,8 +22,9 @@ namespace rfm
 
   TensorLegendreBasis::TensorLegendreBasis(const int degree, const double r_min,
                                            const double r_max, const double z_min,
-                                           const double z_max, const bool even_in_r)
-    : degree_(degree), r_min_(r_min), r_max_(r_max), z_min_(z_min), z_max_(z_max), even_r_(even_in_r)
+                                           const double z_max, const bool even_in_r,
+                                           const int degree_z)
+    : degree_(degree), degree_z_(degree_z < 0 ? degree : degree_z), r_min_(r_min), r_max_(r_max), z_min_(z_min), z_max_(z_max), even_r_(even_in_r)
   {
     if (degree < 0)
       throw std::invalid_argument("TensorLegendreBasis: degree must be >= 0");
@@ -36,16 +37,16 @@ namespace rfm
   BasisValues TensorLegendreBasis::evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
                                             const Eigen::Ref<const Eigen::VectorXd> &z) const
   {
-    const Eigen::Index n_points = r.size(), m = degree_ + 1;
+    const Eigen::Index n_points = r.size(), m = degree_ + 1, m_z = degree_z_ + 1;
     const double sr = 2.0 / (r_max_ - r_min_), sz = 2.0 / (z_max_ - z_min_);
     BasisValues b;
-    b.value.resize(n_points, m * m);
-    b.d_r.resize(n_points, m * m);
-    b.d_z.resize(n_points, m * m);
+    b.value.resize(n_points, m * m_z);
+    b.d_r.resize(n_points, m * m_z);
+    b.d_z.resize(n_points, m * m_z);
     // 1-D tables first (point by degree), then every product as a contiguous column
     // operation (the per-point loop wrote rows of column-major matrices: stride n_points).
-    Eigen::MatrixXd pr(n_points, m), dpr(n_points, m), pz(n_points, m), dpz(n_points, m);
-    Eigen::VectorXd p1(m), dp1(m);
+    Eigen::MatrixXd pr(n_points, m), dpr(n_points, m), pz(n_points, m_z), dpz(n_points, m_z);
+    Eigen::VectorXd p1(m), dp1(m), q1(m_z), dq1(m_z);
     const double se = 2.0 / (r_max_ * r_max_);
     for (Eigen::Index k = 0; k < n_points; ++k)
       {
@@ -58,10 +59,10 @@ namespace rfm
         else
           legendre_values(degree_, sr * (r[k] - r_min_) - 1.0, p1, dp1);
         pr.row(k) = p1.transpose(), dpr.row(k) = dp1.transpose();
-        legendre_values(degree_, sz * (z[k] - z_min_) - 1.0, p1, dp1);
-        pz.row(k) = p1.transpose(), dpz.row(k) = dp1.transpose();
+        legendre_values(degree_z_, sz * (z[k] - z_min_) - 1.0, q1, dq1);
+        pz.row(k) = q1.transpose(), dpz.row(k) = dq1.transpose();
       }
-    for (Eigen::Index j = 0; j < m; ++j)
+    for (Eigen::Index j = 0; j < m_z; ++j)
       for (Eigen::Index i = 0; i < m; ++i)
         {
           const Eigen::Index col = j * m + i;

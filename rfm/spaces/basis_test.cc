@@ -67,6 +67,44 @@ namespace rfm
     EXPECT_LT(off.cwiseAbs().maxCoeff(), 1e-14);
   }
 
+  // A degree of its own along z (rfm.z_degree_ratio): (p + 1)(p_z + 1) functions P_i(xi)
+  // P_j(eta), index j (p + 1) + i, with the Legendre values along each variable (Legendre's
+  // own recurrence, checked against closed forms above) and the diagonal Gram matrix
+  // 4 / ((2 i + 1)(2 j + 1)) on [-1, 1]^2 under a Gauss rule exact for the products.
+  TEST(TensorLegendreBasis, DegreeAlongZOfItsOwn)
+  {
+    const int p = 2, p_z = 5, m = p + 1, m_z = p_z + 1;
+    const TensorLegendreBasis b(p, -1.0, 1.0, -1.0, 1.0, false, p_z);
+    ASSERT_EQ(b.degree(), p);
+    ASSERT_EQ(b.degree_z(), p_z);
+    ASSERT_EQ(b.n_basis_functions(), m * m_z);
+    const GaussRule1D g = gauss_legendre(m_z);
+    Eigen::VectorXd x(m_z * m_z), y(m_z * m_z), w(m_z * m_z);
+    for (int j = 0; j < m_z; ++j)
+      for (int i = 0; i < m_z; ++i)
+        x[j * m_z + i] = g.nodes[i], y[j * m_z + i] = g.nodes[j], w[j * m_z + i] = g.weights[i] * g.weights[j];
+    const BasisValues v = b.evaluate(x, y);
+    ASSERT_EQ(v.value.cols(), m * m_z);
+    Eigen::VectorXd px(m), dpx(m), py(m_z), dpy(m_z);
+    for (Eigen::Index k = 0; k < x.size(); ++k)
+      {
+        legendre_values(p, x[k], px, dpx);
+        legendre_values(p_z, y[k], py, dpy);
+        for (int j = 0; j < m_z; ++j)
+          for (int i = 0; i < m; ++i)
+            {
+              EXPECT_NEAR(v.value(k, j * m + i), px[i] * py[j], 1e-14);
+              EXPECT_NEAR(v.d_r(k, j * m + i), dpx[i] * py[j], 1e-13);
+              EXPECT_NEAR(v.d_z(k, j * m + i), px[i] * dpy[j], 1e-13);
+            }
+      }
+    const Eigen::MatrixXd gram = v.value.transpose() * w.asDiagonal() * v.value;
+    for (int j = 0; j < m_z; ++j)
+      for (int i = 0; i < m; ++i)
+        EXPECT_NEAR(gram(j * m + i, j * m + i), 4.0 / ((2 * i + 1) * (2 * j + 1)), 1e-14);
+    EXPECT_LT((gram - Eigen::MatrixXd(gram.diagonal().asDiagonal())).cwiseAbs().maxCoeff(), 1e-14);
+  }
+
   // Even in r: the functions are P_i(2 (r / R)^2 - 1) P_j(eta), even in r with derivatives
   // that match finite differences, and orthogonal in the r-weighted measure on [0, R] x
   // [z0, z1]: int_0^R P_i P_k r dr = R^2 / 4 int P_i P_k d xi = R^2 / (2 (2 i + 1)) delta_ik.
