@@ -45,11 +45,12 @@ namespace axisym
     if (!(z_degree_ratio >= 0.25 && z_degree_ratio <= 4.0))
       throw InputError("rfm.z_degree_ratio = " + std::to_string(z_degree_ratio) +
                        ": must be in [0.25, 4] (the degree along z over the degree along r)");
-    if (const long long top = std::llround(z_degree_ratio * (degree_given ? degree : std::max(degree, max_degree)));
-        top > max_degree_z)
+    // The largest p this run may reach: the fixed degree, or the last of the degree sequence.
+    const int top_p = degree_given ? degree : std::max(degree, max_degree);
+    if (const long long top = std::llround(z_degree_ratio * top_p); top > max_degree_z)
       throw InputError("rfm.z_degree_ratio = " + std::to_string(z_degree_ratio) + ": the degree along z, " +
-                       std::to_string(top) + " at p = " + std::to_string(degree_given ? degree : std::max(degree, max_degree)) +
-                       ", must stay <= " + std::to_string(max_degree_z) + " (lower it, or rfm.max_degree)");
+                       std::to_string(top) + " at p = " + std::to_string(top_p) + ", must stay <= " +
+                       std::to_string(max_degree_z) + " (lower it, or rfm.max_degree)");
     ranges::rfm_local_levels.check(local_levels);
     ranges::rfm_local_degree.check(local_degree);
     ranges::rfm_local_stress_degree.check(local_stress_degree);

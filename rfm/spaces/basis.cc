@@ -24,7 +24,13 @@ namespace rfm
                                            const double r_max, const double z_min,
                                            const double z_max, const bool even_in_r,
                                            const int degree_z)
-    : degree_(degree), degree_z_(degree_z < 0 ? degree : degree_z), r_min_(r_min), r_max_(r_max), z_min_(z_min), z_max_(z_max), even_r_(even_in_r)
+    : degree_(degree)
+    , degree_z_(degree_z < 0 ? degree : degree_z)
+    , r_min_(r_min)
+    , r_max_(r_max)
+    , z_min_(z_min)
+    , z_max_(z_max)
+    , even_r_(even_in_r)
   {
     if (degree < 0)
       throw std::invalid_argument("TensorLegendreBasis: degree must be >= 0");
