@@ -768,7 +768,7 @@ namespace axisym
         if (r.has("z_degree_ratio"))
           p.rfm.z_degree_ratio = r.number(
             "z_degree_ratio", "must be in [0.25, 4]: the polynomials' degree along z over the degree along r",
-            [](double x) { return x >= 0.25 && x <= 4.0; });
+            [](double x) { return x >= RfmSettings::min_z_degree_ratio && x <= RfmSettings::max_z_degree_ratio; });
         if (r.has("vertex_cutoff"))
           p.rfm.vertex_cutoff = r.number(
             "vertex_cutoff", "must be in (0, 1]: the cutoff radius as a fraction of the room around the vertex",

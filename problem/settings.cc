@@ -42,7 +42,7 @@ namespace axisym
       throw InputError("rfm.vertex_cutoff = " + std::to_string(vertex_cutoff) +
                        ": must be in (0, 1] (a fraction of the room around the vertex)");
     ranges::rfm_max_degree.check(max_degree);
-    if (!(z_degree_ratio >= 0.25 && z_degree_ratio <= 4.0))
+    if (!(z_degree_ratio >= min_z_degree_ratio && z_degree_ratio <= max_z_degree_ratio))
       throw InputError("rfm.z_degree_ratio = " + std::to_string(z_degree_ratio) +
                        ": must be in [0.25, 4] (the degree along z over the degree along r)");
     // The largest p this run may reach: the fixed degree, or the last of the degree sequence.

@@ -4,6 +4,7 @@
 // value is accepted or refused the same way wherever it comes from.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -87,8 +88,11 @@ namespace axisym
     /// ratio 1 at p = 20 (N = 441) 1.8e-6 and 3.5 %. Not on every section: issue 24's hub
     /// (0.65 m x 1.6 m) at (12, 20) came out 3.4e-6 against 1.1e-6 at (16, 16) (README).
     double z_degree_ratio = 1.0;
-    int degree_z() const { return static_cast<int>(std::lround(z_degree_ratio * degree)); }
+    static constexpr double min_z_degree_ratio = 0.25, max_z_degree_ratio = 4.0;
     static constexpr int max_degree_z = 48;
+    int degree_z() const { return static_cast<int>(std::lround(z_degree_ratio * degree)); }
+    /// The larger of the two degrees: what the rules and the structures are sized for.
+    int largest_degree() const { return std::max(degree, degree_z()); }
     int extra_gauss_points = 4; ///< Gauss points per direction and cell = p + this
     int n_cells_r = 1;          ///< uniform cells in r before splitting at break points
     int n_cells_z = 1;          ///< uniform cells in z before splitting at break points

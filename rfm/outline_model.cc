@@ -311,7 +311,7 @@ namespace rfm
     , loads_(problem.body_loads)
     , mirrored_(problem.body->mirrored)
     , axis_parity_obstacle_(rfm::axis_parity_obstacle(problem, options))
-    , structures_(*problem.body, std::max(options.degree, options.degree_z()),
+    , structures_(*problem.body, options.largest_degree(),
                   faded_zones(*problem.body, zones, local_),
                   axis_parity_obstacle_.empty())
     , basis_([&]() -> std::variant<TensorLegendreBasis, SectionPolynomialBasis> {
@@ -334,7 +334,7 @@ namespace rfm
     // structures: the collapsed Gauss rule is exact for total degree 2n - 2 on straight
     // triangles.
     SectionQuadratureOptions qo;
-    qo.n_points = 2 * std::max(options.degree, options.degree_z()) + options.extra_gauss_points;
+    qo.n_points = 2 * options.largest_degree() + options.extra_gauss_points;
     std::vector<int> graded = make_enrichments(problem, zones, options);
     make_vertex_enrichments(problem, options, graded);
     make_traction_jumps(problem, options);
@@ -551,8 +551,7 @@ namespace rfm
     else if (is_axis_aligned_rectangle(split))
       quadrature_ = rectangle_gauss(
         split,
-        (local_.empty() ? std::max(options.degree, options.degree_z())
-                        : std::max({options.degree, options.degree_z(), local_.degree() + 2})) +
+        (local_.empty() ? options.largest_degree() : std::max(options.largest_degree(), local_.degree() + 2)) +
           options.extra_gauss_points,
         [&] {
           RectangleCells cells{options.n_cells_r, options.n_cells_z, options.n_graded_layers,
@@ -2351,7 +2350,7 @@ namespace rfm
       }
     auto local_columns = [&](const double d) { return box_weight * n_boxes * (d + 1.0) * (d + 1.0); };
     const bool two_sided = box_weight > static_cast<double>(body.die_parts().size());
-    const double p = std::max(options.degree, options.degree_z()),
+    const double p = options.largest_degree(),
                  n = (options.degree + 1.0) * (options.degree_z() + 1.0) +
                      local_columns(options.resolved_local_degree(two_sided));
     double n_q = 0;

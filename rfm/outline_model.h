@@ -124,6 +124,11 @@ namespace rfm
     double solve_seconds() const { return solve_s_; }
     /// Coordinate functions per component: the global polynomials, then the local ones.
     Eigen::Index n_basis_functions() const;
+    /// The global polynomials' degree along z (rfm.z_degree_ratio).
+    int degree_z() const
+    {
+      return std::visit([](const auto &b) { return b.degree_z(); }, basis_);
+    }
     Eigen::Index n_local_functions() const { return local_.n_basis_functions(); }
     const LocalBasis &local_basis() const { return local_; }
     Eigen::Index n_boundary_columns() const { return structures_.n_boundary_columns(); }

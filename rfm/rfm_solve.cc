@@ -446,7 +446,7 @@ namespace
     result["problem"] = problem.source;
     result["discretization"] = {
       {"degree", p},
-      {"degree_z", problem.rfm.degree_z()},
+      {"degree_z", model->degree_z()},
       {"N", n_basis},
       {"local_functions", model->n_local_functions()},
       {"local_boxes", model->local_basis().patches().size()},

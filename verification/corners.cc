@@ -232,7 +232,7 @@ namespace
                        "columns ({:.1f} s)\n",
                        !enriched ? " without vertex columns"
                                  : variant.z_degree_ratio != 1.0
-                                     ? fmt::format(" with p_z = {}", std::lround(variant.z_degree_ratio * p))
+                                     ? fmt::format(" with p_z = {}", m.degree_z())
                                      : std::string(),
                        p, f.reissner, energy_error, f.indicator(), sample_error,
                        on_axis ? fmt::format(" (on the axis {:.2e}, sigma_zz there {:.2e} of the FEM's)", axis_error,
@@ -255,7 +255,7 @@ namespace
                                                {"sample_error_relative", sample_error},
                                                {"vertex_columns", m.n_vertex_columns()},
                                                {"N", m.n_basis_functions()},
-                                               {"degree_z", std::lround(variant.z_degree_ratio * p)},
+                                               {"degree_z", m.degree_z()},
                                                {"seconds", seconds}};
             if (on_axis)
               {
