@@ -124,6 +124,32 @@ namespace rfm
   }
 
 
+  std::vector<Eigen::Index> EdgeColumns::nonzero_columns() const
+  {
+    std::vector<Eigen::Index> out;
+    for (Eigen::Index j = 0; j < u[0].cols(); ++j)
+      {
+        bool nonzero = false;
+        for (const Eigen::MatrixXd *m : {&stress[0], &stress[1], &stress[2], &stress[3], &u[0], &u[1],
+                                         &strain[0], &strain[1], &strain[2], &strain[3]})
+          if ((nonzero = (m->col(j).array() != 0.0).any()))
+            break;
+        if (nonzero)
+          out.push_back(j);
+      }
+    return out;
+  }
+
+  EdgeColumns EdgeColumns::columns(const std::vector<Eigen::Index> &which) const
+  {
+    EdgeColumns out;
+    for (int k = 0; k < 4; ++k)
+      out.stress[k] = stress[k](Eigen::all, which), out.strain[k] = strain[k](Eigen::all, which);
+    for (int m = 0; m < 2; ++m)
+      out.u[m] = u[m](Eigen::all, which);
+    return out;
+  }
+
   EdgeColumns EdgeEnrichment::evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
                                        const Eigen::Ref<const Eigen::VectorXd> &z) const
   {

@@ -285,4 +285,42 @@ namespace rfm
           << "modes " << m << ", " << n;
       }
   }
+  // The assembly drops, block by block of points, the columns that are zero there
+  // (outline_model.cc): nonzero_columns finds the columns of the discs that the points reach,
+  // and columns() copies exactly those blocks.
+  TEST(EdgeColumns, NonzeroColumnsAreThoseOfTheDiscsThePointsReach)
+  {
+    const EdgeEnrichment near(r_e, z_e, 0.05, {1, 3}, steel);
+    const EdgeEnrichment far(r_e, z_e + 0.3, 0.05, {1}, steel);
+    const Eigen::Index n_near = near.n_columns(), n_far = far.n_columns();
+    auto both = [&](const Eigen::VectorXd &r, const Eigen::VectorXd &z) {
+      EdgeColumns c = EdgeColumns::zero(r.size(), n_near + n_far);
+      c.set_columns(0, near.evaluate(r, z));
+      c.set_columns(n_near, far.evaluate(r, z));
+      return c;
+    };
+    // Points in the first disc only, then in the second only, then in neither.
+    Eigen::VectorXd r(3), z(3);
+    r << r_e - 0.01, r_e - 0.02, r_e - 0.015;
+    z << z_e + 0.01, z_e - 0.02, z_e;
+    const EdgeColumns in_near = both(r, z);
+    std::vector<Eigen::Index> expected(static_cast<std::size_t>(n_near));
+    for (Eigen::Index j = 0; j < n_near; ++j)
+      expected[static_cast<std::size_t>(j)] = j;
+    EXPECT_EQ(in_near.nonzero_columns(), expected);
+    const EdgeColumns in_far = both(r, (z.array() + 0.3).matrix());
+    expected.assign(1, n_near);
+    EXPECT_EQ(in_far.nonzero_columns(), expected);
+    EXPECT_TRUE(both(r, (z.array() + 0.15).matrix()).nonzero_columns().empty());
+
+    const std::vector<Eigen::Index> pick{n_near, 0};
+    const EdgeColumns picked = in_near.columns(pick);
+    for (int k = 0; k < 4; ++k)
+      {
+        EXPECT_EQ(picked.stress[k].col(1), in_near.stress[k].col(0));
+        EXPECT_EQ(picked.strain[k].col(0), in_near.strain[k].col(n_near));
+      }
+    for (int m = 0; m < 2; ++m)
+      EXPECT_EQ(picked.u[m].col(1), in_near.u[m].col(0));
+  }
 } // namespace rfm
