@@ -123,7 +123,6 @@ namespace rfm
     return -1;
   }
 
-
   std::vector<Eigen::Index> EdgeColumns::nonzero_columns() const
   {
     std::vector<Eigen::Index> out;

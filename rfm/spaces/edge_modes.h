@@ -118,7 +118,7 @@ namespace rfm
       for (int m = 0; m < 2; ++m)
         u[m].middleCols(at, w) = part.u[m];
     }
-    /// The columns with a nonzero value at some point in some block. Columns cut off at a
+    /// The columns with a nonzero entry in any of the ten matrices. Columns cut off at a
     /// disc are exactly zero beyond it (their evaluate() writes nothing there), so the
     /// products over points away from a vertex need only the columns that live there.
     std::vector<Eigen::Index> nonzero_columns() const;

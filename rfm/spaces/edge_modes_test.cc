@@ -285,6 +285,7 @@ namespace rfm
           << "modes " << m << ", " << n;
       }
   }
+
   // The assembly drops, block by block of points, the columns that are zero there
   // (outline_model.cc): nonzero_columns finds the columns of the discs that the points reach,
   // and columns() copies exactly those blocks.
