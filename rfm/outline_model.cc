@@ -2199,14 +2199,25 @@ namespace rfm
             }
           if (n_e == 0)
             continue;
-          const EdgeColumns ec = enrichment_columns(r, z);
+          // The columns that are nonzero on the block, as in the assembly (its rows of k
+          // and g: live, ascending, so the lower triangle stays the lower triangle).
+          EdgeColumns ec = enrichment_columns(r, z);
+          const std::vector<Eigen::Index> live = ec.nonzero_columns();
+          if (live.empty())
+            continue;
+          if (live.size() < static_cast<std::size_t>(n_e))
+            ec = ec.columns(live);
+          std::vector<Eigen::Index> rows(live.size());
+          for (std::size_t j = 0; j < live.size(); ++j)
+            rows[j] = 2 * n + live[j];
           const Eigen::MatrixXd xe = weighted({ec.strain[rr], ec.strain[zz], ec.strain[tt], ec.strain[rz]}, sq);
-          k.bottomLeftCorner(n_e, 2 * n).noalias() += xe.transpose() * xp;
-          k.bottomRightCorner(n_e, n_e).selfadjointView<Eigen::Lower>().rankUpdate(xe.transpose());
-          g.tail(n_e).noalias() -= xe.transpose() * weighted(fixed, sq);
+          k(rows, Eigen::seqN(0, 2 * n)) += xe.transpose() * xp;
+          k(rows, rows) += xe.transpose() * xe;
+          Eigen::VectorXd ge = -(xe.transpose() * weighted(fixed, sq));
           if (with_forces)
             for (int c = 0; c < 2; ++c)
-              g.tail(n_e).noalias() += ec.u[c].transpose() * f.col(c);
+              ge.noalias() += ec.u[c].transpose() * f.col(c);
+          g(rows) += ge;
         }
     };
     sweep(quadrature_, false);
