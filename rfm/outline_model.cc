@@ -1041,12 +1041,10 @@ namespace rfm
             const DisplacementStructureValues nd = as_structure(structures_.displacement(nr, nz));
             EdgeColumns ec = beyond ? section_mode_columns(nr, nz) : enrichment_columns(nr, nz);
             // The enrichment columns that ec holds, less those that are zero on the block.
-            const std::vector<Eigen::Index> live = ec.nonzero_columns();
+            const std::vector<Eigen::Index> live = ec.drop_zero_columns();
             std::vector<Eigen::Index> held(live.size());
             for (std::size_t j = 0; j < held.size(); ++j)
               held[j] = beyond ? mode_columns[static_cast<std::size_t>(live[j])] : live[j];
-            if (live.size() < static_cast<std::size_t>(ec.u[0].cols()))
-              ec = ec.columns(live);
             Eigen::VectorXd th;
             Eigen::MatrixXd f;
             if (loads_.thermal())
@@ -2202,11 +2200,9 @@ namespace rfm
           // The columns that are nonzero on the block, as in the assembly (its rows of k
           // and g: live, ascending, so the lower triangle stays the lower triangle).
           EdgeColumns ec = enrichment_columns(r, z);
-          const std::vector<Eigen::Index> live = ec.nonzero_columns();
+          const std::vector<Eigen::Index> live = ec.drop_zero_columns();
           if (live.empty())
             continue;
-          if (live.size() < static_cast<std::size_t>(n_e))
-            ec = ec.columns(live);
           std::vector<Eigen::Index> rows(live.size());
           for (std::size_t j = 0; j < live.size(); ++j)
             rows[j] = 2 * n + live[j];

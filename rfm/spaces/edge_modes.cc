@@ -149,6 +149,14 @@ namespace rfm
     return out;
   }
 
+  std::vector<Eigen::Index> EdgeColumns::drop_zero_columns()
+  {
+    std::vector<Eigen::Index> live = nonzero_columns();
+    if (live.size() < static_cast<std::size_t>(u[0].cols()))
+      *this = columns(live);
+    return live;
+  }
+
   EdgeColumns EdgeEnrichment::evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
                                        const Eigen::Ref<const Eigen::VectorXd> &z) const
   {

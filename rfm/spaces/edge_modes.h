@@ -124,6 +124,8 @@ namespace rfm
     std::vector<Eigen::Index> nonzero_columns() const;
     /// The columns `which`, in that order.
     EdgeColumns columns(const std::vector<Eigen::Index> &which) const;
+    /// Keeps the nonzero_columns() alone and returns their indices before (ascending).
+    std::vector<Eigen::Index> drop_zero_columns();
   };
 
   /// The modes at one contact edge, cut off at rho_0.
