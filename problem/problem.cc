@@ -675,7 +675,8 @@ namespace axisym
                               "vertex_cutoff", "vertex_local_degree",
                               "vertex_local_displacement_degree", "vertex_support",
                               "resonant_displacement_degree", "axis_parity", "notch_roots",
-                              "rough_vertices", "ritz_bound", "vertex_shadow", "z_degree_ratio"});
+                              "rough_vertices", "ritz_bound", "vertex_shadow", "vertex_inner_disc",
+                              "z_degree_ratio"});
         if (r.has("degree") && r.has("tolerance"))
           fail("rfm", top.at("rfm"), "give rfm.degree (fixed p) or rfm.tolerance (p rises "
                                      "until the indicator is below it), not both");
@@ -735,36 +736,20 @@ namespace axisym
           p.rfm.vertex_support = r.string("vertex_support", {"local", "section"}) == "local"
                                    ? RfmSettings::VertexSupport::local
                                    : RfmSettings::VertexSupport::section;
-        if (r.has("axis_parity"))
-          {
-            if (!r.at("axis_parity").is_boolean())
-              fail("rfm.axis_parity", r.at("axis_parity"), "must be true or false");
-            p.rfm.axis_parity = r.at("axis_parity").get<bool>();
-          }
-        if (r.has("notch_roots"))
-          {
-            if (!r.at("notch_roots").is_boolean())
-              fail("rfm.notch_roots", r.at("notch_roots"), "must be true or false");
-            p.rfm.notch_roots = r.at("notch_roots").get<bool>();
-          }
-        if (r.has("rough_vertices"))
-          {
-            if (!r.at("rough_vertices").is_boolean())
-              fail("rfm.rough_vertices", r.at("rough_vertices"), "must be true or false");
-            p.rfm.rough_vertices = r.at("rough_vertices").get<bool>();
-          }
-        if (r.has("vertex_shadow"))
-          {
-            if (!r.at("vertex_shadow").is_boolean())
-              fail("rfm.vertex_shadow", r.at("vertex_shadow"), "must be true or false");
-            p.rfm.vertex_shadow = r.at("vertex_shadow").get<bool>();
-          }
-        if (r.has("ritz_bound"))
-          {
-            if (!r.at("ritz_bound").is_boolean())
-              fail("rfm.ritz_bound", r.at("ritz_bound"), "must be true or false");
-            p.rfm.ritz_bound = r.at("ritz_bound").get<bool>();
-          }
+        // The switches: JSON booleans.
+        auto flag = [&](const char *key, bool &to) {
+          if (!r.has(key))
+            return;
+          if (!r.at(key).is_boolean())
+            fail(std::string("rfm.") + key, r.at(key), "must be true or false");
+          to = r.at(key).get<bool>();
+        };
+        flag("axis_parity", p.rfm.axis_parity);
+        flag("notch_roots", p.rfm.notch_roots);
+        flag("rough_vertices", p.rfm.rough_vertices);
+        flag("vertex_shadow", p.rfm.vertex_shadow);
+        flag("vertex_inner_disc", p.rfm.vertex_inner_disc);
+        flag("ritz_bound", p.rfm.ritz_bound);
         if (r.has("z_degree_ratio"))
           p.rfm.z_degree_ratio = r.number(
             "z_degree_ratio", "must be in [0.25, 4]: the polynomials' degree along z over the degree along r",

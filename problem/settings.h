@@ -198,6 +198,10 @@ namespace axisym
     /// without -> with: the clamped cylinder 3.2e-9 -> 9.6e-10, the stepped ring 6.6e-8 ->
     /// 4.9e-8, the stepped shaft 4.4e-6 -> 3.6e-6.
     bool vertex_shadow = true;
+    /// A second, concentric disc of stress columns at each singular vertex, of a fifth of the
+    /// cutoff's radius and the local stress columns' degree (rfm/spaces/vertex_enrichment.h:
+    /// set_inner_disc). Not at notch roots nor rough vertices. false: one disc (as before).
+    bool vertex_inner_disc = true;
     /// The displacement space's own upper bound of Phi beside Phi_L(u_h)
     /// (OutlineModel::ritz_lagrange; rfm_solve's functionals.lagrange_ritz and
     /// indicator_ritz): a displacement-only Ritz solve on the columns of u_h after the mixed

@@ -1584,6 +1584,12 @@ namespace rfm
         const bool reentrant_disc = !curved && !vertices_.back().section_support() &&
                                     v.angle > 3.14159265358979323846 * (1.0 + 1e-9);
         vertices_.back().set_hoop_shadow(options.vertex_shadow && !rough && !reentrant_disc);
+        // The inner disc (rfm.vertex_inner_disc; vertex_enrichment.h) at singular vertices
+        // whose leading exponent is below inner_disc_max_exponent (outline_model.h): not at
+        // notch roots (no modes: the field is smooth there) nor at rough ones (bounded
+        // stresses; their discs are small already, shared with the jump's field).
+        const bool strong = !v.modes.empty() && v.modes.front().lambda.real() < inner_disc_max_exponent;
+        vertices_.back().set_inner_disc(options.vertex_inner_disc && !rough && strong ? local_stress_degree : -1);
         // The traces on the faces integrate graded toward v.
         for (std::size_t e = 0; e < split.edges().size(); ++e)
           {

@@ -323,6 +323,17 @@ namespace rfm
     /// then u_z's, and the enrichment's): the prescribed tractions' work, 2 N + n_e.
     Eigen::VectorXd columns_traction_work() const;
     static constexpr Eigen::Index evaluation_block = 2048;
+    /// The inner disc (rfm.vertex_inner_disc) goes to singular vertices whose leading
+    /// exponent's real part is below this: the stronger the singularity, the rougher the
+    /// field that its modes leave near the vertex. Indicator without -> with, and the time
+    /// of rfm_solve --degree p (one thread): at lambda = 0.544 (the stepped ring's 270
+    /// degrees) 1.6e-7 -> 9.5e-8 at p = 12 (2.6 -> 3.7 s), 4.9e-8 -> 1.5e-8 at p = 16 (7.2
+    /// -> 10.6 s); at 0.711 (the clamped cylinder's 90 degrees) 3.0e-9 -> 5.8e-10 (0.5 ->
+    /// 0.8 s), 9.6e-10 -> 3.1e-11 (1.6 -> 2.9 s). At issue 24's hubs (0.937 at 186 degrees,
+    /// 0.827 at 199 degrees) it bought less than a higher degree: heated, 1.0e-5 -> 6.2e-6
+    /// at p = 12 (3.3 -> 6.6 s) and 1.0e-6 -> 6.3e-7 at p = 16 (21 -> 31 s); pressed, 6.4e-6
+    /// -> 6.0e-6 (4.6 -> 8.3 s) and 1.13e-6 -> 1.02e-6 (26 -> 38 s).
+    static constexpr double inner_disc_max_exponent = 0.8;
     /// The enrichment columns (the tail of q_s and q_u): every zone end's, then every
     /// vertex's.
     Eigen::Index n_enrichment_columns() const { return n_edge_columns() + n_vertex_columns(); }

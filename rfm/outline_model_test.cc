@@ -408,6 +408,7 @@ namespace rfm
     const double limit = -2.9002044993e-02;
     DiscretizationOptions o = problem.rfm;
     o.degree = 12;
+    o.vertex_inner_disc = false; // the numbers above are of one disc (the next test)
     ASSERT_TRUE(o.vertex_shadow);
     const OutlineModel with(problem, o);
     ASSERT_TRUE(with.ok()) << with.summary().message;
@@ -425,6 +426,40 @@ namespace rfm
     EXPECT_LT(f.indicator(), 5e-9);
     EXPECT_GT(above(g.lagrange), 8e-9);
     EXPECT_GT(g.indicator(), 8e-9);
+  }
+
+  // The inner disc (rfm.vertex_inner_disc, VertexEnrichment::set_inner_disc) at the same
+  // vertex, against the same limit: at p = 12 the indicator 3.0e-9 with one disc, 5.8e-10
+  // with the inner one, and Phi_L 3.2e-9 and 9.2e-10 above the limit.
+  TEST(OutlineModel, InnerDiscBringsTheClampedCylinderCloser)
+  {
+    const axisym::Problem problem = axisym::parse_problem(nlohmann::json::parse(R"({
+      "geometry": {"outline": [{"start": [0.0, 0.0]}, {"line_to": [0.05, 0.0], "part": "base"},
+        {"line_to": [0.05, 0.1], "part": "surface"}, {"line_to": [0.0, 0.1], "part": "end"},
+        {"line_to": [0.0, 0.0], "part": "axis"}]},
+      "boundary": {"base": {"displacement": [0.0, 0.0]}, "end": {"traction": [0.0, 1.0e7]}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
+    const double limit = -2.9002044993e-02;
+    DiscretizationOptions o = problem.rfm;
+    o.degree = 12;
+    ASSERT_TRUE(o.vertex_inner_disc);
+    const OutlineModel with(problem, o);
+    ASSERT_TRUE(with.ok()) << with.summary().message;
+    ASSERT_EQ(with.vertex_enrichments().size(), 1u);
+    const VertexEnrichment &v = with.vertex_enrichments()[0];
+    EXPECT_EQ(v.inner_degree(), 6); // the local stress columns' p / 2
+    o.vertex_inner_disc = false;
+    const OutlineModel without(problem, o);
+    ASSERT_TRUE(without.ok()) << without.summary().message;
+    EXPECT_EQ(without.vertex_enrichments()[0].inner_degree(), -1);
+    EXPECT_EQ(with.n_vertex_columns(), without.n_vertex_columns() + v.n_inner_columns());
+    const Functionals f = with.functionals(), g = without.functionals();
+    auto above = [&](const double phi) { return (phi - limit) / std::abs(limit); };
+    EXPECT_GT(above(f.lagrange), -5e-9);
+    EXPECT_LT(above(f.lagrange), 1.5e-9);
+    EXPECT_LT(f.indicator(), 1e-9);
+    EXPECT_GT(above(g.lagrange), 2.5e-9);
+    EXPECT_GT(g.indicator(), 2.5e-9);
   }
 
   namespace
@@ -521,6 +556,10 @@ namespace rfm
     DiscretizationOptions o = problem.rfm;
     o.degree = 12;
     o.vertex_support = DiscretizationOptions::VertexSupport::local; // the disc's columns
+    // One disc: the inner one's stress columns make up for part of what the stress space
+    // misses of the displacement columns' strains (with it, 'equal' below gives 4.7e-5 and an
+    // indicator of 3.9e-5).
+    o.vertex_inner_disc = false;
     ASSERT_EQ(o.vertex_local_degree, 8);
     ASSERT_EQ(o.vertex_local_displacement_degree, 4);
     const OutlineModel defaults(problem, o);
@@ -610,7 +649,12 @@ namespace rfm
   // both ways z is resolved four times more coarsely than r. sigma_zz on the axis, against the
   // FEM's (fem_solve, Q2 graded toward the vertex, level 2: 3.607754 MPa at (0, 0), 10.059864
   // MPa at (0, 0.15); levels 0 and 1 within 5e-4 of it), at p = 12: with p_z = 24, measured
-  // -0.40 % and -0.17 % (N = 325, 5 s); with p_z = 12, -10.5 % and -0.22 % (N = 169).
+  // -1.00 % and -0.10 % (N = 325, 5 s); with p_z = 12, -11.4 % and -0.4 % (N = 169). The value
+  // at (0, 0) swings about the FEM's with p (issue 24 item 5: the axis is not controlled by
+  // the r-weighted functionals): with p_z = 2 p at p = 10, 12, 14, 16 -1.26 %, -1.00 %,
+  // +0.54 %, -0.33 %; with one vertex disc (rfm.vertex_inner_disc false, as this test was
+  // first made) -1.20 %, -0.40 %, +0.81 %, -0.35 %, whence its former bound of 0.5 % here.
+  // The bound below (1.2 % at (0, 0)) holds for either; the gain over p_z = p is tenfold.
   TEST(OutlineModel, DegreeAlongZOfItsOwnBringsTheShaftsAxisToTheFem)
   {
 #if defined(__SANITIZE_ADDRESS__)
@@ -631,8 +675,8 @@ namespace rfm
     ASSERT_EQ(along_z.n_basis_functions(), 13 * 25);
     const Eigen::VectorXd s_same = same.evaluate(r, z).sigma.col(zz), s_z = along_z.evaluate(r, z).sigma.col(zz);
     EXPECT_GT(std::abs(s_same[0] / fem[0] - 1.0), 0.05);
-    for (int k = 0; k < 2; ++k)
-      EXPECT_LT(std::abs(s_z[k] / fem[k] - 1.0), 5e-3) << "at (0, " << z[k] << ")";
+    EXPECT_LT(std::abs(s_z[0] / fem[0] - 1.0), 1.2e-2) << "at (0, 0)";
+    EXPECT_LT(std::abs(s_z[1] / fem[1] - 1.0), 5e-3) << "at (0, 0.15)";
     EXPECT_LT(along_z.functionals().indicator(), 0.5 * same.functionals().indicator());
   }
 

@@ -504,6 +504,11 @@ namespace
                               {"support", e.section_support() ? "section" : "local"},
                               {"curved_faces", e.curved()},
                               {"hoop_shadow", e.hoop_shadow()}};
+                enrichment["inner_disc"] =
+                  e.inner_degree() < 0
+                    ? nlohmann::json(nullptr)
+                    : nlohmann::json{{"radius", rfm::VertexEnrichment::inner_disc_ratio * e.cutoff_radius()},
+                                     {"degree", e.inner_degree()}};
                 // The generalized stress intensities (vertex_intensity.h) over the support;
                 // not where a face is an arc (the dual modes meet the faces' conditions on
                 // lines only).

@@ -168,6 +168,7 @@ namespace
       Case{"notch_roots_not_a_bool", with("/rfm/notch_roots", "yes"), "rfm.notch_roots"},
       Case{"rough_vertices_not_a_bool", with("/rfm/rough_vertices", 1), "rfm.rough_vertices"},
       Case{"vertex_shadow_not_a_bool", with("/rfm/vertex_shadow", "yes"), "rfm.vertex_shadow"},
+      Case{"vertex_inner_disc_not_a_bool", with("/rfm/vertex_inner_disc", 0), "rfm.vertex_inner_disc"},
       Case{"z_degree_ratio_large", with("/rfm/z_degree_ratio", 5.0), "rfm.z_degree_ratio"},
       Case{"z_degree_ratio_beyond_48", with("/rfm", {{"degree", 20}, {"z_degree_ratio", 3.0}}),
            "rfm.z_degree_ratio"},
@@ -399,9 +400,11 @@ namespace
     // degree p / 2 and no parity it levels off instead: 7.3e-8, 2.5e-8, 1.9e-8, 2.6e-8 at
     // p = 10 to 16.) Without the hoop shadow (rfm.vertex_shadow, on since): with it the
     // indicator is 1.6e-9, 1.0e-9, 1.0e-7 at p = 12, 14, 16, below the tolerance at p = 12,
-    // where no lower degree is checked.
+    // where no lower degree is checked. Without the inner disc (rfm.vertex_inner_disc, on
+    // since) for the same reason.
     std::ofstream(in) << R"({
-      "rfm": {"axis_parity": false, "vertex_local_degree": 4, "vertex_shadow": false},
+      "rfm": {"axis_parity": false, "vertex_local_degree": 4, "vertex_shadow": false,
+              "vertex_inner_disc": false},
       "geometry": {"outline": [
         {"start": [0.0, 0.0]}, {"line_to": [0.05, 0.0], "part": "base"},
         {"line_to": [0.05, 0.1], "part": "surface"}, {"line_to": [0.0, 0.1], "part": "end"},

@@ -131,6 +131,20 @@ namespace rfm
            (local_degree_ + 1) * (local_degree_ + 2) / 2;
   }
 
+  Eigen::Index VertexEnrichment::n_inner_columns() const
+  {
+    if (inner_degree_ < 0)
+      return 0;
+    return static_cast<Eigen::Index>(families_.size()) * (inner_degree_ + 1) * (inner_degree_ + 2) / 2;
+  }
+
+  void VertexEnrichment::set_inner_disc(const int degree)
+  {
+    if (degree < -1)
+      throw std::invalid_argument("VertexEnrichment::set_inner_disc: the degree must be >= -1");
+    inner_degree_ = degree;
+  }
+
   Eigen::Index VertexEnrichment::n_fields() const
   {
     Eigen::Index n = 0;
@@ -327,6 +341,31 @@ namespace rfm
               l_r[face] = normal_[face][0] / cutoff_radius_;
               l_z[face] = normal_[face][1] / cutoff_radius_;
             }
+        // The stress families at this point times q (the face functions over rho_0 times
+        // `scale`), from column col on; returns the column after them.
+        auto add_families = [&](const double q, const double scale, Eigen::Index at) {
+          for (const Family &fam : families_)
+            {
+              double w = q;
+              if (fam.factors & 1)
+                w *= scale * l[0];
+              if (fam.factors & 2)
+                w *= scale * l[1];
+              if (fam.hoop)
+                out.stress[tt](k, at) = w;
+              else
+                {
+                  const std::array<double, 3> &T =
+                    fam.tangent_of >= 0 && frame_ && frame_->face_is_arc(fam.tangent_of) ? arc_dyad[fam.tangent_of]
+                                                                                       : fam.tensor;
+                  out.stress[rr](k, at) = w * T[0];
+                  out.stress[zz](k, at) = w * T[1];
+                  out.stress[rz](k, at) = w * T[2];
+                }
+              ++at;
+            }
+          return at;
+        };
         for (int deg = 0; deg <= local_degree_; ++deg)
           for (int b = 0; b <= deg; ++b)
             {
@@ -370,27 +409,25 @@ namespace rfm
                   out.strain[tt](k, c) = g * fam.vector[0] / r[k];
                   out.strain[rz](k, c) = g_z * fam.vector[0] + g_r * fam.vector[1];
                 }
-              for (const Family &fam : families_)
-                {
-                  double w = q;
-                  if (fam.factors & 1)
-                    w *= l[0];
-                  if (fam.factors & 2)
-                    w *= l[1];
-                  if (fam.hoop)
-                    out.stress[tt](k, col) = w;
-                  else
-                    {
-                      const std::array<double, 3> &T =
-                        fam.tangent_of >= 0 && frame_ && frame_->face_is_arc(fam.tangent_of) ? arc_dyad[fam.tangent_of]
-                                                                                           : fam.tensor;
-                      out.stress[rr](k, col) = w * T[0];
-                      out.stress[zz](k, col) = w * T[1];
-                      out.stress[rz](k, col) = w * T[2];
-                    }
-                  ++col;
-                }
+              col = add_families(q, 1.0, col);
               col = first + static_cast<Eigen::Index>(std::max(families_.size(), vector_families_.size()));
+            }
+        // The inner disc's stress columns: chi_in q (l_0 / rho_in)^a (l_1 / rho_in)^b T.
+        const double rho_in = inner_disc_ratio * cutoff_radius_;
+        const Cutoff chi_in = edge_cutoff(rho, rho_in);
+        if (inner_degree_ < 0 || chi_in.value == 0.0)
+          continue;
+        const double xi_in = dr / rho_in, eta_in = dz / rho_in;
+        col = n_mode_columns() + n_local_columns();
+        for (int deg = 0; deg <= inner_degree_; ++deg)
+          for (int b = 0; b <= deg; ++b)
+            {
+              double q = chi_in.value;
+              for (int i = 0; i < deg - b; ++i)
+                q *= xi_in;
+              for (int i = 0; i < b; ++i)
+                q *= eta_in;
+              col = add_families(q, 1.0 / inner_disc_ratio, col);
             }
       }
     return out;

@@ -242,6 +242,99 @@ namespace rfm
     EXPECT_NEAR(std::log(ratio) / std::log(100.0), 1.0 - 0.5444837, 1e-6);
   }
 
+  // The inner disc (set_inner_disc): stress columns alone after the local ones, zero from
+  // inner_disc_ratio rho_0 on, meeting both faces' conditions, and integrated by the
+  // vertex's own near rule as well as by one with four times the points a direction (its
+  // first layer ends at the inner rim, where the inner cutoff's third derivative jumps).
+  TEST(VertexEnrichment, InnerDiscColumnsAreStressesInTheirDiscThatMeetTheFaces)
+  {
+    const Case c;
+    const double rho_0 = 0.04, rho_in = VertexEnrichment::inner_disc_ratio * rho_0;
+    struct Faces
+    {
+      WedgeFace leaving, arriving;
+    };
+    for (const Faces f : {Faces{WedgeFace::free, WedgeFace::free}, Faces{WedgeFace::clamped, WedgeFace::free},
+                          Faces{WedgeFace::symmetry, WedgeFace::clamped}})
+      {
+        const VertexEnrichment one = make(c, f.leaving, f.arriving, 1, rho_0, 2);
+        VertexEnrichment v = one;
+        v.set_inner_disc(3);
+        EXPECT_EQ(v.inner_degree(), 3);
+        ASSERT_GT(v.n_inner_columns(), 0);
+        ASSERT_EQ(v.n_inner_columns() % 10, 0); // families times (3 + 1)(3 + 2) / 2
+        ASSERT_EQ(v.n_columns(), one.n_columns() + v.n_inner_columns());
+        // Points in the body at 0.1 to 0.9 rho_in and at 1 to 2 rho_in from the vertex.
+        Eigen::VectorXd r(8), z(8);
+        for (int k = 0; k < 8; ++k)
+          {
+            const double rho = (k < 4 ? 0.1 + 0.25 * k : 1.0 + 0.3 * (k - 4)) * rho_in;
+            const double phi = -0.4 * pi + 0.3 * pi * (k % 4) / 3.0 - 0.1 * k; // the wedge has r > r_v or z < z_v
+            r[k] = c.at.r + rho * std::cos(phi), z[k] = c.at.z + rho * std::sin(phi);
+          }
+        const EdgeColumns a = one.evaluate(r, z), b = v.evaluate(r, z);
+        const Eigen::Index n_one = one.n_columns();
+        for (int comp = 0; comp < 4; ++comp)
+          {
+            // The columns before them as they were.
+            EXPECT_EQ(b.stress[comp].leftCols(n_one), a.stress[comp]);
+            EXPECT_EQ(b.strain[comp].leftCols(n_one), a.strain[comp]);
+            // Strains zero, stresses zero beyond the inner disc.
+            EXPECT_EQ(b.strain[comp].rightCols(v.n_inner_columns()).cwiseAbs().maxCoeff(), 0.0);
+            EXPECT_EQ(b.stress[comp].rightCols(v.n_inner_columns()).bottomRows(4).cwiseAbs().maxCoeff(), 0.0);
+          }
+        for (int comp = 0; comp < 2; ++comp)
+          EXPECT_EQ(b.u[comp].rightCols(v.n_inner_columns()).cwiseAbs().maxCoeff(), 0.0);
+        // Each has a stress inside, and the traction of a free face (the leaving one, z = z_v,
+        // normal e_z; the arriving one, r = r_v, normal -e_r) vanishes on it; a symmetry face's
+        // shear too; a clamped face prescribes no traction.
+        const Eigen::VectorXd t = Eigen::VectorXd::LinSpaced(7, 0.05 * rho_in, 0.95 * rho_in);
+        const EdgeColumns lf = v.evaluate(along(c.at.r, -1.0, t), Eigen::VectorXd::Constant(t.size(), c.at.z));
+        const EdgeColumns af = v.evaluate(Eigen::VectorXd::Constant(t.size(), c.at.r), along(c.at.z, 1.0, t));
+        for (Eigen::Index j = n_one; j < v.n_columns(); ++j)
+          {
+            double scale = 0.0;
+            for (int comp = 0; comp < 4; ++comp)
+              scale = std::max(scale, b.stress[comp].col(j).topRows(4).cwiseAbs().maxCoeff());
+            ASSERT_GT(scale, 0.0) << "column " << j;
+            for (Eigen::Index k = 0; k < t.size(); ++k)
+              {
+                if (f.leaving != WedgeFace::clamped)
+                  {
+                    EXPECT_LE(std::abs(lf.stress[3](k, j)), 1e-12 * scale) << j;
+                  }
+                if (f.leaving == WedgeFace::free)
+                  {
+                    EXPECT_LE(std::abs(lf.stress[1](k, j)), 1e-12 * scale) << j;
+                  }
+                if (f.arriving != WedgeFace::clamped)
+                  {
+                    EXPECT_LE(std::abs(af.stress[3](k, j)), 1e-12 * scale) << j;
+                  }
+                if (f.arriving == WedgeFace::free)
+                  {
+                    EXPECT_LE(std::abs(af.stress[0](k, j)), 1e-12 * scale) << j;
+                  }
+              }
+          }
+        // The Gram matrix of the inner stresses (r dr dz, as the assembly weighs them) on the
+        // vertex's near rule as OutlineModel takes it (10 points) and on one with 40.
+        auto gram = [&](const Quadrature2D &q) {
+          const EdgeColumns e = v.evaluate(q.r, q.z);
+          const Eigen::VectorXd w = q.weights.cwiseProduct(q.r);
+          Eigen::MatrixXd g = Eigen::MatrixXd::Zero(v.n_inner_columns(), v.n_inner_columns());
+          for (int comp = 0; comp < 4; ++comp)
+            {
+              const Eigen::MatrixXd x = e.stress[comp].rightCols(v.n_inner_columns());
+              g.noalias() += x.transpose() * w.asDiagonal() * x;
+            }
+          return g;
+        };
+        const Eigen::MatrixXd coarse = gram(v.near_rule(10, 10)), fine = gram(v.near_rule(40, 40));
+        EXPECT_LE((coarse - fine).cwiseAbs().maxCoeff(), 1e-11 * fine.cwiseAbs().maxCoeff());
+      }
+  }
+
   TEST(VertexEnrichment, NearRuleIntegratesTheSectorsSingularIntegrands)
   {
     const Case c;
