@@ -2429,9 +2429,53 @@ namespace rfm
     // The stress-only local columns: four components per box.
     const double n_ls =
       options.local_stress_degree < 0 ? 0.0 : 4.0 * local_columns(options.local_stress_degree);
-    const double n_s = 4 * n + n_ls + n_e, n_u = 2 * n + n_e;
-    return 8.0 * (14.0 * n_q * n + 20.0 * n_eq * n_s + 4.0 * n_s * n_s + 3.0 * n_s * n_u +
-                  4.0 * n_u * n_u);
+    const double n_v = vertex_columns_bound(problem, options);
+    const double n_s = 4 * n + n_ls + n_e + n_v, n_u = 2 * n + n_e + n_v;
+    // The vertices' near points go in blocks of evaluation_block: per block the columns'
+    // values, strains and stresses (EdgeColumns) and the products' temporaries.
+    const double n_block = n_v > 0.0 ? static_cast<double>(OutlineModel::evaluation_block) : 0.0;
+    return 8.0 * (14.0 * n_q * n + 20.0 * n_eq * n_s + 30.0 * n_block * n_v + 4.0 * n_s * n_s +
+                  3.0 * n_s * n_u + 4.0 * n_u * n_u);
+  }
+
+  double vertex_columns_bound(const axisym::Problem &problem, const DiscretizationOptions &options)
+  {
+    if (!(options.vertex_max_exponent > 0.0))
+      return 0.0;
+    const axisym::Body &body = *problem.body;
+    const double nu = problem.material.poisson_ratio;
+    // As make_vertices: the local columns' degree, at most 8 stress families (3 unit tensors,
+    // a tangent dyad per free face, a normal dyad per symmetry face, the hoop stress; the
+    // displacement families are fewer), and the modes' multipliers of degree 4 at least (the
+    // section support) with the hoop shadow.
+    const int d_u = std::min(options.vertex_local_displacement_degree, options.vertex_local_degree);
+    const double d = options.vertex_local_degree < 0
+                       ? -1.0
+                       : std::min(options.vertex_local_degree, std::max(d_u, options.degree / 2));
+    const double local = d < 0.0 ? 0.0 : 8.0 * (d + 1.0) * (d + 2.0) / 2.0;
+    const double m = std::max(options.vertex_mode_degree, 4);
+    const double per_field = (m + 1.0) * (m + 2.0) / 2.0 + 1.0;
+    auto mode_columns = [&](const SingularVertex &v) {
+      const Wedge w(v.angle, wedge_face(body.conditions.at(v.part_after)),
+                    wedge_face(body.conditions.at(v.part_before)), nu);
+      double fields = 0.0;
+      for (const WedgeMode &mode : w.modes(options.vertex_max_exponent))
+        fields += mode.lambda.imag() == 0.0 ? 1.0 : 2.0;
+      return fields * per_field;
+    };
+    double n = 0.0;
+    for (const SingularVertex &v : singular_vertices(body, nu))
+      {
+        const bool inner = options.vertex_inner_disc && !v.modes.empty() &&
+                           v.modes.front().lambda.real() < OutlineModel::inner_disc_max_exponent;
+        n += mode_columns(v) + (inner ? 2.0 : 1.0) * local;
+      }
+    if (options.rough_vertices)
+      for (const SingularVertex &v : rough_vertices(body, nu))
+        n += mode_columns(v) + local;
+    if (options.notch_roots)
+      n += static_cast<double>(axisym::notch_roots(body).size()) * local;
+    return n;
   }
 
   DegreeSequence<OutlineModel> solve_outline_to_tolerance(const axisym::Problem &problem,

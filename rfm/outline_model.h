@@ -107,6 +107,21 @@ namespace rfm
   class OutlineModel
   {
   public:
+    /// The inner disc (rfm.vertex_inner_disc) goes to singular vertices whose leading
+    /// exponent's real part is below this: the stronger the singularity, the rougher the
+    /// field that its modes leave near the vertex. Indicator without -> with, and the time
+    /// of rfm_solve --degree p (one thread): at lambda = 0.544 (the stepped ring's 270
+    /// degrees) 1.6e-7 -> 9.5e-8 at p = 12 (2.6 -> 3.7 s), 4.9e-8 -> 1.5e-8 at p = 16 (7.2
+    /// -> 10.6 s); at 0.711 (the clamped cylinder's 90 degrees) 3.0e-9 -> 5.8e-10 (0.5 ->
+    /// 0.8 s), 9.6e-10 -> 3.1e-11 (1.6 -> 2.9 s). At issue 24's hubs (0.937 at 186 degrees,
+    /// 0.827 at 199 degrees) it bought less than a higher degree: heated, 1.0e-5 -> 6.2e-6
+    /// at p = 12 (3.3 -> 6.6 s) and 1.0e-6 -> 6.3e-7 at p = 16 (21 -> 31 s); pressed, 6.4e-6
+    /// -> 6.0e-6 (4.6 -> 8.3 s) and 1.13e-6 -> 1.02e-6 (26 -> 38 s).
+    static constexpr double inner_disc_max_exponent = 0.8;
+    /// Points per block where fields are evaluated at many points (and the vertices' near
+    /// points assembled): bounds the matrices of points by columns.
+    static constexpr Eigen::Index evaluation_block = 2048;
+
     /// Builds, assembles and solves at options.degree. `zones`: one per die part, the contact
     /// zone of a bilateral solve (OutlineStructures). `local`: the local boxes' columns
     /// (local_basis.h; default: die_local_basis of the zones; a search passes the boxes of its
@@ -322,18 +337,6 @@ namespace rfm
     /// int_{S_t} t . Phi r ds of every displacement column Phi (the polynomial ones, u_r's
     /// then u_z's, and the enrichment's): the prescribed tractions' work, 2 N + n_e.
     Eigen::VectorXd columns_traction_work() const;
-    static constexpr Eigen::Index evaluation_block = 2048;
-    /// The inner disc (rfm.vertex_inner_disc) goes to singular vertices whose leading
-    /// exponent's real part is below this: the stronger the singularity, the rougher the
-    /// field that its modes leave near the vertex. Indicator without -> with, and the time
-    /// of rfm_solve --degree p (one thread): at lambda = 0.544 (the stepped ring's 270
-    /// degrees) 1.6e-7 -> 9.5e-8 at p = 12 (2.6 -> 3.7 s), 4.9e-8 -> 1.5e-8 at p = 16 (7.2
-    /// -> 10.6 s); at 0.711 (the clamped cylinder's 90 degrees) 3.0e-9 -> 5.8e-10 (0.5 ->
-    /// 0.8 s), 9.6e-10 -> 3.1e-11 (1.6 -> 2.9 s). At issue 24's hubs (0.937 at 186 degrees,
-    /// 0.827 at 199 degrees) it bought less than a higher degree: heated, 1.0e-5 -> 6.2e-6
-    /// at p = 12 (3.3 -> 6.6 s) and 1.0e-6 -> 6.3e-7 at p = 16 (21 -> 31 s); pressed, 6.4e-6
-    /// -> 6.0e-6 (4.6 -> 8.3 s) and 1.13e-6 -> 1.02e-6 (26 -> 38 s).
-    static constexpr double inner_disc_max_exponent = 0.8;
     /// The enrichment columns (the tail of q_s and q_u): every zone end's, then every
     /// vertex's.
     Eigen::Index n_enrichment_columns() const { return n_edge_columns() + n_vertex_columns(); }
@@ -438,8 +441,14 @@ namespace rfm
   /// end adds per die part) times the basis size for the ~14 dense point-by-function matrices
   /// of assembly, the near-edge rules' ~20 matrices of all stress columns (two free ends per
   /// die part at most), and the saddle-point matrices with the transform's eigenvectors (R11,
-  /// R12, their factors, the Schur complement). Boundary columns are left out (a few per edge).
+  /// R12, their factors, the Schur complement), with the vertices' columns (vertex_columns_bound)
+  /// in both spaces and their blocks of near points. Boundary columns are left out (a few per
+  /// edge). (Before the vertices were counted, the stepped ring at p = 16 peaked at 0.51 GiB
+  /// against 0.22 GiB estimated, issue 24's pressed hub at 0.84 against 0.42 GiB.)
   double estimate_memory_bytes(const axisym::Problem &problem, const DiscretizationOptions &options);
+  /// An upper bound of OutlineModel::n_vertex_columns() at options (every singular, rough and
+  /// notch vertex counted, with the most stress families a vertex can have), for the estimate.
+  double vertex_columns_bound(const axisym::Problem &problem, const DiscretizationOptions &options);
 
   /// The local boxes of the zones (local_basis.h): per zone, with c its extent from the die's
   /// centre (the farther end), boxes of half size h_l = local_first_box c 2^l about the centre,

@@ -1225,6 +1225,42 @@ namespace rfm
     o.degree = 28;
     EXPECT_GT(estimate_memory_bytes(lame, o), 8 * at_14);
   }
+
+  // The vertices' columns enter the estimate, bounded from above: the stepped ring (one
+  // 270-degree vertex with its inner disc) and the clamped cylinder (a 90-degree clamped-free
+  // vertex) at p = 8 and 12 have at most vertex_columns_bound columns, and their estimate
+  // exceeds the one without vertex columns by at least the saddle point's blocks of them.
+  TEST(EstimateMemory, CountsTheVertexColumns)
+  {
+    const axisym::Problem ring = axisym::parse_problem(axisym::testing::stepped_ring());
+    const axisym::Problem clamped = axisym::parse_problem(nlohmann::json::parse(R"({
+      "geometry": {"outline": [{"start": [0.0, 0.0]}, {"line_to": [0.05, 0.0], "part": "base"},
+        {"line_to": [0.05, 0.1], "part": "surface"}, {"line_to": [0.0, 0.1], "part": "end"},
+        {"line_to": [0.0, 0.0], "part": "axis"}]},
+      "boundary": {"base": {"displacement": [0.0, 0.0]}, "end": {"traction": [0.0, 1.0e7]}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
+#if defined(__SANITIZE_ADDRESS__)
+    const std::vector<int> degrees{8}; // the Release run checks p = 12 too
+#else
+    const std::vector<int> degrees{8, 12};
+#endif
+    for (const axisym::Problem *problem : {&ring, &clamped})
+      for (const int p : degrees)
+        {
+          DiscretizationOptions o = problem->rfm;
+          o.degree = p;
+          const OutlineModel m(*problem, o);
+          ASSERT_TRUE(m.ok()) << m.summary().message;
+          const double n_v = vertex_columns_bound(*problem, o);
+          ASSERT_GT(m.n_vertex_columns(), 0);
+          EXPECT_GE(n_v, static_cast<double>(m.n_vertex_columns())) << "p = " << p;
+          EXPECT_LE(n_v, 2.0 * static_cast<double>(m.n_vertex_columns())) << "p = " << p;
+          const double with = estimate_memory_bytes(*problem, o);
+          o.vertex_max_exponent = 0.0;
+          EXPECT_EQ(vertex_columns_bound(*problem, o), 0.0);
+          EXPECT_GT(with - estimate_memory_bytes(*problem, o), 8.0 * 4.0 * n_v * n_v) << "p = " << p;
+        }
+  }
 } // namespace rfm
 
 namespace rfm
