@@ -342,7 +342,7 @@ namespace rfm
               l_z[face] = normal_[face][1] / cutoff_radius_;
             }
         // The stress families at this point times q (the face functions over rho_0 times
-        // `scale`), from column col on; returns the column after them.
+        // `scale`), from column `at` on; returns the column after them.
         auto add_families = [&](const double q, const double scale, Eigen::Index at) {
           for (const Family &fam : families_)
             {
@@ -409,7 +409,7 @@ namespace rfm
                   out.strain[tt](k, c) = g * fam.vector[0] / r[k];
                   out.strain[rz](k, c) = g_z * fam.vector[0] + g_r * fam.vector[1];
                 }
-              col = add_families(q, 1.0, col);
+              add_families(q, 1.0, first);
               col = first + static_cast<Eigen::Index>(std::max(families_.size(), vector_families_.size()));
             }
         // The inner disc's stress columns: chi_in q (l_0 / rho_in)^a (l_1 / rho_in)^b T.

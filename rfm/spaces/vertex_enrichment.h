@@ -188,12 +188,12 @@ namespace rfm
     /// space, not its displacement space. On the stepped shaft (p_z = 2 p, p = 12) the Ritz
     /// solve on the mixed solution's displacement space came within 6.6e-8 of the FEM's
     /// limit while Phi_C stayed 1.0e-6 off, and 65 % of the stress error lay within half of
-    /// rho_0 of the vertex, where one disc's local columns of degree p / 2 resolve the
-    /// non-polynomial remainder of the field (the modes' higher axisymmetric corrections
-    /// and the omegas' kinks) too coarsely. A nested disc is the hp remedy (geometric
-    /// refinement toward the vertex). Indicator at p = 12 / 16 without -> with: the stepped
-    /// ring 1.6e-7 / 4.9e-8 -> 9.8e-8 / 1.5e-8 (p = 20 without: 3.2e-8), the clamped
-    /// cylinder 3.0e-9 / 9.6e-10 -> 1.4e-9 / 3.1e-11. A third disc at 0.04 rho_0 gained
+    /// rho_0 of the vertex, where one disc's local columns of degree p / 2 resolve the rest
+    /// of the field too coarsely (what they miss was not separated further: the modes'
+    /// higher axisymmetric corrections, the omegas' kinks). A nested disc is the hp remedy
+    /// (geometric refinement toward the vertex). Indicator at p = 12 / 16 without -> with: the stepped
+    /// ring 1.6e-7 / 4.9e-8 -> 9.5e-8 / 1.5e-8 (p = 20 without: 3.2e-8), the clamped
+    /// cylinder 3.0e-9 / 9.6e-10 -> 5.8e-10 / 3.1e-11. A third disc at 0.04 rho_0 gained
     /// nothing (the shaft 9.2e-7 -> 9.0e-7 at p = 12), and displacement columns in it did
     /// no better than stresses alone.
     void set_inner_disc(int degree);
