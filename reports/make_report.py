@@ -1613,8 +1613,21 @@ def corner_case_rows(md, ax, key, title, c):
         variants.append(("rfm_z_degree_ratio", f"RFM, p_z = {ratio:g} p,"))
     degree_rows(md, ax, c, variants, cells)
     md.append("")
+    # The rate in p (issue 24 item 8 asks for exponential convergence): decades per degree
+    # between successive rows of the RFM with its vertex columns.
+    ps = numbered(c["rfm"], "p")
+    if len(ps) > 1:
+        def rate(key, a, b):
+            x, y = c["rfm"][a][key], c["rfm"][b][key]
+            return f"{math.log10(x / y) / (int(b[1:]) - int(a[1:])):.2f}" if x > 0 and y > 0 else "-"
+        steps = list(zip(ps[:-1], ps[1:]))
+        md.append("Decades per degree of the RFM (with its vertex columns) from p = "
+                  + ", ".join(f"{a[1:]} to {b[1:]}" for a, b in steps) + ": the indicator "
+                  + ", ".join(rate("indicator", a, b) for a, b in steps) + "; Phi_R's distance from the FEM's "
+                  "limit " + ", ".join(rate("energy_error_relative", a, b) for a, b in steps)
+                  + " (not a bound: it may cross the limit).")
+        md.append("")
     if axis:
-        ps = numbered(c["rfm"], "p")
         last = ps[-1]
         r = c["rfm"][last]
         on_axis = ", ".join(f"{c['rfm'][k]['axis_sample_error_relative']:.2g}" for k in ps)
