@@ -391,6 +391,21 @@ namespace rfm
     EXPECT_GT(std::abs(without.functionals().reissner / fem_energy - 1.0), 1e-3);
   }
 
+  namespace
+  {
+    // verification/problems/clamped_cylinder_tension.json without its samples: the cylinder
+    // r <= 0.05 m, 0 <= z <= 0.1 m clamped on its base, 10 MPa on its end.
+    axisym::Problem clamped_cylinder()
+    {
+      return axisym::parse_problem(nlohmann::json::parse(R"({
+        "geometry": {"outline": [{"start": [0.0, 0.0]}, {"line_to": [0.05, 0.0], "part": "base"},
+          {"line_to": [0.05, 0.1], "part": "surface"}, {"line_to": [0.0, 0.1], "part": "end"},
+          {"line_to": [0.0, 0.0], "part": "axis"}]},
+        "boundary": {"base": {"displacement": [0.0, 0.0]}, "end": {"traction": [0.0, 1.0e7]}},
+        "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
+    }
+  } // namespace
+
   // The hoop shadow (rfm.vertex_shadow, wedge_shadow.h) at the clamped cylinder's base
   // vertex (verification/problems/clamped_cylinder_tension.json: the 90-degree clamped-free
   // vertex, lambda = 0.711) against the FEM's energy limit (fem_solve, Q2 graded toward the
@@ -399,12 +414,7 @@ namespace rfm
   // without the shadow; 3.2e-9 and 3.0e-9 with it.
   TEST(OutlineModel, HoopShadowBringsTheClampedCylinderCloser)
   {
-    const axisym::Problem problem = axisym::parse_problem(nlohmann::json::parse(R"({
-      "geometry": {"outline": [{"start": [0.0, 0.0]}, {"line_to": [0.05, 0.0], "part": "base"},
-        {"line_to": [0.05, 0.1], "part": "surface"}, {"line_to": [0.0, 0.1], "part": "end"},
-        {"line_to": [0.0, 0.0], "part": "axis"}]},
-      "boundary": {"base": {"displacement": [0.0, 0.0]}, "end": {"traction": [0.0, 1.0e7]}},
-      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
+    const axisym::Problem problem = clamped_cylinder();
     const double limit = -2.9002044993e-02;
     DiscretizationOptions o = problem.rfm;
     o.degree = 12;
@@ -433,12 +443,7 @@ namespace rfm
   // with the inner one, and Phi_L 3.2e-9 and 9.2e-10 above the limit.
   TEST(OutlineModel, InnerDiscBringsTheClampedCylinderCloser)
   {
-    const axisym::Problem problem = axisym::parse_problem(nlohmann::json::parse(R"({
-      "geometry": {"outline": [{"start": [0.0, 0.0]}, {"line_to": [0.05, 0.0], "part": "base"},
-        {"line_to": [0.05, 0.1], "part": "surface"}, {"line_to": [0.0, 0.1], "part": "end"},
-        {"line_to": [0.0, 0.0], "part": "axis"}]},
-      "boundary": {"base": {"displacement": [0.0, 0.0]}, "end": {"traction": [0.0, 1.0e7]}},
-      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
+    const axisym::Problem problem = clamped_cylinder();
     const double limit = -2.9002044993e-02;
     DiscretizationOptions o = problem.rfm;
     o.degree = 12;
@@ -1233,12 +1238,7 @@ namespace rfm
   TEST(EstimateMemory, CountsTheVertexColumns)
   {
     const axisym::Problem ring = axisym::parse_problem(axisym::testing::stepped_ring());
-    const axisym::Problem clamped = axisym::parse_problem(nlohmann::json::parse(R"({
-      "geometry": {"outline": [{"start": [0.0, 0.0]}, {"line_to": [0.05, 0.0], "part": "base"},
-        {"line_to": [0.05, 0.1], "part": "surface"}, {"line_to": [0.0, 0.1], "part": "end"},
-        {"line_to": [0.0, 0.0], "part": "axis"}]},
-      "boundary": {"base": {"displacement": [0.0, 0.0]}, "end": {"traction": [0.0, 1.0e7]}},
-      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})"));
+    const axisym::Problem clamped = clamped_cylinder();
 #if defined(__SANITIZE_ADDRESS__)
     const std::vector<int> degrees{8}; // the Release run checks p = 12 too
 #else

@@ -366,21 +366,22 @@ namespace rfm
             }
           return at;
         };
+        // c x^a y^b, multiplied out in that order.
+        auto times_monomial = [](double c, const double x, const double y, const int a, const int b) {
+          for (int i = 0; i < a; ++i)
+            c *= x;
+          for (int i = 0; i < b; ++i)
+            c *= y;
+          return c;
+        };
         for (int deg = 0; deg <= local_degree_; ++deg)
           for (int b = 0; b <= deg; ++b)
             {
-              double q = chi.value;
-              for (int i = 0; i < deg - b; ++i)
-                q *= xi;
-              for (int i = 0; i < b; ++i)
-                q *= eta;
+              const double q = times_monomial(chi.value, xi, eta, deg - b, b);
               // q's gradient (chi and the monomial).
               const int a_pow = deg - b;
-              double mono = 1.0, mono_r = 0.0, mono_z = 0.0;
-              for (int i = 0; i < a_pow; ++i)
-                mono *= xi;
-              for (int i = 0; i < b; ++i)
-                mono *= eta;
+              const double mono = times_monomial(1.0, xi, eta, a_pow, b);
+              double mono_r = 0.0, mono_z = 0.0;
               if (a_pow > 0)
                 mono_r = a_pow * std::pow(xi, a_pow - 1) * std::pow(eta, b) / cutoff_radius_;
               if (b > 0)
@@ -421,14 +422,7 @@ namespace rfm
         col = n_mode_columns() + n_local_columns();
         for (int deg = 0; deg <= inner_degree_; ++deg)
           for (int b = 0; b <= deg; ++b)
-            {
-              double q = chi_in.value;
-              for (int i = 0; i < deg - b; ++i)
-                q *= xi_in;
-              for (int i = 0; i < b; ++i)
-                q *= eta_in;
-              col = add_families(q, 1.0 / inner_disc_ratio, col);
-            }
+            col = add_families(times_monomial(chi_in.value, xi_in, eta_in, deg - b, b), 1.0 / inner_disc_ratio, col);
       }
     return out;
   }
