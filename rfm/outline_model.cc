@@ -695,6 +695,17 @@ namespace rfm
         const Eigen::Index n_edge = n_edge_columns(), n_vert = n_e - n_edge;
         const Eigen::MatrixXd t_edge =
           n_edge > 0 ? orthonormal(gram_e_.topLeftCorner(n_edge, n_edge)) : Eigen::MatrixXd(0, 0);
+        // The vertices' stress-only columns (their local and inner-disc stresses) have no
+        // displacement: zero rows and columns in gram_e_. The transform leaves them out (zero
+        // rows of t_vert) instead of finding them dependent, so they neither count as dropped
+        // directions nor size the eigenproblems.
+        std::vector<Eigen::Index> moving;
+        for (Eigen::Index j = n_edge; j < n_e; ++j)
+          if (gram_e_(j, j) > 0.0)
+            moving.push_back(j);
+        std::vector<Eigen::Index> moving_in_vert(moving.size());
+        for (std::size_t j = 0; j < moving.size(); ++j)
+          moving_in_vert[j] = moving[j] - n_edge;
         Eigen::MatrixXd t_vert(n_vert, 0);
         if (n_vert > 0 && section_support())
           {
@@ -719,8 +730,8 @@ namespace rfm
             const Eigen::MatrixXd w =
               polynomials * orthonormal(polynomials.transpose() * gram_pp_ * polynomials);
             dropped = dropped_before; // counted by tu's own transform already
-            const Eigen::MatrixXd c_pe = w.transpose() * gram_pe_.rightCols(n_vert);
-            const Eigen::MatrixXd g_ee = gram_e_.bottomRightCorner(n_vert, n_vert);
+            const Eigen::MatrixXd c_pe = w.transpose() * gram_pe_(Eigen::all, moving);
+            const Eigen::MatrixXd g_ee = gram_e_(moving, moving);
             const Eigen::MatrixXd schur = g_ee - c_pe.transpose() * c_pe;
             const Eigen::VectorXd d = g_ee.diagonal().cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
             const SymmetricEigen eig = symmetric_eigen(d.asDiagonal() * schur * d.asDiagonal(), true);
@@ -729,12 +740,18 @@ namespace rfm
               ++first;
             dropped += first;
             const Eigen::Index kept = eig.values.size() - first;
-            t_vert = d.asDiagonal() * eig.vectors.rightCols(kept) *
-                     eig.values.tail(kept).cwiseSqrt().cwiseInverse().asDiagonal();
-            vertex_projection_ = -w * (c_pe * t_vert);
+            const Eigen::MatrixXd t_moving = d.asDiagonal() * eig.vectors.rightCols(kept) *
+                                             eig.values.tail(kept).cwiseSqrt().cwiseInverse().asDiagonal();
+            t_vert.setZero(n_vert, kept);
+            t_vert(moving_in_vert, Eigen::all) = t_moving;
+            vertex_projection_ = -w * (c_pe * t_moving);
           }
         else if (n_vert > 0)
-          t_vert = orthonormal(gram_e_.bottomRightCorner(n_vert, n_vert), 1e-5);
+          {
+            const Eigen::MatrixXd t_moving = orthonormal(gram_e_(moving, moving), 1e-5);
+            t_vert.setZero(n_vert, t_moving.cols());
+            t_vert(moving_in_vert, Eigen::all) = t_moving;
+          }
         te = Eigen::MatrixXd::Zero(n_e, t_edge.cols() + t_vert.cols());
         te.topLeftCorner(n_edge, t_edge.cols()) = t_edge;
         te.bottomRightCorner(n_vert, t_vert.cols()) = t_vert;
@@ -1065,12 +1082,22 @@ namespace rfm
             add_enrichment_blocks(near_mu, nr, nb, polynomial_part(ns), nd, ec,
                                   n_b > 0 ? &ns.boundary : nullptr, loads_.thermal() ? &th : nullptr,
                                   loads_.body_force() ? &f : nullptr, c, sys, &held);
-            Eigen::MatrixXd g = (ec.u[0].transpose() * (near_mu.asDiagonal() * ec.u[0]) +
-                                 ec.u[1].transpose() * (near_mu.asDiagonal() * ec.u[1])) /
+            // The Gram matrices over the columns with displacements (stress-only columns have
+            // zero rows and columns in them).
+            const std::vector<Eigen::Index> with_u = ec.displacement_columns();
+            std::vector<Eigen::Index> held_u(with_u.size());
+            for (std::size_t j = 0; j < with_u.size(); ++j)
+              held_u[j] = held[static_cast<std::size_t>(with_u[j])];
+            const Eigen::MatrixXd eu[2] = {ec.u[0](Eigen::all, with_u), ec.u[1](Eigen::all, with_u)};
+            Eigen::MatrixXd es[n_stress_components];
+            for (int k = 0; k < n_stress_components; ++k)
+              es[k] = ec.strain[k](Eigen::all, with_u);
+            Eigen::MatrixXd g = (eu[0].transpose() * (near_mu.asDiagonal() * eu[0]) +
+                                 eu[1].transpose() * (near_mu.asDiagonal() * eu[1])) /
                                 (l * l);
             for (int k = 0; k < n_stress_components; ++k)
-              g.noalias() += ec.strain[k].transpose() * (near_mu.asDiagonal() * ec.strain[k]);
-            gram_e_(held, held) += g;
+              g.noalias() += es[k].transpose() * (near_mu.asDiagonal() * es[k]);
+            gram_e_(held_u, held_u) += g;
             if (section_support())
               {
                 // The polynomial displacement columns (u_r's, then u_z's) against themselves and
@@ -1094,11 +1121,11 @@ namespace rfm
                 gram_pp_.bottomRightCorner(np, np).selfadjointView<Eigen::Lower>().rankUpdate(x1.transpose());
                 gram_pp_.bottomLeftCorner(np, np).noalias() += x1.bottomRows(m).transpose() * x0.bottomRows(m);
                 // Against the enrichment's columns.
-                Eigen::MatrixXd ge(2 * np, ec.u[0].cols());
-                const Eigen::MatrixXd wu0 = near_mu.asDiagonal() * ec.u[0], wu1 = near_mu.asDiagonal() * ec.u[1];
+                Eigen::MatrixXd ge(2 * np, eu[0].cols());
+                const Eigen::MatrixXd wu0 = near_mu.asDiagonal() * eu[0], wu1 = near_mu.asDiagonal() * eu[1];
                 Eigen::MatrixXd we[4];
                 for (int c4 = 0; c4 < 4; ++c4)
-                  we[c4] = near_mu.asDiagonal() * ec.strain[c4];
+                  we[c4] = near_mu.asDiagonal() * es[c4];
                 ge.topRows(np).noalias() = v.value[0].transpose() * wu0 / (l * l);
                 ge.topRows(np).noalias() += v.d_r[0].transpose() * we[rr];
                 ge.topRows(np).noalias() += (nr.cwiseInverse().asDiagonal() * v.value[0]).transpose() * we[tt];
@@ -1106,7 +1133,7 @@ namespace rfm
                 ge.bottomRows(np).noalias() = v.value[1].transpose() * wu1 / (l * l);
                 ge.bottomRows(np).noalias() += v.d_z[1].transpose() * we[zz];
                 ge.bottomRows(np).noalias() += v.d_r[1].transpose() * we[rz];
-                gram_pe_(Eigen::all, held) += ge;
+                gram_pe_(Eigen::all, held_u) += ge;
               }
           }
       }

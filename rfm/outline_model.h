@@ -159,7 +159,8 @@ namespace rfm
     /// The directions the orthonormalizing transform dropped as dependent (eigenvalue of the
     /// Jacobi-scaled Gram matrix below 1e-14 of its largest), stresses and displacements:
     /// {0, 0} on the raw path. Not the same as unknowns - n_kept_unknowns(), which counts
-    /// the lowered displacement degrees too.
+    /// the lowered displacement degrees and the vertices' stress-only columns (whose
+    /// displacement columns are zero) too.
     std::array<Eigen::Index, 2> n_dropped_directions() const { return n_dropped_; }
 
     /// Fields at points of the section, and of its image z < 0 when the body is mirrored

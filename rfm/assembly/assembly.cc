@@ -53,6 +53,19 @@ namespace rfm
         at_u[static_cast<std::size_t>(j)] = u_e + col;
       }
     const auto to_s = Eigen::seqN(0, s_e), to_poly = Eigen::seqN(0, n);
+    // The columns with displacements and strains (all but the stress-only ones): the products
+    // with e.u and e.strain are taken over these n_w alone. On issue 24's stepped ring at
+    // p = 12, 2/3 of the vertex columns are stresses alone.
+    const std::vector<Eigen::Index> with_u = e.displacement_columns();
+    const Eigen::Index n_w = static_cast<Eigen::Index>(with_u.size());
+    std::vector<Eigen::Index> at_w(with_u.size());
+    Eigen::MatrixXd strain_w[n_stress_components], u_w[2];
+    for (std::size_t j = 0; j < with_u.size(); ++j)
+      at_w[j] = at_u[static_cast<std::size_t>(with_u[j])];
+    for (int k = 0; k < n_stress_components; ++k)
+      strain_w[k] = e.strain[k](Eigen::all, with_u);
+    for (int m = 0; m < 2; ++m)
+      u_w[m] = e.u[m](Eigen::all, with_u);
 
     // Per component k: weighted enrichment stresses mu X_e,k and mu C X_e (row k).
     Eigen::MatrixXd wx[n_stress_components], cx[n_stress_components];
@@ -66,25 +79,26 @@ namespace rfm
             cx[k] += c(k, l) * wx[l];
       }
 
-    // Right factors of B^T: R11 border (4 n_e), R12 column border (4 n_e), R12 row
-    // border for u_r and u_z (2 n_e); of B_r^T and B_z^T: the R12 row border (2 n_e each).
-    Eigen::MatrixXd g(n_p, 10 * n_e), g_r(n_p, 2 * n_e), g_z(n_p, 2 * n_e);
+    // Right factors of B^T: R11 border (4 n_e), R12 row border for u_r and u_z (2 n_e), R12
+    // column border (4 n_w); of B_r^T and B_z^T: the R12 row border (2 n_e each).
+    const Eigen::Index strains_at = 6 * n_e;
+    Eigen::MatrixXd g(n_p, 6 * n_e + 4 * n_w), g_r(n_p, 2 * n_e), g_z(n_p, 2 * n_e);
     for (int k = 0; k < n_stress_components; ++k)
       {
         g.middleCols(k * n_e, n_e) = -(s.omega.col(k).asDiagonal() * cx[k]);
-        g.middleCols((4 + k) * n_e, n_e) = (mu.cwiseProduct(s.omega.col(k))).asDiagonal() * e.strain[k];
+        g.middleCols(strains_at + k * n_w, n_w) = (mu.cwiseProduct(s.omega.col(k))).asDiagonal() * strain_w[k];
       }
     const Eigen::VectorXd omega_r_over_r = d.omega.col(0).cwiseQuotient(r);
-    g.middleCols(8 * n_e, n_e) = d.omega_r.col(0).asDiagonal() * wx[rr] +
+    g.middleCols(4 * n_e, n_e) = d.omega_r.col(0).asDiagonal() * wx[rr] +
                                  omega_r_over_r.asDiagonal() * wx[tt] +
                                  d.omega_z.col(0).asDiagonal() * wx[rz];
-    g.middleCols(9 * n_e, n_e) =
+    g.middleCols(5 * n_e, n_e) =
       d.omega_z.col(1).asDiagonal() * wx[zz] + d.omega_r.col(1).asDiagonal() * wx[rz];
     g_r.leftCols(n_e) = d.omega.col(0).asDiagonal() * wx[rr];
     g_r.rightCols(n_e) = d.omega.col(1).asDiagonal() * wx[rz];
     g_z.leftCols(n_e) = d.omega.col(0).asDiagonal() * wx[rz];
     g_z.rightCols(n_e) = d.omega.col(1).asDiagonal() * wx[zz];
-    Eigen::MatrixXd bg(n, 10 * n_e), bg_r(n, 2 * n_e), bg_z(n, 2 * n_e);
+    Eigen::MatrixXd bg(n, g.cols()), bg_r(n, 2 * n_e), bg_z(n, 2 * n_e);
     bg.noalias() = b.value.transpose() * g;
     bg_r.noalias() = b.d_r.transpose() * g_r;
     bg_z.noalias() = b.d_z.transpose() * g_z;
@@ -109,24 +123,24 @@ namespace rfm
     sys.r11(at_s, at_s) += corner;
 
     // 2. R12 borders: int X_all . e(Phi_e) and int X_e . e(Phi_poly).
-    corner.setZero();
+    corner.setZero(n_e, n_w);
     for (int k = 0; k < n_stress_components; ++k)
       {
-        sys.r12(Eigen::seqN(k * n, n), at_u) += bg.middleCols((4 + k) * n_e, n_e);
-        corner.noalias() += wx[k].transpose() * e.strain[k];
+        sys.r12(Eigen::seqN(k * n, n), at_w) += bg.middleCols(strains_at + k * n_w, n_w);
+        corner.noalias() += wx[k].transpose() * strain_w[k];
       }
     if (n_b > 0)
       {
-        Eigen::MatrixXd border = Eigen::MatrixXd::Zero(n_b, n_e);
+        Eigen::MatrixXd border = Eigen::MatrixXd::Zero(n_b, n_w);
         for (int k = 0; k < n_stress_components; ++k)
-          border.noalias() += (mu.asDiagonal() * (*boundary)[k]).transpose() * e.strain[k];
-        sys.r12(Eigen::seqN(4 * n, n_b), at_u) += border;
+          border.noalias() += (mu.asDiagonal() * (*boundary)[k]).transpose() * strain_w[k];
+        sys.r12(Eigen::seqN(4 * n, n_b), at_w) += border;
       }
-    sys.r12(at_s, at_u) += corner;
+    sys.r12(at_s, at_w) += corner;
     sys.r12(at_s, to_poly) +=
-      (bg.middleCols(8 * n_e, n_e) + bg_r.leftCols(n_e) + bg_z.leftCols(n_e)).transpose();
+      (bg.middleCols(4 * n_e, n_e) + bg_r.leftCols(n_e) + bg_z.leftCols(n_e)).transpose();
     sys.r12(at_s, Eigen::seqN(n, n)) +=
-      (bg.middleCols(9 * n_e, n_e) + bg_r.rightCols(n_e) + bg_z.rightCols(n_e)).transpose();
+      (bg.middleCols(5 * n_e, n_e) + bg_r.rightCols(n_e) + bg_z.rightCols(n_e)).transpose();
 
     // 3. p_s rows: int X_e . (e(u0) - C s0 - e_th).
     Eigen::MatrixXd residual = initial_strain_residual(s, d, r, c);
@@ -139,13 +153,13 @@ namespace rfm
     sys.p_s(at_s) += rows;
 
     // 4. p_u rows: int s0 . e(Phi_e) - int f . Phi_e (the traction term is the caller's).
-    rows.setZero();
+    rows.setZero(n_w);
     for (int k = 0; k < n_stress_components; ++k)
-      rows.noalias() += e.strain[k].transpose() * mu.cwiseProduct(s.s0.col(k));
+      rows.noalias() += strain_w[k].transpose() * mu.cwiseProduct(s.s0.col(k));
     if (body_force)
       for (int m = 0; m < 2; ++m)
-        rows.noalias() -= e.u[m].transpose() * mu.cwiseProduct(body_force->col(m));
-    sys.p_u(at_u) += rows;
+        rows.noalias() -= u_w[m].transpose() * mu.cwiseProduct(body_force->col(m));
+    sys.p_u(at_w) += rows;
   }
 
   Eigen::Index assembly_chunk_points(Eigen::Index n_basis_functions, long l2_bytes)

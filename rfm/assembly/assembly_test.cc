@@ -255,4 +255,66 @@ namespace rfm
     EXPECT_GT(part.r11.col(4 * n + 2).cwiseAbs().maxCoeff(), 0.0);
     EXPECT_GT(part.r12.col(2 * n + 4).cwiseAbs().maxCoeff(), 0.0);
   }
+
+  // Columns with stresses alone (a vertex's local and inner-disc stresses): their products
+  // with strains and displacements are skipped. The system equals the one where those
+  // columns carry a displacement too, but for that displacement's own rows and columns
+  // (R12's and p_u's), which are zero.
+  TEST(Assembly, StressOnlyEnrichmentColumnsSkipTheirZeroDisplacements)
+  {
+    const Inputs in = make_inputs(2);
+    const Eigen::Index n = in.n, n_p = in.q.n_points(), n_e = 5;
+    EdgeColumns moving = EdgeColumns::zero(n_p, n_e);
+    for (Eigen::Index j = 0; j < n_e; ++j)
+      for (Eigen::Index k = 0; k < n_p; ++k)
+        {
+          const double r = in.q.r[k], z = in.q.z[k], a = 1.0 + j;
+          for (int c = 0; c < 4; ++c)
+            moving.stress[c](k, j) = std::cos(a * r + c * z);
+          moving.u[0](k, j) = std::sin(a * z) * r, moving.u[1](k, j) = std::cos(a * r) * z;
+          moving.strain[rr](k, j) = std::sin(a * z), moving.strain[zz](k, j) = std::cos(a * r);
+          moving.strain[tt](k, j) = std::sin(a * z);
+          moving.strain[rz](k, j) = a * std::cos(a * z) * r - a * std::sin(a * r) * z;
+        }
+    EdgeColumns still = moving; // columns 1 and 3: stresses alone
+    for (const Eigen::Index j : {1, 3})
+      {
+        for (int c = 0; c < 4; ++c)
+          still.strain[c].col(j).setZero();
+        for (int m = 0; m < 2; ++m)
+          still.u[m].col(j).setZero();
+      }
+    EXPECT_EQ(still.displacement_columns(), (std::vector<Eigen::Index>{0, 2, 4}));
+    EXPECT_EQ(moving.displacement_columns().size(), 5u);
+    auto system = [&](const EdgeColumns &e) {
+      ReissnerSystem sys;
+      sys.r11.setZero(4 * n + n_e, 4 * n + n_e);
+      sys.r12.setZero(4 * n + n_e, 2 * n + n_e);
+      sys.p_s.setZero(4 * n + n_e);
+      sys.p_u.setZero(2 * n + n_e);
+      const Eigen::MatrixXd body_force = Eigen::MatrixXd::Constant(n_p, 2, 7.85e4);
+      add_enrichment_blocks(in.mu, in.q.r, in.b, in.s, in.d, e, nullptr, nullptr, &body_force,
+                            Material{}.compliance(), sys);
+      return sys;
+    };
+    const ReissnerSystem a = system(still), b = system(moving);
+    const double s11 = b.r11.cwiseAbs().maxCoeff(), s12 = b.r12.cwiseAbs().maxCoeff();
+    EXPECT_LT((a.r11 - b.r11).cwiseAbs().maxCoeff(), 1e-13 * s11);
+    EXPECT_LT((a.p_s - b.p_s).cwiseAbs().maxCoeff(), 1e-13 * b.p_s.cwiseAbs().maxCoeff());
+    // R12 and p_u: the same but in the still columns' displacement columns, zero there.
+    Eigen::MatrixXd r12 = b.r12;
+    Eigen::VectorXd p_u = b.p_u;
+    for (const Eigen::Index j : {1, 3})
+      {
+        EXPECT_GT(b.r12.col(2 * n + j).cwiseAbs().maxCoeff(), 1e-3 * s12);
+        EXPECT_EQ(a.r12.col(2 * n + j).cwiseAbs().maxCoeff(), 0.0);
+        EXPECT_EQ(a.p_u[2 * n + j], 0.0);
+        r12.col(2 * n + j).setZero();
+        p_u[2 * n + j] = 0.0;
+      }
+    EXPECT_LT((a.r12 - r12).cwiseAbs().maxCoeff(), 1e-13 * s12);
+    EXPECT_LT((a.p_u - p_u).cwiseAbs().maxCoeff(), 1e-13 * b.p_u.cwiseAbs().maxCoeff());
+    // The still columns' stresses still do work on every other displacement.
+    EXPECT_GT(a.r12.row(4 * n + 1).cwiseAbs().maxCoeff(), 1e-3 * s12);
+  }
 } // namespace rfm

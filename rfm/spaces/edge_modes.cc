@@ -139,6 +139,19 @@ namespace rfm
     return out;
   }
 
+  std::vector<Eigen::Index> EdgeColumns::displacement_columns() const
+  {
+    std::vector<Eigen::Index> out;
+    for (Eigen::Index j = 0; j < u[0].cols(); ++j)
+      for (const Eigen::MatrixXd *m : {&u[0], &u[1], &strain[0], &strain[1], &strain[2], &strain[3]})
+        if ((m->col(j).array() != 0.0).any())
+          {
+            out.push_back(j);
+            break;
+          }
+    return out;
+  }
+
   EdgeColumns EdgeColumns::columns(const std::vector<Eigen::Index> &which) const
   {
     EdgeColumns out;

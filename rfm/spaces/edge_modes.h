@@ -122,6 +122,10 @@ namespace rfm
     /// disc are exactly zero beyond it (their evaluate() writes nothing there), so the
     /// products over points away from a vertex need only the columns that live there.
     std::vector<Eigen::Index> nonzero_columns() const;
+    /// The columns with a nonzero displacement or strain: the others are stresses alone (a
+    /// vertex's local and inner-disc stress columns, DESIGN.md 4.5), whose products with
+    /// strains and displacements vanish.
+    std::vector<Eigen::Index> displacement_columns() const;
     /// The columns `which`, in that order.
     EdgeColumns columns(const std::vector<Eigen::Index> &which) const;
     /// Keeps the nonzero_columns() alone and returns their indices before (ascending).
