@@ -1159,25 +1159,38 @@ namespace rfm
   FieldValues OutlineModel::evaluate_parts(const Eigen::Ref<const Eigen::VectorXd> &r,
                                            const Eigen::Ref<const Eigen::VectorXd> &z,
                                            const bool with_enrichment,
-                                           const Eigen::VectorXd *q_u) const
+                                           const Eigen::VectorXd *q_u,
+                                           FieldValues *polynomial) const
   {
     // In blocks of points: the basis values of the whole section's rule (48 000 points times
     // 3 (p + 1)^2 columns per component at p = 20) would take gigabytes, and their page faults
     // and zeroing took longer than the products.
     const Eigen::Index n_points = r.size();
     if (n_points <= evaluation_block)
-      return evaluate_block(r, z, with_enrichment, q_u);
-    FieldValues f;
-    f.u.resize(n_points, 2);
-    f.sigma.resize(n_points, n_stress_components);
-    f.strain.resize(n_points, n_stress_components);
+      return evaluate_block(r, z, with_enrichment, q_u, polynomial);
+    auto sized = [n_points]() {
+      FieldValues f;
+      f.u.resize(n_points, 2);
+      f.sigma.resize(n_points, n_stress_components);
+      f.strain.resize(n_points, n_stress_components);
+      return f;
+    };
+    auto place = [](FieldValues &f, const Eigen::Index k0, const FieldValues &b) {
+      const Eigen::Index m = b.u.rows();
+      f.u.middleRows(k0, m) = b.u;
+      f.sigma.middleRows(k0, m) = b.sigma;
+      f.strain.middleRows(k0, m) = b.strain;
+    };
+    FieldValues f = sized(), p;
+    if (polynomial)
+      *polynomial = sized();
     for (Eigen::Index k0 = 0; k0 < n_points; k0 += evaluation_block)
       {
         const Eigen::Index m = std::min(evaluation_block, n_points - k0);
-        const FieldValues b = evaluate_block(r.segment(k0, m), z.segment(k0, m), with_enrichment, q_u);
-        f.u.middleRows(k0, m) = b.u;
-        f.sigma.middleRows(k0, m) = b.sigma;
-        f.strain.middleRows(k0, m) = b.strain;
+        place(f, k0, evaluate_block(r.segment(k0, m), z.segment(k0, m), with_enrichment, q_u,
+                                    polynomial ? &p : nullptr));
+        if (polynomial)
+          place(*polynomial, k0, p);
       }
     return f;
   }
@@ -1185,7 +1198,8 @@ namespace rfm
   FieldValues OutlineModel::evaluate_block(const Eigen::Ref<const Eigen::VectorXd> &r,
                                            const Eigen::Ref<const Eigen::VectorXd> &z,
                                            const bool with_enrichment,
-                                           const Eigen::VectorXd *q_u) const
+                                           const Eigen::VectorXd *q_u,
+                                           FieldValues *polynomial) const
   {
     const Eigen::VectorXd &coef_u = q_u ? *q_u : q_u_;
     const Eigen::Index n = n_basis_functions(), n_b = n_stress_border();
@@ -1215,6 +1229,8 @@ namespace rfm
     f.strain.col(zz) = du_dz.col(1);
     f.strain.col(tt) = f.u.col(0).cwiseQuotient(r);
     f.strain.col(rz) = du_dz.col(0) + du_dr.col(1);
+    if (polynomial)
+      *polynomial = f;
     const Eigen::Index n_e = n_enrichment_columns();
     if (with_enrichment && n_e > 0)
       {
@@ -2002,13 +2018,17 @@ namespace rfm
 
   Eigen::VectorXd OutlineModel::integrate(const Integrand &g) const
   {
-    auto weighted = [&](const Quadrature2D &q, const bool with_enrichment) {
-      const Eigen::MatrixXd values = g(evaluate_parts(q.r, q.z, with_enrichment), q.r, q.z);
+    auto weighted = [&](const Quadrature2D &q, const FieldValues &f) {
+      const Eigen::MatrixXd values = g(f, q.r, q.z);
       return Eigen::VectorXd(values.transpose() * q.weights.cwiseProduct(q.r));
     };
-    Eigen::VectorXd sum = weighted(quadrature_, false);
+    Eigen::VectorXd sum = weighted(quadrature_, evaluate_parts(quadrature_.r, quadrature_.z, false));
     if (has_near_fields())
-      sum += weighted(near_, true) - weighted(near_, false);
+      {
+        FieldValues polynomial; // filled by the first call, before the second reads it
+        const Eigen::VectorXd full = weighted(near_, evaluate_parts(near_.r, near_.z, true, nullptr, &polynomial));
+        sum += full - weighted(near_, polynomial);
+      }
     return sum;
   }
 
@@ -2075,8 +2095,9 @@ namespace rfm
     std::array<double, 5> total = sums(quadrature_, evaluate_parts(quadrature_.r, quadrature_.z, false, q_u));
     if (has_near_fields())
       {
-        const auto full = sums(near_, evaluate_parts(near_.r, near_.z, true, q_u));
-        const auto poly = sums(near_, evaluate_parts(near_.r, near_.z, false, q_u));
+        FieldValues polynomial;
+        const auto full = sums(near_, evaluate_parts(near_.r, near_.z, true, q_u, &polynomial));
+        const auto poly = sums(near_, polynomial);
         for (int i = 0; i < 5; ++i)
           total[i] += full[i] - poly[i];
       }
@@ -2310,8 +2331,11 @@ namespace rfm
     };
     double volume = integral(quadrature_, evaluate_parts(quadrature_.r, quadrature_.z, false), true);
     if (has_near_fields())
-      volume += integral(near_, evaluate_parts(near_.r, near_.z, true), false) -
-                integral(near_, evaluate_parts(near_.r, near_.z, false), false);
+      {
+        FieldValues polynomial; // filled by the first call, before the second reads it
+        const double full = integral(near_, evaluate_parts(near_.r, near_.z, true, nullptr, &polynomial), false);
+        volume += full - integral(near_, polynomial, false);
+      }
     const EdgeQuadrature &eq = edge_quadrature_;
     const FieldValues fb = evaluate(eq.r, eq.z);
     double traction_work = 0.0, trace = 0.0;

@@ -327,12 +327,17 @@ namespace rfm
     /// The fields, without the enrichment's part when !with_enrichment (no mirroring), in
     /// blocks of at most evaluation_block points.
     /// `q_u`: displacement coefficients in place of u_h's (nullptr: u_h's).
+    /// `polynomial` (with_enrichment only; nullptr: not wanted): also the fields without the
+    /// enrichment's part, from the same basis values (the near rules' sums take both, and the
+    /// basis is the evaluation's cost: in long double, half of the hub's run at p = 16).
     FieldValues evaluate_parts(const Eigen::Ref<const Eigen::VectorXd> &r,
                                const Eigen::Ref<const Eigen::VectorXd> &z, bool with_enrichment,
-                               const Eigen::VectorXd *q_u = nullptr) const;
+                               const Eigen::VectorXd *q_u = nullptr,
+                               FieldValues *polynomial = nullptr) const;
     FieldValues evaluate_block(const Eigen::Ref<const Eigen::VectorXd> &r,
                                const Eigen::Ref<const Eigen::VectorXd> &z, bool with_enrichment,
-                               const Eigen::VectorXd *q_u = nullptr) const;
+                               const Eigen::VectorXd *q_u = nullptr,
+                               FieldValues *polynomial = nullptr) const;
     /// functionals() with the displacement coefficients q_u (nullptr: u_h's).
     Functionals functionals_at(const Eigen::VectorXd *q_u) const;
     /// int_{S_t} t . Phi r ds of every displacement column Phi (the polynomial ones, u_r's
