@@ -810,7 +810,7 @@ def bodies_section(bor, out_dir):
               "against Lame's closed form")
     md.append("")
     md.append("RFM: outline structures, polynomials orthonormal on the section (Arnoldi on sample "
-              "points, rfm/spaces/section_basis.h; long-double recurrence from p = 18), curved-triangle "
+              "points, rfm/spaces/section_basis.h; double-double recurrence from p = 18), curved-triangle "
               "quadrature. Max stress error over a 41 x 41 polar grid, relative to max |sigma|; the "
               "functional against -U.")
     md.append("")

@@ -329,7 +329,7 @@ namespace rfm
     /// `q_u`: displacement coefficients in place of u_h's (nullptr: u_h's).
     /// `polynomial` (with_enrichment only; nullptr: not wanted): also the fields without the
     /// enrichment's part, from the same basis values (the near rules' sums take both, and the
-    /// basis is the evaluation's cost: in long double, half of the hub's run at p = 16).
+    /// basis is the evaluation's cost: half of the pressed hub's run at p = 16 in long double).
     FieldValues evaluate_parts(const Eigen::Ref<const Eigen::VectorXd> &r,
                                const Eigen::Ref<const Eigen::VectorXd> &z, bool with_enrichment,
                                const Eigen::VectorXd *q_u = nullptr,

@@ -73,8 +73,7 @@ nlohmann::json run(const verification::DriverContext &context)
     fmt::print("RFM: {:>3} {:>5} {:>12} {:>11} {:>15} {:>9}\n", "p", "N", "max err", "indicator",
                "Phi_R [J/rad]", "time [s]");
     // Full mode adds p = 18 and p = 19 (N = 400, the budget): their polynomial
-    // basis runs in long double (rfm/spaces/section_basis.h), 15-16 s each on one thread
-    // (30-45 s before the recurrence ran on its band).
+    // basis runs in double-double (rfm/spaces/section_basis.h).
     std::vector<int> degrees;
     for (int p = 4; p <= (full ? 18 : 12); p += 2)
       degrees.push_back(p);

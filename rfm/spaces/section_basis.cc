@@ -67,8 +67,8 @@ namespace rfm
     // Self-check: the recurrence evaluated in double at the samples themselves must give
     // the orthonormal columns. Its rounding errors grow with p where the section fills its
     // box only in part (thick sphere, max |G - I|: 5.6e-10 at p = 12, 2.3e-7 at 16, 6.4e-6
-    // at 18, 1.8e-4 at 20); above extended_precision_threshold the evaluation runs in long
-    // double (evaluate_in<long double>).
+    // at 18, 1.8e-4 at 20); above extended_precision_threshold the evaluation runs in
+    // double-double (evaluate_double_double, section_basis_dd.cc).
     {
       const Eigen::MatrixXd val = evaluate(r, z, false, Precision::double_precision).value;
       const Eigen::MatrixXd g = val.transpose() * (w.array().max(0.0).matrix().asDiagonal() * val);
@@ -83,8 +83,11 @@ namespace rfm
                                                const Precision precision) const
   {
     // Chunks of points: a chunk's N columns of one quantity (128 x 441 doubles at p = 20:
-    // 0.45 MB) stay in L2 while the recurrence runs over them (64 in long double).
-    if (precision == Precision::long_double || (precision == Precision::automatic && extended_))
+    // 0.45 MB) stay in L2 while the recurrence runs over them (64 in double-double: two
+    // planes per quantity).
+    if (precision == Precision::double_double || (precision == Precision::automatic && extended_))
+      return evaluate_double_double(r, z, derivatives, 64);
+    if (precision == Precision::long_double)
       return evaluate_in<long double>(r, z, derivatives, 64);
     return evaluate_in<double>(r, z, derivatives, 128);
   }

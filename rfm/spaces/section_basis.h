@@ -36,11 +36,17 @@
 // 4e-7 and the solution depend on the sample points. The constructor therefore evaluates
 // the recurrence in double at its own samples and measures max |G - I| (G the Gram matrix
 // there, I up to rounding: the Arnoldi vectors are orthonormal); above
-// extended_precision_threshold, evaluate() runs the recurrence in long double (64-bit
-// significand, 2^11 times less noise; the sphere at p = 20 took 50 s instead of 21 s on one
-// core). That covers p <= 20 on the thick sphere (p = 18: stress error 2.3e-5 -> 1.1e-6;
-// p = 20: 1.1e-3 -> 4.2e-7); at p = 22 the long-double noise is back near 1e-5 (stress
-// error 1.1e-5), and a double-double recurrence would be the next step.
+// extended_precision_threshold, evaluate() runs the recurrence in double-double arithmetic
+// (about 106 bits: error-free products and sums, section_basis_dd.cc), so that the functions
+// are the recurrence's polynomials to double rounding. Long double (64-bit significand, 2^11
+// times less noise than double) did this before: the sphere's stress error fell from 1.1e-3
+// to 4.2e-7 at p = 20, but its noise was back at p = 22 (2.2e-5) and 24 (9.0e-5), and its
+// scalar x87 arithmetic took half of the pressed hub's run at p = 16. Double-double, measured
+// on the sphere (max stress error on a 41 x 41 polar grid against Lame, relative; one thread):
+// p = 20, 22, 24: 9.9e-8, 2.3e-8, 1.9e-9 (long double 2.4e-7, 2.2e-5, 9.0e-5), rfm_solve
+// --degree 20 4.7 s (14.5 s); values and derivatives agree with fourth-order central
+// differences to 1.3e-11 at p = 22 (long double 5.4e-3, double 7.8), and the evaluation
+// takes 2.5 times double's time (long double 22 times).
 //
 // Evaluation costs about 3 n N^2 flops for n points (values and both derivatives), in
 // chunks of points that stay in cache.
@@ -71,7 +77,7 @@ namespace rfm
   {
   public:
     /// Orthonormality error of the double recurrence at the samples above which evaluate()
-    /// uses long double (see the header): 1e-6 relative noise in the functions is far
+    /// uses double-double (see the header): 1e-6 relative noise in the functions is far
     /// below the accuracy rfm.tolerance asks by default (1e-8 in the indicator, about 1e-4
     /// in stress); the thick sphere at p = 16 (2.3e-7) gives the same stresses either way.
     static constexpr double extended_precision_threshold = 1e-6;
@@ -100,8 +106,9 @@ namespace rfm
 
     /// Values and first derivatives at n points (n x N each, as TensorLegendreBasis);
     /// values only (d_r, d_z empty, a third of the work) with derivatives = false.
-    /// `precision`: automatic (long double when extended_precision()), or forced.
-    enum class Precision { automatic, double_precision, long_double };
+    /// `precision`: automatic (double-double when extended_precision()), or forced (long
+    /// double: the former extended precision, kept for comparison).
+    enum class Precision { automatic, double_precision, long_double, double_double };
     BasisValues evaluate(const Eigen::Ref<const Eigen::VectorXd> &r,
                          const Eigen::Ref<const Eigen::VectorXd> &z, bool derivatives = true,
                          Precision precision = Precision::automatic) const;
@@ -111,8 +118,8 @@ namespace rfm
     /// this one's): the least-squares fit at points (r, z) with weights w >= 0 (the samples).
     /// Not C = Q^T W S: that formula takes the q as exactly orthonormal at the points, and
     /// the recurrence's coefficients, computed in double, miss that by orthonormality_error()
-    /// (3.6e-3 at p = 20 on issue 24's hub section; long-double evaluation does not change
-    /// the coefficients), which put components of degree above sub's into the rebuilt
+    /// (3.6e-3 at p = 20 on issue 24's hub section; an extended-precision evaluation does not
+    /// change the coefficients), which put components of degree above sub's into the rebuilt
     /// functions (1.3e-2 off there). Throws std::runtime_error when the weighted residual of
     /// the fit exceeds max_inclusion_residual of sub's norm there (sub is not inside this
     /// space: a residual of order 1).
@@ -121,17 +128,22 @@ namespace rfm
                                     const Eigen::Ref<const Eigen::VectorXd> &z,
                                     const Eigen::Ref<const Eigen::VectorXd> &w) const;
     /// The self-check of coefficients_of. The fit's residual is the evaluation's own noise:
-    /// measured on the hub, 5e-16 for (p, p - 1) (a prefix of the recurrence) and 3.5e-7,
-    /// 2.5e-7 for (p - 1, p) at p = 16, 20 in long double, which the header expects near 1e-5
-    /// at p = 22; 1e-4 leaves that room and still catches a space that is not inside.
+    /// measured on the hub, 6e-16 for (p, p - 1) (a prefix of the recurrence); for (p - 1, p)
+    /// 2.6e-7 at p = 16 (the lowered basis below the threshold, in double) and 9e-16 at
+    /// p = 20 (both in double-double; 2.5e-7 when the extended precision was long double).
+    /// 1e-4 leaves room for the double noise and still catches a space that is not inside.
     static constexpr double max_inclusion_residual = 1e-4;
 
     /// max |G - I| of the double recurrence at the samples (G: their Gram matrix).
     double orthonormality_error() const { return orthonormality_error_; }
-    /// Whether evaluate() runs the recurrence in long double.
+    /// Whether evaluate() runs the recurrence in double-double.
     bool extended_precision() const { return extended_; }
 
   private:
+    /// The recurrence in double-double arithmetic (about 106 bits), `chunk` points at a time.
+    BasisValues evaluate_double_double(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                       const Eigen::Ref<const Eigen::VectorXd> &z, bool derivatives,
+                                       Eigen::Index chunk) const;
     template <typename T>
     BasisValues evaluate_in(const Eigen::Ref<const Eigen::VectorXd> &r,
                             const Eigen::Ref<const Eigen::VectorXd> &z, bool derivatives,
@@ -144,6 +156,6 @@ namespace rfm
     /// Column k: h_ik for i < k above the diagonal, h_kk on it.
     Eigen::MatrixXd h_;
     double orthonormality_error_ = 0; ///< max |G - I| of the double recurrence at the samples
-    bool extended_ = false;           ///< evaluate in long double (evaluate_in<long double>)
+    bool extended_ = false;           ///< evaluate in double-double (evaluate_double_double)
   };
 } // namespace rfm

@@ -1,6 +1,6 @@
 // The section-orthonormal polynomial basis (section_basis.h): orthonormal at its samples,
 // the same span as the tensor Legendre functions, derivatives consistent with the values,
-// and evaluated in long double where the double recurrence is too noisy.
+// and evaluated in double-double where the double recurrence is too noisy.
 #include "rfm/spaces/section_basis.h"
 
 #include "problem/outline.h"
@@ -13,6 +13,7 @@
 
 #include <Eigen/QR>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -97,10 +98,10 @@ TEST(SectionBasis, DerivativesMatchCentralDifferences)
   EXPECT_LT((dz - b.d_z).cwiseAbs().maxCoeff(), 1e-6 * b.d_z.cwiseAbs().maxCoeff());
 }
 
-TEST(SectionBasis, HighDegreeSwitchesToLongDoubleAndStaysAPolynomialSpace)
+TEST(SectionBasis, HighDegreeSwitchesToExtendedPrecisionAndStaysAPolynomialSpace)
 {
   // At p = 18 on the quarter annulus the double recurrence's own orthonormality error is
-  // 6.4e-6 (measured): long double. The functions must then still reproduce the tensor
+  // 6.4e-6 (measured): double-double. The functions must then still reproduce the tensor
   // Legendre functions with their derivatives, values and derivatives alike (the double
   // recurrence's noise there is about 7e-6, with derivatives that do not match).
   const BasisCase s = make(18);
@@ -128,9 +129,11 @@ TEST(SectionBasis, HighDegreeSwitchesToLongDoubleAndStaysAPolynomialSpace)
 // section of issue 24 (two re-entrant corners; 47 % of its box) the recurrence's coefficients
 // miss orthonormality at the samples by up to 1e-2 at p = 20, and the rebuilt functions must
 // still be the lowered ones, at the samples and between them. Measured: (p, p - 1) is a
-// prefix of the full recurrence and comes back to 1.6e-15; (p - 1, p) to 2e-6 at p = 16 and
-// 20, the long-double evaluation's own noise in both bases. C = Q^T W S, the formula before,
-// rebuilt them off by 7e-6 and 6e-6 at p = 16, 1.3e-2 and 3.4e-3 at p = 20.
+// prefix of the full recurrence and comes back to 2.7e-15; (p - 1, p) to 3.5e-6 at p = 16,
+// the lowered basis's own noise (its double recurrence is below the extended-precision
+// threshold), and to 1.6e-15 at p = 20 (both in double-double; 2e-6 in long double).
+// C = Q^T W S, the formula before, rebuilt them off by 7e-6 and 6e-6 at p = 16, 1.3e-2 and
+// 3.4e-3 at p = 20.
 TEST(SectionBasis, LoweredBasisIsRebuiltExactlyFromTheFullOne)
 {
   const axisym::Outline hub = axisym::parse_problem(nlohmann::json::parse(R"({
@@ -233,4 +236,34 @@ TEST(SectionBasis, EvenInRSpansThePolynomialsInRSquared)
   // Not on a box off the axis.
   EXPECT_THROW(rfm::SectionPolynomialBasis(3, 2, 0.01, 0.2, 0.0, 0.1, s.r, s.z, w, true),
                std::invalid_argument);
+}
+
+// The extended precision is double-double (section_basis_dd.cc): at p = 22 on the quarter
+// annulus, where the double recurrence's noise is of the order of the functions' own size
+// near their steep ends, the values and derivatives the basis returns must still be one
+// polynomial's: fourth-order central differences of the values (step 1e-6, whose truncation
+// and rounding are both near 1e-11 here) match the derivatives. Measured: double-double
+// 1.3e-11 in d/dr, 1.3e-12 in d/dz; long double 5.4e-3 and 8.6e-4; double 7.8 and 1.7. The
+// long double row shows that the check sees the noise.
+TEST(SectionBasis, DoubleDoubleValuesAndDerivativesAreOnePolynomial)
+{
+  using P = rfm::SectionPolynomialBasis::Precision;
+  const BasisCase s = make(22);
+  EXPECT_TRUE(s.basis.extended_precision());
+  const Eigen::Index n = 40;
+  const Eigen::VectorXd r = s.fine.r.head(n), z = s.fine.z.head(n), one = Eigen::VectorXd::Ones(n);
+  const double h = 1e-6;
+  // Largest relative mismatch of d/dr and d/dz against the differences, with precision pr.
+  auto mismatch = [&](const P pr) {
+    auto values = [&](const double dr, const double dz) {
+      return s.basis.evaluate(r + dr * one, z + dz * one, false, pr).value;
+    };
+    const rfm::BasisValues b = s.basis.evaluate(r, z, true, pr);
+    const Eigen::MatrixXd d_r = (8.0 * (values(h, 0) - values(-h, 0)) - (values(2 * h, 0) - values(-2 * h, 0))) / (12 * h);
+    const Eigen::MatrixXd d_z = (8.0 * (values(0, h) - values(0, -h)) - (values(0, 2 * h) - values(0, -2 * h))) / (12 * h);
+    return std::max((d_r - b.d_r).cwiseAbs().maxCoeff() / b.d_r.cwiseAbs().maxCoeff(),
+                    (d_z - b.d_z).cwiseAbs().maxCoeff() / b.d_z.cwiseAbs().maxCoeff());
+  };
+  EXPECT_LT(mismatch(P::automatic), 1e-9);
+  EXPECT_GT(mismatch(P::long_double), 1e-5);
 }
