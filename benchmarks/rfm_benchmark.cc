@@ -12,6 +12,9 @@
 // Matching sizes: assembly against C = A^T B with A, B of n_q x N (one assembly block on
 // the same quadrature); solve against the Cholesky of n = 4N (the stress block M).
 //
+// BM_SectionBasis: the section basis's evaluation in double, long double and double-double
+// (points per second), on the thick sphere's quarter annulus.
+//
 // Counters per point: fraction_of_gemm / fraction_of_cholesky (this point's rate over the
 // reference's rate, both measured in this process), working_set_bytes (the matrices the
 // kernel reads and writes), threads. Context: the host's cache sizes and the thread count.
@@ -26,6 +29,9 @@
 #include "rfm/hardware.h"
 #include "rfm/outline_model.h"
 #include "rfm/quadrature/section_quadrature.h"
+#include "rfm/spaces/section_basis.h"
+#include "problem/problem.h"
+#include "problem/test_problems.h"
 
 #include <benchmark/benchmark.h>
 
@@ -179,6 +185,41 @@ namespace
     state.SetComplexityN(n);
   }
 
+  // The section-orthonormal basis's values and both derivatives (SectionPolynomialBasis::
+  // evaluate) on the thick sphere's quarter annulus (59 % of its box), whose double
+  // recurrence is noisy from p = 18 (section_basis.h): in double, in long double (the former
+  // extended precision) and in double-double (the present one), at the points of the section
+  // rule of p + 3 points a direction. items_per_second: points per second.
+  void BM_SectionBasis(benchmark::State &state)
+  {
+    using Precision = rfm::SectionPolynomialBasis::Precision;
+    const int p = static_cast<int>(state.range(0));
+    const Precision precision = static_cast<Precision>(state.range(1));
+    const axisym::Outline outline = axisym::parse_problem(axisym::testing::thick_sphere()).body->outline;
+    const axisym::BoundingBox b = outline.bounding_box();
+    rfm::SectionQuadratureOptions qo;
+    qo.n_points = p + 2;
+    const rfm::Quadrature2D samples = rfm::section_gauss(outline, qo);
+    qo.n_points = p + 3;
+    const rfm::Quadrature2D points = rfm::section_gauss(outline, qo);
+    const rfm::SectionPolynomialBasis basis(p, p, b.r_min, b.r_max, b.z_min, b.z_max, samples.r, samples.z,
+                                            samples.weights.cwiseProduct(samples.r));
+    for (auto _ : state)
+      benchmark::DoNotOptimize(basis.evaluate(points.r, points.z, true, precision));
+    state.SetItemsProcessed(state.iterations() * points.n_points());
+    state.counters["N"] = static_cast<double>(basis.n_basis_functions());
+    state.counters["orthonormality_error"] = basis.orthonormality_error();
+  }
+  void section_basis_cases(benchmark::internal::Benchmark *b)
+  {
+    using Precision = rfm::SectionPolynomialBasis::Precision;
+    b->ArgNames({"p", "precision"});
+    for (const int p : {16, 20, 24})
+      for (const Precision precision : {Precision::double_precision, Precision::long_double, Precision::double_double})
+        b->Args({p, static_cast<long>(precision)});
+    b->Unit(benchmark::kMillisecond);
+  }
+
   // One size sweep for all RFM benchmarks: p = 0..20 (N = 1..441).
   void degrees(benchmark::internal::Benchmark *b)
   {
@@ -223,6 +264,7 @@ BENCHMARK(BM_RfmAssemblyDie)->Apply(degrees);
 BENCHMARK(BM_RfmSolveDie)->Apply(degrees);
 BENCHMARK(BM_DenseGemm)->Apply(gemm_sizes);
 BENCHMARK(BM_DenseCholesky)->Apply(cholesky_sizes);
+BENCHMARK(BM_SectionBasis)->Apply(section_basis_cases);
 
 // Our own main: --threads=N (before Google Benchmark's flags), the allocator setting of
 // the drivers, and the host description in the context.
