@@ -1554,7 +1554,7 @@ def hub_temperature_rows(corners, out_dir):
               "arc since session 51 (the mapped stresses of `rfm/spaces/wedge_frame.h`, a disc of 0.37 m; "
               "the table's 'without' drops every vertex's columns): it was what held the energy and the indicator "
               "back (at p = 16 Phi_R 1.2e-5 from the limit and the indicator 1.0e-4 before). At p = 20 (outside "
-              "the report's run, for time; 133 s) the two samples are -0.47 % and -0.10 % from the FEM's L = 2, "
+              "the report's run, for time; 25 s on one thread, 133 s before the basis's double-double) the two samples are -0.47 % and -0.10 % from the FEM's L = 2, "
               "Phi_R 7.5e-9 from the limit and the indicator 5.2e-7 (before: +0.16 % and +0.16 %, 6.4e-5): the "
               "energy converges now, but the sample at the resonant vertex (0.8, 0) does not settle within the "
               "issue's 0.2 %, and rfm_solve at the defaults stops at p = 8 (exit 3), where the indicator and "
