@@ -839,8 +839,8 @@ def bodies_section(bor, out_dir):
     md.append("The box's Legendre basis is nearly dependent on the quarter annulus; with it the error "
               "flattened at high p, because the orthonormalization had to drop the small directions "
               "(the measurements are in rfm/spaces/section_basis.h and rfm/outline_model.h). The section-orthonormal "
-              "basis keeps them all. Its recurrence amplifies its own rounding in double, so it runs in long "
-              "double from p = 18. Issue 13 asks a max stress error below 1e-6 at "
+              "basis keeps them all. Its recurrence amplifies its own rounding in double, so it runs in "
+              "double-double from p = 18. Issue 13 asks a max stress error below 1e-6 at "
               f"N <= 400: here {sph['rfm'][best]['max_error_relative']:.2e} at N = "
               f"{sph['rfm'][best]['N']} (p = {best[1:]}).")
     md.append("")
