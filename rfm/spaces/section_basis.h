@@ -46,7 +46,7 @@
 // p = 20, 22, 24: 9.9e-8, 2.3e-8, 1.9e-9 (long double 2.4e-7, 2.2e-5, 9.0e-5), rfm_solve
 // --degree 20 4.7 s (14.5 s); values and derivatives agree with fourth-order central
 // differences to 1.3e-11 at p = 22 (long double 5.4e-3, double 7.8). The evaluation takes
-// 3.2-3.4 times double's time at p = 16-24, long double 24-30 times (rfm_benchmark's
+// 3.2-3.5 times double's time at p = 16-24, long double 24-31 times (rfm_benchmark's
 // BM_SectionBasis: 63, 171, 461 ms against 19, 48, 146 ms in double and 559, 1519, 3537 ms
 // in long double for values and derivatives at 5054, 7406, 10206 points).
 //
