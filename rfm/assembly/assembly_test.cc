@@ -53,6 +53,37 @@ namespace rfm
                             full);
       return sys;
     }
+
+    // n_e smooth "enrichment" columns at the rule's points, nonzero in the columns `which`
+    // (stresses, displacements and the displacements' strains of one field family each).
+    EdgeColumns smooth_columns(const Inputs &in, const Eigen::Index n_e, const std::vector<Eigen::Index> &which)
+    {
+      const Eigen::Index n_p = in.q.n_points();
+      EdgeColumns e = EdgeColumns::zero(n_p, n_e);
+      for (const Eigen::Index j : which)
+        for (Eigen::Index k = 0; k < n_p; ++k)
+          {
+            const double r = in.q.r[k], z = in.q.z[k], a = 1.0 + j;
+            for (int c = 0; c < 4; ++c)
+              e.stress[c](k, j) = std::cos(a * r + c * z);
+            e.u[0](k, j) = std::sin(a * z) * r, e.u[1](k, j) = std::cos(a * r) * z;
+            e.strain[rr](k, j) = std::sin(a * z), e.strain[zz](k, j) = std::cos(a * r);
+            e.strain[tt](k, j) = std::sin(a * z);
+            e.strain[rz](k, j) = a * std::cos(a * z) * r - a * std::sin(a * r) * z;
+          }
+      return e;
+    }
+
+    // A zero system for N polynomial functions and n_e enrichment columns (no boundary ones).
+    ReissnerSystem zero_system(const Eigen::Index n, const Eigen::Index n_e)
+    {
+      ReissnerSystem sys;
+      sys.r11.setZero(4 * n + n_e, 4 * n + n_e);
+      sys.r12.setZero(4 * n + n_e, 2 * n + n_e);
+      sys.p_s.setZero(4 * n + n_e);
+      sys.p_u.setZero(2 * n + n_e);
+      return sys;
+    }
   } // namespace
 
   TEST(Assembly, R11IsSymmetricNegativeDefinite)
@@ -178,28 +209,9 @@ namespace rfm
     const Inputs in = make_inputs(2);
     const Eigen::Index n = in.n, n_p = in.q.n_points(), n_e = 5;
     // Five smooth "enrichment" columns, of which 1 and 3 are zero.
-    EdgeColumns all = EdgeColumns::zero(n_p, n_e);
-    for (Eigen::Index j : {0, 2, 4})
-      for (Eigen::Index k = 0; k < n_p; ++k)
-        {
-          const double r = in.q.r[k], z = in.q.z[k], a = 1.0 + j;
-          for (int c = 0; c < 4; ++c)
-            all.stress[c](k, j) = std::cos(a * r + c * z);
-          all.u[0](k, j) = std::sin(a * z) * r, all.u[1](k, j) = std::cos(a * r) * z;
-          all.strain[rr](k, j) = std::sin(a * z), all.strain[zz](k, j) = std::cos(a * r);
-          all.strain[tt](k, j) = std::sin(a * z);
-          all.strain[rz](k, j) = a * std::cos(a * z) * r - a * std::sin(a * r) * z;
-        }
-    auto empty = [&]() {
-      ReissnerSystem sys;
-      sys.r11.setZero(4 * n + n_e, 4 * n + n_e);
-      sys.r12.setZero(4 * n + n_e, 2 * n + n_e);
-      sys.p_s.setZero(4 * n + n_e);
-      sys.p_u.setZero(2 * n + n_e);
-      return sys;
-    };
+    const EdgeColumns all = smooth_columns(in, n_e, {0, 2, 4});
     const Eigen::Matrix4d c = Material{}.compliance();
-    ReissnerSystem full = empty(), part = empty();
+    ReissnerSystem full = zero_system(n, n_e), part = zero_system(n, n_e);
     const Eigen::MatrixXd body_force = Eigen::MatrixXd::Constant(n_p, 2, 7.85e4); // so that p_u is not 0
     add_enrichment_blocks(in.mu, in.q.r, in.b, in.s, in.d, all, nullptr, nullptr, &body_force, c, full);
     const std::vector<Eigen::Index> held{0, 2, 4};
@@ -264,18 +276,7 @@ namespace rfm
   {
     const Inputs in = make_inputs(2);
     const Eigen::Index n = in.n, n_p = in.q.n_points(), n_e = 5;
-    EdgeColumns moving = EdgeColumns::zero(n_p, n_e);
-    for (Eigen::Index j = 0; j < n_e; ++j)
-      for (Eigen::Index k = 0; k < n_p; ++k)
-        {
-          const double r = in.q.r[k], z = in.q.z[k], a = 1.0 + j;
-          for (int c = 0; c < 4; ++c)
-            moving.stress[c](k, j) = std::cos(a * r + c * z);
-          moving.u[0](k, j) = std::sin(a * z) * r, moving.u[1](k, j) = std::cos(a * r) * z;
-          moving.strain[rr](k, j) = std::sin(a * z), moving.strain[zz](k, j) = std::cos(a * r);
-          moving.strain[tt](k, j) = std::sin(a * z);
-          moving.strain[rz](k, j) = a * std::cos(a * z) * r - a * std::sin(a * r) * z;
-        }
+    const EdgeColumns moving = smooth_columns(in, n_e, {0, 1, 2, 3, 4});
     EdgeColumns still = moving; // columns 1 and 3: stresses alone
     for (const Eigen::Index j : {1, 3})
       {
@@ -287,11 +288,7 @@ namespace rfm
     EXPECT_EQ(still.displacement_columns(), (std::vector<Eigen::Index>{0, 2, 4}));
     EXPECT_EQ(moving.displacement_columns().size(), 5u);
     auto system = [&](const EdgeColumns &e) {
-      ReissnerSystem sys;
-      sys.r11.setZero(4 * n + n_e, 4 * n + n_e);
-      sys.r12.setZero(4 * n + n_e, 2 * n + n_e);
-      sys.p_s.setZero(4 * n + n_e);
-      sys.p_u.setZero(2 * n + n_e);
+      ReissnerSystem sys = zero_system(n, n_e);
       const Eigen::MatrixXd body_force = Eigen::MatrixXd::Constant(n_p, 2, 7.85e4);
       add_enrichment_blocks(in.mu, in.q.r, in.b, in.s, in.d, e, nullptr, nullptr, &body_force,
                             Material{}.compliance(), sys);
