@@ -305,6 +305,16 @@ namespace
                "|Phi_L - Phi_C| / |Phi_R| with it {:.3g}\n", ritz, phi.lagrange, indicator);
   }
 
+  // The result after a numerical failure (exit 3): to --output when given, else to stdout as
+  // a success's would go (DESIGN.md 7: any partial history is still written).
+  void write_failed_result(const std::string &output_path, const nlohmann::json &result)
+  {
+    if (!output_path.empty())
+      axisym::write_json_atomically(output_path, result);
+    else
+      std::cout << result.dump(2) << '\n';
+  }
+
   int solve_outline(axisym::Problem problem, const std::optional<double> target_indicator,
                     const std::string &output_path, const std::string &vtu_directory)
   {
@@ -338,8 +348,7 @@ namespace
           {
             nlohmann::json failed = {{"solver", "rfm"}, {"problem", problem.source},
                                      {"diagnostics", {{"status", "failed"}, {"message", several->message}}}};
-            if (!output_path.empty())
-              axisym::write_json_atomically(output_path, failed);
+            write_failed_result(output_path, failed);
             fmt::print(stderr, "rfm_solve: numerical failure: {}\n", several->message);
             return 3;
           }
@@ -368,8 +377,7 @@ namespace
               history.push_back({{"half_width", step.half_width}, {"force", step.force},
                                  {"edge_intensity", step.edge_intensity}});
             failed["contact"] = {{"iterations", history}};
-            if (!output_path.empty())
-              axisym::write_json_atomically(output_path, failed);
+            write_failed_result(output_path, failed);
             fmt::print(stderr, "rfm_solve: numerical failure: {}\n", search->message);
             return 3;
           }
@@ -396,8 +404,7 @@ namespace
             nlohmann::json failed = {{"solver", "rfm"}, {"problem", problem.source},
                                      {"diagnostics", {{"status", "failed"}, {"message", checked->message}}}};
             failed["contact"] = rfm::to_json(*checked, problem, 0);
-            if (!output_path.empty())
-              axisym::write_json_atomically(output_path, failed);
+            write_failed_result(output_path, failed);
             fmt::print(stderr, "rfm_solve: numerical failure: {}\n", checked->message);
             return 3;
           }
@@ -633,8 +640,7 @@ namespace
         if (!vertex_warning.empty())
           result["diagnostics"]["message"] =
             result["diagnostics"]["message"].get<std::string>() + "; " + vertex_warning;
-        if (!output_path.empty())
-          axisym::write_json_atomically(output_path, result);
+        write_failed_result(output_path, result);
         fmt::print(stderr, "rfm_solve: numerical failure: {}\n",
                    result["diagnostics"]["message"].get<std::string>());
         return 3;
@@ -947,8 +953,7 @@ int main(int argc, char **argv)
                                                  : model_ptr->summary().message;
           result["diagnostics"]["status"] = "failed";
           result["diagnostics"]["message"] = msg;
-          if (!output_path.empty())
-            axisym::write_json_atomically(output_path, result);
+          write_failed_result(output_path, result);
           fmt::print(stderr, "rfm_solve: numerical failure: {}\n", msg);
           return 3;
         }
@@ -1003,6 +1008,8 @@ int main(int argc, char **argv)
       if (!finite)
         {
           fmt::print(stderr, "rfm_solve: numerical failure: non-finite functional\n");
+          if (output_path.empty()) // written to --output above
+            std::cout << result.dump(2) << '\n';
           return 3;
         }
       if (output_path.empty())

@@ -272,6 +272,24 @@ namespace
     EXPECT_TRUE(fs::exists(dir / "vtu" / "rfm_solution.vtu"));
   }
 
+  // A numerical failure without --output writes the result, with status "failed", to stdout
+  // as a success's would go (DESIGN.md 7: any partial history is still written). The
+  // sphere asked for 1e-12 within p <= 4 gives up at once (the rate predicts a higher p).
+  TEST(RfmSolveCli, NumericalFailureWritesTheResultToStdout)
+  {
+    const fs::path dir = scratch("failed_stdout");
+    const fs::path in = dir / "problem.json", printed = dir / "stdout.json";
+    std::ofstream(in) << sphere_with("/rfm", {{"tolerance", 1e-12}, {"max_degree", 4}});
+    const Outcome o =
+      axisym::testing::run_command("(" + std::string(RFM_SOLVE) + " " + in.string() + " > " + printed.string() + ")");
+    EXPECT_EQ(o.status, 3) << o.err;
+    EXPECT_NE(o.err.find("numerical failure"), std::string::npos) << o.err;
+    std::ifstream f(printed);
+    const nlohmann::json r = nlohmann::json::parse(f);
+    EXPECT_EQ(r.at("diagnostics").at("status"), "failed");
+    EXPECT_FALSE(r.at("diagnostics").at("message").get<std::string>().empty());
+  }
+
   // A notch root (rfm.notch_roots) is listed in diagnostics.notch_roots with its columns; with
   // the option off it has none and is not listed.
   TEST(RfmSolveCli, NotchRootIsListedWithItsColumns)
