@@ -1580,6 +1580,21 @@ namespace rfm
         // without). No limit from the arc's curvature: a pressed arc meeting a step at 288
         // degrees (radius 0.158 m, room 0.05 m) gave 5.2e-3, 5.7e-5 and 1.7e-5 at p = 16 with
         // an eighth, a quarter of the radius and the whole room.
+        // That quarter is what stalls the pressed hub's stresses near its 186-degree vertex
+        // (measured in session 61 against the FEM's L = 3 on 55 points 4-64 mm from it; the
+        // largest error over the largest stress at 4 / 16 mm): disc 0.136 m (this rule),
+        // p = 12, 16, 20: 3.2e-2 / 9.2e-3, 2.9e-2 / 1.1e-2, 2.4e-2 / 1.0e-2, where the
+        // whole room (0.366 m, the jump's disc then 0.176 m) gives 5.4e-3 / 5.9e-3, 4.8e-3
+        // / 4.8e-3, 4.3e-3 / 3.5e-3. The arc and its mapped modes are not the cause: with the
+        // outer arc replaced by its tangent at the vertex (the same 186 degrees, straight
+        // faces) a disc of 0.136 m stalls alike (2.2e-2 / 1.0e-2 at p = 20) and the whole
+        // room converges (1.2e-3 / 9.6e-4). But the smaller jump disc costs the rest of the
+        // section (at p = 20 on the 6841-point grid the median error 9.3e-5 -> 1.8e-4, the
+        // largest 1.1e-2 -> 1.9e-3), the sample (0.8, 0) and the energy, and discs that
+        // overlap (0.366 and 0.388 m) made the indicator at p = 16 6.9e-6 against 1.1e-6: the
+        // vertex and the jump each need a large disc, and their rules must then share the
+        // overlap (not done). Shares between a quarter and 0.55 of the distance moved the
+        // indicator at p = 16 between 8.2e-7 and 1.2e-6 and the sample (0.8, 0) by +-0.4 %.
         if (curved)
           for (const axisym::Point x : jump_points)
             {
