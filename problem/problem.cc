@@ -676,6 +676,7 @@ namespace axisym
                               "vertex_local_displacement_degree", "vertex_support",
                               "resonant_displacement_degree", "axis_parity", "notch_roots",
                               "rough_vertices", "ritz_bound", "vertex_shadow", "vertex_inner_disc",
+                              "vertex_disc_overlap",
                               "z_degree_ratio"});
         if (r.has("degree") && r.has("tolerance"))
           fail("rfm", top.at("rfm"), "give rfm.degree (fixed p) or rfm.tolerance (p rises "
@@ -749,6 +750,7 @@ namespace axisym
         flag("rough_vertices", p.rfm.rough_vertices);
         flag("vertex_shadow", p.rfm.vertex_shadow);
         flag("vertex_inner_disc", p.rfm.vertex_inner_disc);
+        flag("vertex_disc_overlap", p.rfm.vertex_disc_overlap);
         flag("ritz_bound", p.rfm.ritz_bound);
         if (r.has("z_degree_ratio"))
           p.rfm.z_degree_ratio = r.number(

@@ -202,6 +202,15 @@ namespace axisym
     /// cutoff's radius and the local stress columns' degree (rfm/spaces/vertex_enrichment.h:
     /// set_inner_disc). Not at notch roots nor rough vertices. false: one disc (as before).
     bool vertex_inner_disc = true;
+    /// A vertex whose faces include an arc and a rough vertex with curved faces where a
+    /// traction jumps (issue 24's hub: its 186-degree vertex between the outer arc and the
+    /// taper, 0.54 m from the 133-degree vertex where the inner arc's pressure ends) each take
+    /// their whole room, and their discs may overlap: the two polar rules break at each
+    /// other's rims, with twice the points where the rings cross them
+    /// (OutlineModel::make_vertices). false:
+    /// the discs are kept apart, the arc's vertex taking at least a quarter of the distance
+    /// and the jump the rest (as before).
+    bool vertex_disc_overlap = true;
     /// The displacement space's own upper bound of Phi beside Phi_L(u_h)
     /// (OutlineModel::ritz_lagrange; rfm_solve's functionals.lagrange_ritz and
     /// indicator_ritz): a displacement-only Ritz solve on the columns of u_h after the mixed

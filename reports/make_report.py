@@ -1715,7 +1715,11 @@ def traction_jump_rows(corners, out_dir):
           "`axisym::rough_vertices`), the vertex takes its modes and local columns as a singular vertex "
           "does, in a disc clear of the other vertices', which the jump's field shares "
           "(`rfm.rough_vertices`; 'without the rough vertex' switches that off, the jump's field then "
-          "with its own disc); inside that disc the polynomials' products are taken on the disc's rule "
+          "with its own disc). On the hub that disc and the one of the 186-degree vertex between the outer "
+          "arc and the taper both take their whole room and overlap, their polar rules broken at each "
+          "other's rims (`rfm.vertex_disc_overlap`, README; before, the arc's vertex was held to a "
+          "quarter of the distance, 0.136 m, and the stresses near it stalled at 1-2 % of the largest "
+          "with p); inside the rough disc the polynomials' products are taken on the disc's rule "
           "too, blended with the section's by a partition of unity (`rfm::blend_disc_rules`). The "
           "pressure band's straight jump is a half plane, not rough.", ""]
     fig, axes = plt.subplots(1, len(cases), figsize=(5 * len(cases), 4), squeeze=False)

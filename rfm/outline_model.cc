@@ -377,6 +377,7 @@ namespace rfm
       // The vertices' rules are split into panels (radial layers, angular quarters): on each,
       // a product of a column with a polynomial of degree p has about half that degree.
       const int n_vertex = n_near / 2 + 2; // the stepped ring: Phi_R within 1e-10 of 40 points
+      const int n_rims = 2 * n_vertex;   // beyond the rims of overlapping discs (below)
       // Where each rule pulls (the partition of unity below): its centre, its radius and
       // whether it covers the whole section.
       struct Pull
@@ -402,14 +403,35 @@ namespace rfm
           circles.push_back({jumps_[i].vertex(), jumps_[i].cutoff_radius()});
       for (const ResonantVertex &v : resonances_)
         circles.push_back({v.vertex(), v.cutoff_radius()});
+      // The circles other than the disc about `at` of radius rho that cross it.
+      auto overlapping = [&circles](const axisym::Point at, const double rho) {
+        std::vector<VertexEnrichment::Circle> out;
+        for (const VertexEnrichment::Circle &c : circles)
+          {
+            const double d = std::hypot(c.centre.r - at.r, c.centre.z - at.z);
+            if (d > 1e-12 * rho && d < rho + c.radius)
+              out.push_back(c);
+          }
+        return out;
+      };
       for (const VertexEnrichment &v : vertices_)
         {
           std::vector<VertexEnrichment::Circle> crossed = circles;
           for (const VertexEnrichment &w : vertices_)
             if (&w != &v && w.section_support())
               crossed.push_back({w.vertex(), w.cutoff_radius()});
+          // A curved vertex's rule breaks at the rims of the discs that overlap it
+          // (rfm.vertex_disc_overlap; make_vertices), with twice the points a direction from
+          // the first ring that crosses one outward. On issue 24's hub at p = 16 (its arc
+          // vertex's disc and the jump's overlapping) the indicator was 7.9e-7, 7.2e-7, 7.3e-7
+          // with 12, 18, 24 points on the whole of both rules, 7.2e-7 and 7.4e-7 with 18 and
+          // 24 beyond the crossing alone (15.1 s, 16.2 s against 19.6 s with 18 on the whole
+          // rules); 18 left ten more Gauss points moving Phi_R at p = 8 by 1.06e-6 (the
+          // rough vertex's test asks 1e-6; 24: within it). 1.13e-6 with the discs apart.
+          const std::vector<VertexEnrichment::Circle> rims =
+            v.curved() ? overlapping(v.vertex(), v.cutoff_radius()) : std::vector<VertexEnrichment::Circle>{};
           Quadrature2D q = v.section_support() ? v.section_rule(n_vertex, n_vertex, crossed)
-                                               : v.near_rule(n_vertex, n_vertex);
+                                               : v.near_rule(n_vertex, n_vertex, 8, rims, n_rims);
           if (rough_[static_cast<std::size_t>(&v - vertices_.data())])
             rough_discs.push_back({q, v.vertex().r, v.vertex().z, v.cutoff_radius()});
           any_section |= v.section_support();
@@ -423,7 +445,9 @@ namespace rfm
             // Three radial layers: the jump's products are bounded (degree 0 times
             // polynomials, rho log rho in the hoop strain); on the hub of issue 24 at p = 16
             // the functionals agree with eight layers' to 10 digits, at 0.8 s less.
-            Quadrature2D q = jumps_[i].near_rule(n_vertex, n_vertex, 3);
+            const std::vector<VertexEnrichment::Circle> rims =
+              overlapping(jumps_[i].vertex(), jumps_[i].cutoff_radius());
+            Quadrature2D q = jumps_[i].near_rule(n_vertex, n_vertex, 3, rims, n_rims);
             pulls.push_back({jumps_[i].vertex(), jumps_[i].cutoff_radius(), false});
             total += q.weights.size();
             rules.push_back(std::move(q));
@@ -436,7 +460,8 @@ namespace rfm
           // none (rho = rho_0 s^2 alone) an indicator of 4.9e-6 instead of 4.6e-10 at p = 20,
           // and 10 points a direction instead of the vertices' 17 there 2.9e-3. Four layers
           // cost the heated hub 2.9 s more at p = 16.
-          Quadrature2D q = v.near_rule(n_vertex, n_vertex, 1);
+          const std::vector<VertexEnrichment::Circle> rims = overlapping(v.vertex(), v.cutoff_radius());
+          Quadrature2D q = v.near_rule(n_vertex, n_vertex, 1, rims, n_rims);
           pulls.push_back({v.vertex(), v.cutoff_radius(), false});
           total += q.weights.size();
           rules.push_back(std::move(q));
@@ -1527,6 +1552,24 @@ namespace rfm
     bool has_die = false;
     for (const auto &[part, condition] : body.conditions)
       has_die |= condition.kind == Kind::die;
+    // Whether the discs of curved vertices and rough ones may overlap (rfm.vertex_disc_overlap;
+    // the comment at the jump's rule below): at a jump point x, a rough vertex with an arc
+    // face, every arc free of prescribed displacements (it gets a curved frame, whose polar
+    // rule breaks at other discs' rims).
+    const bool overlap = options.vertex_disc_overlap;
+    auto curved_rough_at = [&](const axisym::Point x) {
+      bool rough_here = false;
+      for (std::size_t i = n_singular; i < vertices.size(); ++i)
+        rough_here |= std::hypot(vertices[i].at.r - x.r, vertices[i].at.z - x.z) < tol;
+      const auto [a, l] = edges_at(edges, x, tol);
+      if (!rough_here || !a || !l)
+        return false;
+      bool arc = false, free_arcs = true;
+      for (const axisym::OutlineEdge *e : {a, l})
+        if (e->kind == axisym::OutlineEdge::Kind::arc)
+          arc = true, free_arcs &= wedge_face(body.conditions.at(e->part)) == WedgeFace::free;
+      return arc && free_arcs;
+    };
     // The smooth local columns' degrees: displacements at rfm.vertex_local_displacement_degree
     // (at most rfm.vertex_local_degree), stresses at p / 2 between that and
     // rfm.vertex_local_degree. Grown with p: at the defaults the clamped cylinder's indicator
@@ -1565,9 +1608,14 @@ namespace rfm
         for (const EdgeEnrichment &en : enrichments_)
           room = std::min(room, std::hypot(en.frame().r - v.at.r, en.frame().z - v.at.z) -
                                   en.cutoff_radius());
+        // A rough vertex keeps clear of the discs before it, but with curved faces it may
+        // overlap those of curved vertices (rfm.vertex_disc_overlap; below): both polar rules
+        // then break at each other's rims. Neither disc reaches the other's vertex (each
+        // room keeps off the other edges).
         if (rough)
           for (const VertexEnrichment &w : vertices_)
-            room = std::min(room, std::hypot(w.vertex().r - v.at.r, w.vertex().z - v.at.z) - w.cutoff_radius());
+            if (!(overlap && curved && w.curved()))
+              room = std::min(room, std::hypot(w.vertex().r - v.at.r, w.vertex().z - v.at.z) - w.cutoff_radius());
         // A vertex on an arc leaves each traction jump elsewhere the room it would have
         // alone (its faces, halved where their other ends jump too, and the distance to every
         // other edge; make_traction_jumps), but takes at least a quarter of the distance: the
@@ -1580,24 +1628,34 @@ namespace rfm
         // without). No limit from the arc's curvature: a pressed arc meeting a step at 288
         // degrees (radius 0.158 m, room 0.05 m) gave 5.2e-3, 5.7e-5 and 1.7e-5 at p = 16 with
         // an eighth, a quarter of the radius and the whole room.
-        // That quarter is what stalls the pressed hub's stresses near its 186-degree vertex
-        // (measured in session 61 against the FEM's L = 3 on 55 points 4-64 mm from it; the
-        // largest error over the largest stress at 4 / 16 mm): disc 0.136 m (this rule),
-        // p = 12, 16, 20: 3.2e-2 / 9.2e-3, 2.9e-2 / 1.1e-2, 2.4e-2 / 1.0e-2, where the
-        // whole room (0.366 m, the jump's disc then 0.176 m) gives 5.4e-3 / 5.9e-3, 4.8e-3
-        // / 4.8e-3, 4.3e-3 / 3.5e-3. The arc and its mapped modes are not the cause: with the
-        // outer arc replaced by its tangent at the vertex (the same 186 degrees, straight
-        // faces) a disc of 0.136 m stalls alike (2.2e-2 / 1.0e-2 at p = 20) and the whole
-        // room converges (1.2e-3 / 9.6e-4). But the smaller jump disc costs the rest of the
-        // section (at p = 20 on the 6841-point grid the median error 9.3e-5 -> 1.8e-4, the
-        // largest 1.1e-2 -> 1.9e-3), the sample (0.8, 0) and the energy, and discs that
-        // overlap (0.366 and 0.388 m) made the indicator at p = 16 6.9e-6 against 1.1e-6: the
-        // vertex and the jump each need a large disc, and their rules must then share the
-        // overlap (not done). Shares between a quarter and 0.55 of the distance moved the
-        // indicator at p = 16 between 8.2e-7 and 1.2e-6 and the sample (0.8, 0) by +-0.4 %.
+        // That quarter is what stalled the pressed hub's stresses near its 186-degree vertex
+        // (measured against the FEM's L = 3 on 55 points 4-64 mm from it; the largest error
+        // over the largest stress at 4 / 16 mm): disc 0.136 m (this rule), p = 12, 16, 20:
+        // 3.2e-2 / 9.2e-3, 2.9e-2 / 1.1e-2, 2.4e-2 / 1.0e-2, where the whole room (0.366 m,
+        // the jump's disc then 0.176 m) gave 5.4e-3 / 5.9e-3, 4.8e-3 / 4.8e-3, 4.3e-3 /
+        // 3.5e-3. Not the arc and its mapped modes: with the outer arc replaced by its
+        // tangent at the vertex (the same 186 degrees, straight faces) a disc of 0.136 m
+        // stalls alike (2.2e-2 / 1.0e-2 at p = 20) and the whole room converges (1.2e-3 /
+        // 9.6e-4). But the jump's smaller disc cost the rest of the section (at p = 20 on a
+        // grid of 6841 points the median error 9.3e-5 -> 1.8e-4), and shares of the distance
+        // between a quarter and 0.55 moved the indicator at p = 16 only between 8.2e-7 and
+        // 1.2e-6. Both need a large disc: with rfm.vertex_disc_overlap (below, and at the
+        // rough vertex above) each takes its whole room, 0.366 and 0.388 m, and where they
+        // overlap the two polar rules break at each other's rims (WedgeFrame::near_rule),
+        // which they need (overlapping without the breaks: 6.9e-6 at p = 16). Indicator at
+        // p = 8 to 20 apart -> overlapping: 4.9e-5, 1.7e-5, 6.4e-6, 2.2e-6, 1.13e-6, 7.1e-7,
+        // 5.3e-7 -> 2.5e-5, 1.06e-5, 4.3e-6, 1.5e-6, 7.4e-7, 3.6e-7, 2.1e-7 (rfm_solve, p =
+        // 16 in 15.9 s against 12.0 s, p = 20 in 35.2 s against 28.6 s); near the vertex 1.3e-2
+        // / 9.2e-3, 5.0e-3 / 4.7e-3, 4.9e-3 / 3.0e-3 at p = 12, 16, 20 (the rules' points
+        // still move these: 4.3e-3 / 5.5e-3 at p = 12 with 1.5 times the points beyond the
+        // rims); on the grid at p = 20 the largest error 1.1e-2 -> 2.1e-3, the median 9.3e-5
+        // -> 8.5e-5, the rms 3.5e-4 -> 1.6e-4 (p = 16: 1.2e-2 -> 3.6e-3, 2.0e-4 -> 1.9e-4,
+        // 4.2e-4 -> 2.8e-4).
         if (curved)
           for (const axisym::Point x : jump_points)
             {
+              if (overlap && curved_rough_at(x))
+                continue;
               const double d = std::hypot(x.r - v.at.r, x.z - v.at.z);
               const auto [a_x, l_x] = edges_at(edges, x, tol);
               if (!(d > tol) || !a_x || !l_x)

@@ -890,7 +890,11 @@ namespace rfm
     for (const double s : {0.1, 10.0})
       {
         const auto [indicator_s, sigma_s] = solve(s);
-        EXPECT_NEAR(indicator_s / indicator, 1.0, 1e-6) << "scale " << s;
+        // 3e-6: with the arc vertex's disc overlapping the jump's (rfm.vertex_disc_overlap)
+        // the ratio is 1 - 1.6e-6 and 1 - 1.2e-6 at 0.1 and 10 (within 1e-6 with the discs
+        // apart); the columns of the two discs nearly repeat each other in the overlap, and
+        // rounding moves their nearly cancelling combinations.
+        EXPECT_NEAR(indicator_s / indicator, 1.0, 3e-6) << "scale " << s;
         EXPECT_LT((sigma_s - sigma).cwiseAbs().maxCoeff(), 1e-6 * sigma.cwiseAbs().maxCoeff())
           << "scale " << s;
       }
@@ -959,8 +963,9 @@ namespace rfm
 
   // A rough vertex where a traction jumps (rfm.rough_vertices): issue 24's hub, whose inner
   // arc's pressure ends at the bore at 133.4 degrees (lambda = 1.905 +- 0.388 i). Its columns
-  // keep both faces free (the pressure is the particular solution's), its disc stays clear
-  // of the other vertices' discs and the jump takes the same one, and the energy hardly
+  // keep both faces free (the pressure is the particular solution's), its disc overlaps only
+  // the arc vertex's (whose polar rules break at each other's rims; clear of all with
+  // rfm.vertex_disc_overlap false) and the jump takes the same one, and the energy hardly
   // depends on the rules' points: 10 more a direction move Phi_R at p = 8 by 7.7e-7 (the
   // section's own rule, whose share in the disc, blend_disc_rules, is a polynomial of degree
   // 14 that its 20 points a direction do not integrate exactly with the products of degree
@@ -982,12 +987,39 @@ namespace rfm
     EXPECT_FALSE(rough->modes().empty());
     EXPECT_TRUE(rough->curved());
     ASSERT_GT(rough->n_local_columns(), 0);
+    // Neither disc reaches another vertex. The disc of the arc's vertex (the 186-degree one
+    // between the outer arc and the taper) overlaps the rough one (rfm.vertex_disc_overlap);
+    // the neck's, between lines, stays clear; with the overlap off, all stay clear.
+    int overlaps = 0;
     for (const VertexEnrichment &v : with.vertex_enrichments())
       if (&v != rough)
         {
-          EXPECT_LE(rough->cutoff_radius() + v.cutoff_radius(),
-                    std::hypot(v.vertex().r - at.r, v.vertex().z - at.z) + 1e-12);
+          const double d = std::hypot(v.vertex().r - at.r, v.vertex().z - at.z);
+          EXPECT_LT(rough->cutoff_radius(), d);
+          EXPECT_LT(v.cutoff_radius(), d);
+          if (!v.curved())
+            {
+              EXPECT_LE(rough->cutoff_radius() + v.cutoff_radius(), d + 1e-12);
+            }
+          overlaps += rough->cutoff_radius() + v.cutoff_radius() > d;
         }
+    EXPECT_EQ(overlaps, 1);
+    {
+      DiscretizationOptions apart = o;
+      apart.vertex_disc_overlap = false;
+      const OutlineModel kept(problem, apart);
+      ASSERT_TRUE(kept.ok()) << kept.summary().message;
+      const VertexEnrichment *kept_rough = kept.vertex_enrichment_at(at, 1e-12);
+      ASSERT_NE(kept_rough, nullptr);
+      for (const VertexEnrichment &v : kept.vertex_enrichments())
+        if (&v != kept_rough)
+          {
+            EXPECT_LE(kept_rough->cutoff_radius() + v.cutoff_radius(),
+                      std::hypot(v.vertex().r - at.r, v.vertex().z - at.z) + 1e-12);
+          }
+      // The overlap's gain at p = 8: indicator 2.3e-5 against 4.9e-5 apart (measured).
+      EXPECT_LT(with.functionals().indicator(), 0.6 * kept.functionals().indicator());
+    }
     ASSERT_EQ(with.traction_jumps().size(), 1u);
     EXPECT_EQ(with.traction_jumps()[0].cutoff_radius(), rough->cutoff_radius());
     // Points on the bore (outward normal -e_r) and on the inner arc (centre the origin, the

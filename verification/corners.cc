@@ -396,12 +396,14 @@ nlohmann::json run(const verification::DriverContext &context)
   // Traction jumps (issue 24 item 4): the pressure band on a straight bore; the tapered hub of
   // the issue (a jump on an arc, besides its two vertices) in full mode only, to p = 16 (its
   // p = 16 takes 26 s with the rough vertex's columns; p = 18 and 20, 40 and 50 s, are in the
-  // session notes).
+  // session notes), against the FEM's L = 1, 2, 3: at the corner sample (0.8, 0) the FEM's
+  // L = 2, 3, 4 read sigma_zz = 4.1700, 4.1650, 4.1638 MPa, and L = 2 as the reference was
+  // 0.15 % off there (the RFM's sample errors are of that size).
   results["pressure_band"] =
     jump_case("pressure_band_ring.json", context, full ? std::vector<int>{8, 12, 16} : std::vector<int>{8, 12},
               full ? std::vector<int>{1, 2, 3} : std::vector<int>{0, 1, 2});
   if (full)
-    results["tapered_hub"] = jump_case("tapered_hub_pressure.json", context, {8, 10, 12, 14, 16}, {0, 1, 2},
+    results["tapered_hub"] = jump_case("tapered_hub_pressure.json", context, {8, 10, 12, 14, 16}, {1, 2, 3},
                                        "rfm_without_jump_field", "without the jump's field", -1, true);
   // The same hub under the temperature T = 100 r + 100 z [K] instead of the pressure (issue 24
   // item 8; no traction jump, the taper-neck vertex enriched), full mode only: FEM L = 0, 1, 2

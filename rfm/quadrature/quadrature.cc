@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 #include <utility>
 
@@ -25,25 +26,43 @@ namespace rfm
     }
   } // namespace
 
-  GaussRule1D polar_radial_rule(const double rho_0, const int n_points, const int n_layers)
+  GaussRule1D polar_radial_rule(const double rho_0, const int n_points, const int n_layers,
+                                const std::vector<double> &breaks, const int n_points_beyond)
   {
     if (n_points < 1 || n_layers < 0)
       throw std::invalid_argument("polar_radial_rule: n_points >= 1 and n_layers >= 0");
     std::vector<double> layers{rho_0};
     for (int i = 0; i < n_layers; ++i)
       layers.push_back(layers.back() * 0.2);
+    for (const double b : breaks)
+      if (b > 0.0 && b < rho_0)
+        layers.push_back(b);
     layers.push_back(0.0);
-    const GaussRule1D g = gauss_legendre(n_points);
+    std::sort(layers.begin(), layers.end(), std::greater<double>());
+    layers.erase(std::unique(layers.begin(), layers.end(),
+                             [rho_0](const double a, const double b) { return std::abs(a - b) <= 1e-9 * rho_0; }),
+                 layers.end());
+    double lowest_break = rho_0;
+    for (const double b : breaks)
+      if (b > 0.0 && b < rho_0)
+        lowest_break = std::min(lowest_break, b);
+    const int n_beyond = std::max(n_points, n_points_beyond);
+    auto count = [&](const double lo) { return lo >= lowest_break * (1.0 - 1e-12) ? n_beyond : n_points; };
+    Eigen::Index total = 0;
+    for (std::size_t i = 0; i + 1 < layers.size(); ++i)
+      total += count(layers[i + 1]);
+    const GaussRule1D g = gauss_legendre(n_points), g_beyond = gauss_legendre(n_beyond);
     GaussRule1D out;
-    out.nodes.resize(static_cast<Eigen::Index>(n_layers + 1) * n_points);
-    out.weights.resize(out.nodes.size());
+    out.nodes.resize(total);
+    out.weights.resize(total);
     Eigen::Index at = 0;
     for (std::size_t i = 0; i + 1 < layers.size(); ++i)
       {
         const double hi = layers[i], lo = layers[i + 1];
-        for (Eigen::Index k = 0; k < g.nodes.size(); ++k, ++at)
+        const GaussRule1D &rule = count(lo) == n_points ? g : g_beyond;
+        for (Eigen::Index k = 0; k < rule.nodes.size(); ++k, ++at)
           {
-            const double s = 0.5 * (g.nodes[k] + 1.0), ws = 0.5 * g.weights[k];
+            const double s = 0.5 * (rule.nodes[k] + 1.0), ws = 0.5 * rule.weights[k];
             double rho, drho;
             if (lo == 0.0)
               rho = hi * s * s, drho = 2.0 * hi * s;

@@ -24,7 +24,11 @@ namespace rfm
   /// geometric layer [0.2^(i+1), 0.2^i] rho_0 (i < n_layers) and on the innermost
   /// [0, 0.2^n_layers rho_0] with rho = rho_in s^2; the weights include the Jacobian rho (so
   /// that sum w f(rho) = int f(rho) rho drho). Precondition: n_points >= 1, n_layers >= 0.
-  GaussRule1D polar_radial_rule(double rho_0, int n_points, int n_layers);
+  /// `breaks` in (0, rho_0) split the layer they fall in (n_points on each piece; in the
+  /// innermost layer the piece below a break keeps the s^2 map); the pieces above the lowest
+  /// break take n_points_beyond points instead where that is larger.
+  GaussRule1D polar_radial_rule(double rho_0, int n_points, int n_layers,
+                                const std::vector<double> &breaks = {}, int n_points_beyond = 0);
 
   /// Cell ends partitioning [a, b]: split at every break point strictly inside (a, b),
   /// and, for n_graded_layers > 0, graded geometrically toward each break point: the

@@ -39,6 +39,33 @@ namespace rfm
                 1e-6);
   }
 
+  // polar_radial_rule: sum w f = int_0^rho_0 f(rho) rho drho, with and without breaks; a
+  // break splits its layer (more nodes, all inside the pieces) and is a node-free point.
+  TEST(PolarRadialRule, IntegratesPolynomialsWithBreaks)
+  {
+    const double rho_0 = 0.7;
+    const GaussRule1D plain = polar_radial_rule(rho_0, 6, 3);
+    const GaussRule1D broken = polar_radial_rule(rho_0, 6, 3, {0.3, 0.01, 0.7, 2.0, 0.3});
+    // The layers [0.7, 0.14, 0.028, 0.0056, 0] and the breaks 0.3 and 0.01 (0.7 and 2.0
+    // are not inside, the second 0.3 a repeat): two more pieces.
+    EXPECT_EQ(plain.nodes.size(), 4 * 6);
+    EXPECT_EQ(broken.nodes.size(), 6 * 6);
+    for (Eigen::Index i = 0; i < broken.nodes.size(); ++i)
+      {
+        EXPECT_GT(broken.nodes[i], 0.0);
+        EXPECT_LT(broken.nodes[i], rho_0);
+        EXPECT_GT(std::abs(broken.nodes[i] - 0.3), 1e-6);
+      }
+    // rho^k rho: exact up to k = 10 on every piece (the innermost in rho = rho_in s^2 is a
+    // polynomial of degree 2 k + 3 in s).
+    for (int k = 0; k <= 4; ++k)
+      {
+        const double exact = std::pow(rho_0, k + 2) / (k + 2);
+        EXPECT_NEAR(integrate_monomial(plain, k), exact, 1e-14 * exact) << k;
+        EXPECT_NEAR(integrate_monomial(broken, k), exact, 1e-14 * exact) << k;
+      }
+  }
+
   TEST(GaussLegendre, NodesSortedInsideInterval)
   {
     const GaussRule1D g = gauss_legendre(17);

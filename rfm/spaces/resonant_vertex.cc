@@ -138,8 +138,9 @@ namespace rfm
     return out;
   }
 
-  Quadrature2D ResonantVertex::near_rule(const int n_radial, const int n_angular, const int n_layers) const
+  Quadrature2D ResonantVertex::near_rule(const int n_radial, const int n_angular, const int n_layers,
+                                   const std::vector<Circle> &rims, const int n_beyond_rims) const
   {
-    return frame_.near_rule(cutoff_radius_, n_radial, n_angular, n_layers);
+    return frame_.near_rule(cutoff_radius_, n_radial, n_angular, n_layers, rims, n_beyond_rims);
   }
 } // namespace rfm

@@ -92,7 +92,9 @@ namespace rfm
     static FrameField frame_field(double x, double y, double nu);
 
     /// The body within rho_0 of v (WedgeFrame::near_rule).
-    Quadrature2D near_rule(int n_radial, int n_angular, int n_layers) const;
+    Quadrature2D near_rule(int n_radial, int n_angular, int n_layers,
+                           const std::vector<Circle> &rims = {},
+                           int n_beyond_rims = 0) const;
 
   private:
     WedgeFrame frame_;

@@ -96,7 +96,9 @@ namespace rfm
 
     /// The body within rho_0 of the vertex (WedgeFrame::near_rule; OutlineModel chooses rho_0
     /// below the faces' lengths and the distance to every other edge).
-    Quadrature2D near_rule(int n_radial, int n_angular, int n_layers = 8) const;
+    Quadrature2D near_rule(int n_radial, int n_angular, int n_layers = 8,
+                           const std::vector<Circle> &rims = {},
+                           int n_beyond_rims = 0) const;
 
   private:
     TractionJump() = default;

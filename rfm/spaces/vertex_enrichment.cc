@@ -473,13 +473,15 @@ namespace rfm
       set_hoop_shadow(true); // with the faces' curvature
   }
 
-  Quadrature2D VertexEnrichment::near_rule(const int n_radial, const int n_angular,
-                                           const int n_layers) const
+  Quadrature2D VertexEnrichment::near_rule(const int n_radial, const int n_angular, const int n_layers,
+                                           const std::vector<Circle> &rims, const int n_beyond_rims) const
   {
     if (n_radial < 1 || n_angular < 1 || n_layers < 0)
       throw std::invalid_argument("VertexEnrichment::near_rule: point counts must be positive");
     if (frame_)
-      return frame_->near_rule(cutoff_radius_, n_radial, n_angular, n_layers);
+      return frame_->near_rule(cutoff_radius_, n_radial, n_angular, n_layers, rims, n_beyond_rims);
+    if (!rims.empty())
+      throw std::invalid_argument("VertexEnrichment::near_rule: rims only on curved faces");
     const std::vector<double> panels = angular_panels({}, 0.5 * pi, 1e-12);
     // Radial layers [0.2^(i+1), 0.2^i] rho_0, the innermost [0, 0.2^L rho_0] with rho = rho_in s^2.
     const GaussRule1D ga = gauss_legendre(n_angular);

@@ -211,7 +211,10 @@ namespace rfm
     /// the innermost layer with rho = rho_in s^2), so that the products of two singular
     /// columns (rho^(2 Re lambda - 2), integrable) and of a column with the polynomials are
     /// integrated to the assembly's accuracy. Plain area weights dr dz.
-    Quadrature2D near_rule(int n_radial, int n_angular, int n_layers = 8) const;
+    /// `rims`: other discs overlapping this one, on curved faces only (the frame's rule,
+    /// WedgeFrame::near_rule; a vertex between lines keeps its disc clear of the others).
+    Quadrature2D near_rule(int n_radial, int n_angular, int n_layers = 8, const std::vector<Circle> &rims = {},
+                           int n_beyond_rims = 0) const;
 
     /// Section support of the mode columns (rfm.vertex_support "section"; OutlineModel decides
     /// where: re-entrant vertices about which the section is star-shaped, no die). Each mode
@@ -257,11 +260,7 @@ namespace rfm
 
     /// A circle of the section (another rule's disc) across which the integrands that the
     /// section rule takes have a kink (the partition of unity's shares).
-    struct Circle
-    {
-      axisym::Point centre;
-      double radius;
-    };
+    using Circle = rfm::Circle;
     /// The rule for the section support: near_rule's disc, and beyond it rays out to the
     /// outline (reach), in angular panels between the ray breaks and the circles' tangent
     /// directions of at most pi / 8 with n_angular Gauss points each (halved where the reach

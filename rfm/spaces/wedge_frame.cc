@@ -61,15 +61,32 @@ namespace rfm
   }
 
   Quadrature2D WedgeFrame::near_rule(const double rho_0, const int n_radial, const int n_angular,
-                                     const int n_layers) const
+                                     const int n_layers, const std::vector<Circle> &rims,
+                                     const int n_beyond_rims) const
   {
     if (n_radial < 1 || n_angular < 1 || n_layers < 0)
       throw std::invalid_argument("WedgeFrame::near_rule: point counts must be positive");
-    const GaussRule1D radial = polar_radial_rule(rho_0, n_radial, n_layers), ga = gauss_legendre(n_angular);
+    // The rims' radial breaks: where the rings about v start and stop crossing each rim.
+    std::vector<double> radial_breaks;
+    for (const Circle &c : rims)
+      {
+        const double d = std::hypot(c.centre.r - at_.r, c.centre.z - at_.z);
+        if (!(d > c.radius))
+          throw std::invalid_argument("WedgeFrame::near_rule: a rim's disc contains the vertex");
+        for (const double b : {d - c.radius, d + c.radius})
+          if (b > 1e-9 * rho_0 && b < (1.0 - 1e-9) * rho_0)
+            radial_breaks.push_back(b);
+      }
+    const GaussRule1D radial = polar_radial_rule(rho_0, n_radial, n_layers, radial_breaks, n_beyond_rims),
+                      ga_near = gauss_legendre(n_angular),
+                      ga_beyond = gauss_legendre(std::max(n_angular, n_beyond_rims));
+    const double first_crossing =
+      radial_breaks.empty() ? rho_0 : *std::min_element(radial_breaks.begin(), radial_breaks.end());
     std::vector<double> rs, zs, ws;
     for (Eigen::Index k = 0; k < radial.nodes.size(); ++k)
       {
         const double rho = radial.nodes[k], w_rho = radial.weights[k];
+        const GaussRule1D &ga = rho > first_crossing ? ga_beyond : ga_near;
         // The faces at this radius: the chord angles of arcs.
         auto chord = [rho](const Face &f) {
           return f.sweep_sign == 0 ? 0.0 : std::asin(std::min(1.0, rho / (2.0 * f.radius)));
@@ -81,10 +98,29 @@ namespace rfm
           for (const double b : {beta_ - pi, pi})
             if (b > theta_lo && b < theta_hi)
               breaks.push_back(b);
+        // Where this ring crosses a rim: |v + rho e - c| = R.
+        for (const Circle &c : rims)
+          {
+            const double dr = c.centre.r - at_.r, dz = c.centre.z - at_.z, d = std::hypot(dr, dz);
+            const double cosine = (rho * rho + d * d - c.radius * c.radius) / (2.0 * rho * d);
+            if (!(std::abs(cosine) < 1.0))
+              continue;
+            const double psi = std::atan2(dz, dr), half = std::acos(cosine);
+            for (const double phi : {psi - half, psi + half})
+              {
+                // The polar angle from the leaving face, in [beta / 2 - pi, beta / 2 + pi).
+                double theta = phi - gamma_;
+                theta -= 2.0 * pi * std::floor((theta - (0.5 * beta_ - pi)) / (2.0 * pi));
+                if (theta > theta_lo && theta < theta_hi)
+                  breaks.push_back(theta);
+              }
+          }
         std::sort(breaks.begin(), breaks.end());
         for (std::size_t p = 0; p + 1 < breaks.size(); ++p)
           {
             const double a = breaks[p], b = breaks[p + 1];
+            if (!(b - a > 1e-14))
+              continue;
             const int pieces = std::max(1, static_cast<int>(std::ceil((b - a) / (0.5 * pi) - 1e-9)));
             for (int piece = 0; piece < pieces; ++piece)
               {

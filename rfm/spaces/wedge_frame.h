@@ -21,9 +21,18 @@
 #include "rfm/quadrature/quadrature.h"
 
 #include <array>
+#include <vector>
 
 namespace rfm
 {
+  /// A circle of the section: another rule's disc, across whose rim the integrands have a
+  /// kink (a cutoff's third derivative, the partition of unity's shares).
+  struct Circle
+  {
+    axisym::Point centre;
+    double radius;
+  };
+
   class WedgeFrame
   {
   public:
@@ -58,7 +67,14 @@ namespace rfm
     /// most pi / 2 broken where a face's line continues into the body, n_angular points each.
     /// Plain area weights dr dz. Precondition: rho_0 below the faces' lengths and the distance
     /// to every other edge.
-    Quadrature2D near_rule(double rho_0, int n_radial, int n_angular, int n_layers) const;
+    /// `rims`: other discs that may overlap this one (their centres outside it). Each ring is
+    /// broken in angle where it crosses a rim, and the radial layers where the rings start
+    /// and stop crossing it (at |c - v| -+ R), so that the other disc's cutoff and share,
+    /// whose third derivatives jump on its rim, are integrated piecewise smoothly; from the
+    /// first ring that crosses a rim outward, n_beyond_rims points a direction where that
+    /// is more.
+    Quadrature2D near_rule(double rho_0, int n_radial, int n_angular, int n_layers,
+                           const std::vector<Circle> &rims = {}, int n_beyond_rims = 0) const;
 
   private:
     axisym::Point at_;
