@@ -34,18 +34,15 @@ namespace rfm
     std::vector<double> layers{rho_0};
     for (int i = 0; i < n_layers; ++i)
       layers.push_back(layers.back() * 0.2);
+    double lowest_break = rho_0; // the pieces above it take n_points_beyond
     for (const double b : breaks)
       if (b > 0.0 && b < rho_0)
-        layers.push_back(b);
+        layers.push_back(b), lowest_break = std::min(lowest_break, b);
     layers.push_back(0.0);
     std::sort(layers.begin(), layers.end(), std::greater<double>());
     layers.erase(std::unique(layers.begin(), layers.end(),
                              [rho_0](const double a, const double b) { return std::abs(a - b) <= 1e-9 * rho_0; }),
                  layers.end());
-    double lowest_break = rho_0;
-    for (const double b : breaks)
-      if (b > 0.0 && b < rho_0)
-        lowest_break = std::min(lowest_break, b);
     const int n_beyond = std::max(n_points, n_points_beyond);
     auto count = [&](const double lo) { return lo >= lowest_break * (1.0 - 1e-12) ? n_beyond : n_points; };
     Eigen::Index total = 0;
