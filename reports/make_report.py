@@ -1627,6 +1627,20 @@ def corner_case_rows(md, ax, key, title, c):
                   "limit " + ", ".join(rate("energy_error_relative", a, b) for a, b in steps)
                   + " (not a bound: it may cross the limit).")
         md.append("")
+    # Vertices with an arc face (their intensities on the body's sector, with the duals'
+    # traction on the arc: rfm/fields/vertex_intensity.h).
+    arcs = c["rfm"][ps[-1]].get("arc_vertices", [])
+    for a, v in enumerate(arcs):
+        levels = numbered(f, "L")
+        lam = v["intensities"][0]["lambda"][0]
+        fem_k = ", ".join(f"{f[lk]['arc_vertices'][a]['intensities'][0]['K'][0]:.6e}" for lk in levels)
+        rfm_k = ", ".join(f"{c['rfm'][k]['arc_vertices'][a]['intensities'][0]['K'][0]:.6e}" for k in ps)
+        errs = ", ".join(f"{c['rfm'][k]['arc_vertex_intensity_error_relative']:.1e}" for k in ps)
+        md.append(f"The vertex with an arc face at ({v['at'][0]:.4g}, {v['at'][1]:.4g}) m (lambda = {lam:.4f}; the "
+                  f"sector of its disc, radius {v['sector_radius']:.3g} m): K_1 = {fem_k} Pa m^{1 - lam:.3g} from "
+                  f"the FEM's {', '.join(levels)}, {rfm_k} from the RFM at p = {', '.join(k[1:] for k in ps)}, "
+                  f"{errs} from the FEM's finest level.")
+        md.append("")
     if axis:
         last = ps[-1]
         r = c["rfm"][last]

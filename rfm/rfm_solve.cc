@@ -516,14 +516,10 @@ namespace
                     ? nlohmann::json(nullptr)
                     : nlohmann::json{{"radius", rfm::VertexEnrichment::inner_disc_ratio * e.cutoff_radius()},
                                      {"degree", e.inner_degree()}};
-                // The generalized stress intensities (vertex_intensity.h) over the support;
-                // not where a face is an arc (the dual modes meet the faces' conditions on
-                // lines only).
-                if (e.curved())
-                  enrichment["intensities"] = nullptr,
-                  enrichment["intensity_note"] = "not computed: a face is an arc (the interaction integral "
-                                                 "needs straight faces)";
-                else if (model->ok())
+                // The generalized stress intensities (vertex_intensity.h) over the support
+                // (on an arc face the integral takes the arc's own sector and the duals'
+                // traction on it).
+                if (model->ok())
                   {
                     const std::vector<rfm::VertexIntensity> k = rfm::vertex_intensities(
                       [&](const Eigen::Ref<const Eigen::VectorXd> &r, const Eigen::Ref<const Eigen::VectorXd> &z) {

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -342,6 +343,20 @@ namespace
     EXPECT_GT(rough[0].at("enrichment").at("columns").get<int>(), 0);
     EXPECT_EQ(rough[0].at("enrichment").at("cutoff_radius").get<double>(),
               r.at("diagnostics").at("traction_jumps")[0].at("cutoff_radius").get<double>());
+    // The 186-degree vertex between the outer arc and the taper has an arc face: its
+    // intensity is given too (vertex_intensity.h), one K for lambda = 0.937.
+    int curved = 0;
+    for (const nlohmann::json &v : r.at("diagnostics").at("singular_vertices"))
+      if (!v.at("enrichment").is_null() && v.at("enrichment").at("curved_faces").get<bool>())
+        {
+          ++curved;
+          const nlohmann::json &k = v.at("enrichment").at("intensities");
+          ASSERT_EQ(k.size(), 1u);
+          EXPECT_NEAR(k[0].at("lambda")[0].get<double>(), 0.93678, 1e-4);
+          EXPECT_TRUE(std::isfinite(k[0].at("K")[0].get<double>()));
+          EXPECT_GT(std::abs(k[0].at("K")[0].get<double>()), 0.0);
+        }
+    EXPECT_EQ(curved, 1);
     problem["rfm"]["rough_vertices"] = false;
     std::ofstream(in) << problem;
     const Outcome off = run(in.string() + " --degree 6 --output " + out.string());

@@ -32,6 +32,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -97,12 +98,16 @@ namespace
     frame_options.degree = 2;
     frame_options.tolerance.reset();
     const rfm::OutlineModel frame_model(problem, frame_options);
-    // The vertex with straight faces (one a case; a vertex on an arc may have columns too, but
-    // the interaction integral needs straight faces).
-    std::vector<rfm::VertexEnrichment> straight;
+    // The vertex with straight faces (one a case), whose intensities the table gives; the
+    // vertices with an arc face and singular modes apart ("arc_vertices"), each on the sector
+    // of its own disc.
+    std::vector<rfm::VertexEnrichment> straight, arcs;
     for (const rfm::VertexEnrichment &e : frame_model.vertex_enrichments())
       if (!e.curved())
         straight.push_back(e);
+      else if (std::any_of(e.modes().begin(), e.modes().end(),
+                           [](const rfm::WedgeMode &m) { return m.lambda.real() < 1.0; }))
+        arcs.push_back(e);
     if (straight.size() != 1)
       throw verification::NumericalFailure(file + ": expected one enriched vertex with straight faces");
     const rfm::VertexEnrichment frame = straight.front();
@@ -117,8 +122,32 @@ namespace
     std::vector<std::array<double, 4>> fem_samples;
     std::vector<rfm::VertexIntensity> fem_k;
     axisym::Problem sampled = problem;
-    verification::add_interaction_samples(sampled.samples, rfm::vertex_interaction_quadrature(frame, rho_1),
+    verification::add_interaction_samples(sampled.samples, rfm::vertex_interaction_quadrature(frame, problem, rho_1),
                                           frame.vertex().r, frame.vertex().z);
+    const std::size_t frame_vertex_sample = sampled.samples.size() - 1;
+    std::vector<std::size_t> arc_first; // each arc vertex's first sample (its own vertex last)
+    for (const rfm::VertexEnrichment &e : arcs)
+      {
+        arc_first.push_back(sampled.samples.size());
+        verification::add_interaction_samples(sampled.samples,
+                                              rfm::vertex_interaction_quadrature(e, problem, e.cutoff_radius()),
+                                              e.vertex().r, e.vertex().z);
+      }
+    const auto arc_intensities = [&](const auto &field_of) {
+      std::vector<std::vector<rfm::VertexIntensity>> out;
+      for (std::size_t a = 0; a < arcs.size(); ++a)
+        out.push_back(rfm::vertex_intensities(field_of(a), arcs[a], problem, arcs[a].cutoff_radius()));
+      return out;
+    };
+    const auto arc_json = [&](const std::vector<std::vector<rfm::VertexIntensity>> &k) {
+      nlohmann::json j = nlohmann::json::array();
+      for (std::size_t a = 0; a < arcs.size(); ++a)
+        j.push_back({{"at", {arcs[a].vertex().r, arcs[a].vertex().z}},
+                     {"sector_radius", arcs[a].cutoff_radius()},
+                     {"intensities", rfm::to_json(k[a])}});
+      return j;
+    };
+    std::vector<std::vector<rfm::VertexIntensity>> fem_arc_k;
     for (const int level : levels)
       {
         fem::FemOptions o = fem::options_from_problem(sampled);
@@ -128,8 +157,13 @@ namespace
         if (!f.success)
           throw verification::NumericalFailure(file + " FEM L = " + std::to_string(level) + ": " + f.message);
         const double phi = f.functionals.reissner;
-        fem_k = rfm::vertex_intensities(verification::sampled_interaction_field(f, problem.samples.size()),
-                                        frame, problem, rho_1);
+        fem_k = rfm::vertex_intensities(
+          verification::sampled_interaction_field(f, problem.samples.size(), frame_vertex_sample), frame, problem,
+          rho_1);
+        fem_arc_k = arc_intensities([&](const std::size_t a) {
+          const std::size_t last = a + 1 < arcs.size() ? arc_first[a + 1] - 1 : f.samples.size() - 1;
+          return verification::sampled_interaction_field(f, arc_first[a], last);
+        });
         fmt::print("FEM Q2 L = {}: Phi_R = {:.10e} J/rad, K_1 = {:.8e} ({} dofs, {:.1f} s)\n", level, phi,
                    fem_k.front().value.real(), f.n_dofs, f.total_seconds);
         nlohmann::json samples = nlohmann::json::array();
@@ -145,6 +179,8 @@ namespace
                                                  {"seconds", f.total_seconds},
                                                  {"samples", samples},
                                                  {"intensities", rfm::to_json(fem_k)}};
+        if (!arcs.empty())
+          c["fem"]["L" + std::to_string(level)]["arc_vertices"] = arc_json(fem_arc_k);
         energies.push_back(phi);
       }
     const double limit = energy_limit(energies, file, c["fem"]);
@@ -162,7 +198,8 @@ namespace
       if (!f.success)
         throw verification::NumericalFailure(file + " FEM adaptive: " + f.message);
       const std::vector<rfm::VertexIntensity> k = rfm::vertex_intensities(
-        verification::sampled_interaction_field(f, problem.samples.size()), frame, problem, rho_1);
+        verification::sampled_interaction_field(f, problem.samples.size(), frame_vertex_sample), frame, problem,
+        rho_1);
       const double error = std::abs(f.functionals.reissner - limit) / std::abs(limit);
       const unsigned long finest = c["fem"]["L" + std::to_string(levels.back())]["dofs"].get<unsigned long>();
       fmt::print("FEM Q2 adaptive: Phi_R = {:.10e} J/rad ({:.2e} from the graded levels' limit), K_1 = "
@@ -227,6 +264,23 @@ namespace
             double k_error = 0.0;
             for (std::size_t i = 0; i < k.size(); ++i)
               k_error = std::max(k_error, std::abs(k[i].value - fem_k[i].value) / std::abs(fem_k[i].value));
+            // The arc vertices' intensities against the FEM's (for the RFM with its vertex
+            // columns).
+            std::vector<std::vector<rfm::VertexIntensity>> arc_k;
+            double arc_k_error = 0.0;
+            if (enriched)
+              {
+                arc_k = arc_intensities([&m](std::size_t) -> rfm::FieldEvaluator {
+                  return [&m](const Eigen::Ref<const Eigen::VectorXd> &rr,
+                              const Eigen::Ref<const Eigen::VectorXd> &zz) { return m.evaluate(rr, zz); };
+                });
+                for (std::size_t a = 0; a < arcs.size(); ++a)
+                  for (std::size_t i = 0; i < arc_k[a].size(); ++i)
+                    arc_k_error = std::max(arc_k_error, std::abs(arc_k[a][i].value - fem_arc_k[a][i].value) /
+                                                          std::abs(fem_arc_k[a][i].value));
+                if (!arcs.empty())
+                  fmt::print("RFM p = {:>2}: K at the arc vertices {:.2e} from the FEM's\n", p, arc_k_error);
+              }
             fmt::print("RFM{} p = {:>2}: Phi_R {:.10e} ({:.2e} from the FEM's limit), indicator {:.2e}, "
                        "samples {:.2e} of max |sigma| from the FEM's{}, K {:.2e} from the FEM's, {} vertex "
                        "columns ({:.1f} s)\n",
@@ -257,6 +311,11 @@ namespace
                                                {"N", m.n_basis_functions()},
                                                {"degree_z", m.degree_z()},
                                                {"seconds", seconds}};
+            if (enriched && !arcs.empty())
+              {
+                c[key]["p" + std::to_string(p)]["arc_vertices"] = arc_json(arc_k);
+                c[key]["p" + std::to_string(p)]["arc_vertex_intensity_error_relative"] = arc_k_error;
+              }
             if (on_axis)
               {
                 c[key]["p" + std::to_string(p)]["axis_sample_error_relative"] = axis_error;

@@ -7,6 +7,7 @@
 #include "rfm/contact/contact.h"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace verification
@@ -24,12 +25,14 @@ namespace verification
   /// The FEM's samples as the field of the interaction integral, which asks for the rule's
   /// points (the samples from `first`, in order) and then for the edge point alone (the
   /// last sample); any other request is a logic error.
-  inline rfm::FieldEvaluator sampled_interaction_field(const fem::FemResult &fr, std::size_t first = 0)
+  /// `vertex`: the edge point's sample where it is not the last (several vertices' rules).
+  inline rfm::FieldEvaluator sampled_interaction_field(const fem::FemResult &fr, std::size_t first = 0,
+                                                       std::optional<std::size_t> vertex = std::nullopt)
   {
-    return [&fr, first](const Eigen::Ref<const Eigen::VectorXd> &r,
-                        const Eigen::Ref<const Eigen::VectorXd> &z) {
+    return [&fr, first, vertex](const Eigen::Ref<const Eigen::VectorXd> &r,
+                                const Eigen::Ref<const Eigen::VectorXd> &z) {
       const bool edge = r.size() == 1;
-      const std::size_t from = edge ? fr.samples.size() - 1 : first;
+      const std::size_t from = edge ? vertex.value_or(fr.samples.size() - 1) : first;
       rfm::FieldValues f;
       f.u.resize(r.size(), 2), f.sigma.resize(r.size(), 4), f.strain.setZero(r.size(), 4);
       for (Eigen::Index k = 0; k < r.size(); ++k)

@@ -1,9 +1,11 @@
 #include "rfm/fields/vertex_intensity.h"
 
 #include "rfm/fields/interaction_integral.h"
+#include "rfm/spaces/wedge_frame.h"
 
 #include <Eigen/LU>
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -39,16 +41,95 @@ namespace rfm
       std::size_t size() const { return part.size(); }
     };
 
+    /// The outline's edges that arrive at (end at) and leave (start at) `at`.
+    std::array<const axisym::OutlineEdge *, 2> edges_at(const axisym::Outline &outline, const axisym::Point at)
+    {
+      const double tol = 1e-9 * outline.size();
+      std::array<const axisym::OutlineEdge *, 2> out{nullptr, nullptr};
+      for (const axisym::OutlineEdge &e : outline.edges())
+        {
+          if (std::hypot(e.end.r - at.r, e.end.z - at.z) < tol)
+            out[0] = &e;
+          if (std::hypot(e.start.r - at.r, e.start.z - at.z) < tol)
+            out[1] = &e;
+        }
+      if (!out[0] || !out[1])
+        throw std::invalid_argument("vertex_intensities: (" + std::to_string(at.r) + ", " + std::to_string(at.z) +
+                                    ") is not a vertex of the outline");
+      return out;
+    }
+
+    /// The rule of the interaction integral: the sector rho < rho_1 of the body about the
+    /// vertex (area weights dr dz), and the points of the faces that are arcs within rho_1
+    /// (length weights ds), with the arc's outward normal and edge at each.
+    struct InteractionRule
+    {
+      Quadrature2D area, arcs;
+      std::vector<axisym::Point> normal;
+      std::vector<const axisym::OutlineEdge *> edge;
+    };
+
+    InteractionRule interaction_rule(const VertexEnrichment &frame, const axisym::Outline &outline,
+                                     const double rho_1)
+    {
+      if (!(rho_1 > 0.0))
+        throw std::invalid_argument("vertex_interaction_quadrature: rho_1 must be positive");
+      const double alpha = frame.wedge().half_angle(), leaving = frame.bisector_angle() - alpha;
+      VertexEnrichment sector(frame.vertex(), {std::cos(leaving), std::sin(leaving)}, frame.wedge(), {}, rho_1,
+                              frame.material());
+      const auto [arriving_edge, leaving_edge] = edges_at(outline, frame.vertex());
+      InteractionRule rule;
+      for (const axisym::OutlineEdge *e : {leaving_edge, arriving_edge})
+        {
+          if (e->kind != axisym::OutlineEdge::Kind::arc)
+            continue;
+          const double radius = e->radius(), sweep = std::abs(e->sweep());
+          if (!(rho_1 < 2.0 * radius * std::sin(0.5 * sweep)))
+            throw std::invalid_argument("vertex_intensities: rho_1 reaches beyond the end of part " + e->part);
+          // The arc within rho_1 of the vertex, t in [0, t_1] from it (uniform in length),
+          // in geometric cells toward the vertex as the line faces'.
+          const double t_1 = 2.0 * std::asin(0.5 * rho_1 / radius) / sweep, length = radius * sweep;
+          std::vector<double> cells{0.0};
+          for (int l = 8; l >= 0; --l)
+            cells.push_back(t_1 * std::pow(0.2, l));
+          const GaussRule1D gt = gauss_on_cells(cells, 12, {0.0});
+          const bool from_start = e == leaving_edge;
+          const Eigen::Index n0 = rule.arcs.weights.size(), n = gt.nodes.size();
+          rule.arcs.r.conservativeResize(n0 + n), rule.arcs.z.conservativeResize(n0 + n);
+          rule.arcs.weights.conservativeResize(n0 + n);
+          for (Eigen::Index k = 0; k < n; ++k)
+            {
+              const double t = from_start ? gt.nodes[k] : 1.0 - gt.nodes[k];
+              const axisym::Point x = e->point_at(t);
+              rule.arcs.r[n0 + k] = x.r, rule.arcs.z[n0 + k] = x.z;
+              rule.arcs.weights[n0 + k] = gt.weights[k] * length;
+              rule.normal.push_back(e->outward_normal_at(t));
+              rule.edge.push_back(e);
+            }
+        }
+      if (rule.arcs.weights.size() > 0)
+        sector.set_curved_faces(WedgeFrame(*arriving_edge, *leaving_edge));
+      rule.area = sector.near_rule(8, 12);
+      return rule;
+    }
+
+    /// The points at which the integral asks for the field: the area's, then the arcs'.
+    Quadrature2D asked_points(const InteractionRule &rule)
+    {
+      const Eigen::Index na = rule.area.weights.size(), nf = rule.arcs.weights.size();
+      Quadrature2D all;
+      all.r.resize(na + nf), all.z.resize(na + nf), all.weights.resize(na + nf);
+      all.r << rule.area.r, rule.arcs.r;
+      all.z << rule.area.z, rule.arcs.z;
+      all.weights << rule.area.weights, rule.arcs.weights;
+      return all;
+    }
   } // namespace
 
-  Quadrature2D vertex_interaction_quadrature(const VertexEnrichment &frame, const double rho_1)
+  Quadrature2D vertex_interaction_quadrature(const VertexEnrichment &frame, const axisym::Problem &problem,
+                                             const double rho_1)
   {
-    if (!(rho_1 > 0.0))
-      throw std::invalid_argument("vertex_interaction_quadrature: rho_1 must be positive");
-    const double alpha = frame.wedge().half_angle(), leaving = frame.bisector_angle() - alpha;
-    const VertexEnrichment sector(frame.vertex(), {std::cos(leaving), std::sin(leaving)},
-                                  frame.wedge(), {}, rho_1, frame.material());
-    return sector.near_rule(8, 12);
+    return asked_points(interaction_rule(frame, problem.body->outline, rho_1));
   }
 
   std::vector<VertexIntensity> vertex_intensities(const FieldEvaluator &field,
@@ -118,8 +199,10 @@ namespace rfm
       }
 
     // The domain part on the sector, -int (q div W + W . grad q) dr dz, per dual.
-    const Quadrature2D qd = vertex_interaction_quadrature(frame, rho_1);
-    const FieldValues fh = field(qd.r, qd.z);
+    const InteractionRule rule = interaction_rule(frame, problem.body->outline, rho_1);
+    const Quadrature2D &qd = rule.area;
+    const Quadrature2D asked = asked_points(rule);
+    const FieldValues fh = field(asked.r, asked.z); // the area's points, then the arcs'
     const FieldValues fv = field(Eigen::VectorXd::Constant(1, at.r), Eigen::VectorXd::Constant(1, at.z));
     const axisym::BodyLoads &loads = problem.body_loads;
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
@@ -152,29 +235,39 @@ namespace rfm
           }
       }
 
-    // The faces' part where a part carries a traction: int q r t_h . u* ds along each face.
-    const double tol = 1e-9 * problem.body->outline.size();
-    for (const axisym::OutlineEdge &e : problem.body->outline.edges())
+    // The faces' part, int q W . n ds = int q r (t_h . u* - t* . u~) ds: t_h . u* where a face
+    // carries a traction (on free faces it is 0; on clamped and symmetry lines both fields'
+    // constrained parts vanish), and on an arc also - t* . u~, the dual's traction on it (the
+    // dual is traction free on the straight wedge's face, the arc's tangent at the vertex, not
+    // on the arc: t* ~ rho^(-lambda) / R there, integrable against u~).
+    using Kind = axisym::PartCondition::Kind;
+    const auto prescribed = [](const axisym::PartCondition &c, const double n_r, const double n_z) {
+      return c.kind == Kind::pressure ? std::array<double, 2>{-c.pressure * n_r, -c.pressure * n_z}
+             : c.kind == Kind::traction ? std::array<double, 2>{c.traction[0], c.traction[1]}
+                                        : std::array<double, 2>{0.0, 0.0};
+    };
+    const auto faces = edges_at(problem.body->outline, at); // arriving, leaving
+    for (int f = 0; f < 2; ++f)
       {
-        const bool leaving = std::hypot(e.start.r - at.r, e.start.z - at.z) < tol;
-        const bool arriving = std::hypot(e.end.r - at.r, e.end.z - at.z) < tol;
-        if (!leaving && !arriving)
-          continue;
-        if (e.kind != axisym::OutlineEdge::Kind::line)
-          throw std::invalid_argument("vertex_intensities: the vertex at (" + std::to_string(at.r) + ", " +
-                                      std::to_string(at.z) + ") lies on an arc (part " + e.part + ")");
-        const axisym::PartCondition &c = problem.body->conditions.at(e.part);
-        using Kind = axisym::PartCondition::Kind;
+        const axisym::OutlineEdge *e = faces[static_cast<std::size_t>(f)];
+        const bool leaving = f == 1;
+        const axisym::PartCondition &c = problem.body->conditions.at(e->part);
+        if (e->kind != axisym::OutlineEdge::Kind::line)
+          {
+            if (c.kind != Kind::traction_free && c.kind != Kind::pressure && c.kind != Kind::traction)
+              throw std::invalid_argument("vertex_intensities: part " + e->part +
+                                          " is an arc with a prescribed displacement or a die (the dual modes "
+                                          "meet such a condition on lines only)");
+            continue; // below, with the arcs' points
+          }
         if (c.kind != Kind::pressure && c.kind != Kind::traction)
           continue;
-        if (!(rho_1 <= e.length() * (1.0 + 1e-12)))
-          throw std::invalid_argument("vertex_intensities: rho_1 is longer than part " + e.part);
+        if (!(rho_1 <= e->length() * (1.0 + 1e-12)))
+          throw std::invalid_argument("vertex_intensities: rho_1 is longer than part " + e->part);
         const double theta = leaving ? -alpha : alpha, phi = theta + beta;
         const double t_r = std::cos(phi), t_z = std::sin(phi);
         // The outward normal: the body lies toward the bisector.
-        const double n_r = leaving ? t_z : -t_z, n_z = leaving ? -t_r : t_r;
-        const double tr_r = c.kind == Kind::pressure ? -c.pressure * n_r : c.traction[0];
-        const double tr_z = c.kind == Kind::pressure ? -c.pressure * n_z : c.traction[1];
+        const auto [tr_r, tr_z] = prescribed(c, leaving ? t_z : -t_z, leaving ? -t_r : t_r);
         // Geometric cells toward the vertex, where u* grows like x^(-Re lambda).
         std::vector<double> cells{0.0};
         for (int l = 8; l >= 0; --l)
@@ -190,6 +283,29 @@ namespace rfm
                                                theta, beta, mu, nu);
                 rhs[static_cast<Eigen::Index>(j)] += gx.weights[k] * q * r * (tr_r * g.u[0] + tr_z * g.u[1]);
               }
+          }
+      }
+    for (Eigen::Index k = 0; k < rule.arcs.weights.size(); ++k)
+      {
+        const Eigen::Index at_k = qd.weights.size() + k; // the field's row
+        const double r = rule.arcs.r[k], z = rule.arcs.z[k];
+        const double rho = std::hypot(r - at.r, z - at.z);
+        if (!(rho > 0.0))
+          continue;
+        double theta = std::atan2(z - at.z, r - at.r) - beta;
+        theta -= 2.0 * pi * std::round(theta / (2.0 * pi));
+        const double q = interaction_weight(rho, rho_1).first;
+        const axisym::Point n_out = rule.normal[static_cast<std::size_t>(k)];
+        const auto [tr_r, tr_z] = prescribed(problem.body->conditions.at(rule.edge[static_cast<std::size_t>(k)]->part),
+                                             n_out.r, n_out.z);
+        const double ut_r = fh.u(at_k, 0) - fv.u(0, 0), ut_z = fh.u(at_k, 1) - fv.u(0, 1);
+        for (std::size_t j = 0; j < n; ++j)
+          {
+            const MeridianWedgeField g =
+              real_field(wedge, duals.modes[duals.mode_of[j]], 1.0, duals.part[j], rho, theta, beta, mu, nu);
+            const double ts_r = g.s[rr] * n_out.r + g.s[rz] * n_out.z, ts_z = g.s[rz] * n_out.r + g.s[zz] * n_out.z;
+            rhs[static_cast<Eigen::Index>(j)] +=
+              rule.arcs.weights[k] * q * r * (tr_r * g.u[0] + tr_z * g.u[1] - ts_r * ut_r - ts_z * ut_z);
           }
       }
 

@@ -26,7 +26,17 @@
 //   - int (q div W + W . grad q) dr dz + int_faces q r t_h . u* ds,
 //
 // the face term only where a face carries a traction t_h (on free faces s* n = 0; on clamped
-// and symmetry faces both fields' constrained parts vanish). B is the plane Betti form of
+// and symmetry faces both fields' constrained parts vanish).
+//
+// A face that is an arc (a traction-free, pressure or traction part) bounds the sector where
+// it runs, not its tangent at the vertex: the sector is the body within rho_1 (the frame's
+// rule, wedge_frame.h), the duals are taken at the polar angle from the bisector also where
+// the arc leaves the straight wedge (their angular functions are analytic), and the face
+// term on the arc is W . n = r (t_h . u* - t* . u~): the dual is traction free on the
+// tangent, not on the arc, where t* = s* n ~ rho^(-lambda) / R (R the arc's radius), which
+// is integrable against u~ ~ rho^lambda. Without that term K depended on rho_1 by O(rho_1 / R).
+//
+// B is the plane Betti form of
 // two wedge fields on a circle about the vertex (independent of its radius, zero between
 // modes of different exponents), so the K_i are the solution of one small linear system. The
 // integrand is integrable for Re lambda < 1 (the singular modes; the hoop and load terms are
@@ -51,16 +61,20 @@ namespace rfm
     std::complex<double> value; ///< K [Pa m^(1 - Re lambda)]; real for a real lambda
   };
 
-  /// The rule of vertex_intensities on the sector rho < rho_1 about the vertex of `frame` (the
-  /// enrichment's near-vertex rule at radius rho_1): the points at which `field` is asked for
-  /// values, in this order, followed by the vertex alone.
-  Quadrature2D vertex_interaction_quadrature(const VertexEnrichment &frame, double rho_1);
+  /// The rule of vertex_intensities about the vertex of `frame` (a vertex of `problem`'s
+  /// outline): the points at which `field` is asked for values, in this order, followed by the
+  /// vertex alone. First the sector rho < rho_1 of the body (the near-vertex rule at radius
+  /// rho_1, the frame's where a face is an arc; weights dr dz), then the points of the faces
+  /// that are arcs within rho_1 (weights ds).
+  Quadrature2D vertex_interaction_quadrature(const VertexEnrichment &frame, const axisym::Problem &problem,
+                                             double rho_1);
 
   /// The intensities of the modes of `frame` with Re lambda < 1 (one per real exponent and mode,
   /// one complex one per complex exponent) in `field`, the vertex of `frame` a vertex of
-  /// `problem`'s outline between two straight parts; loads (tractions of the two parts, body
-  /// force, temperature) from `problem`. rho_1 > 0: the sector must lie in the body (the
-  /// enrichment's cutoff radius does). Throws std::invalid_argument otherwise.
+  /// `problem`'s outline between two parts that are lines, or arcs that carry a traction (none,
+  /// a pressure or a traction); loads (tractions of the two parts, body force, temperature)
+  /// from `problem`. rho_1 > 0: the sector must lie in the body (the enrichment's cutoff radius
+  /// does). Throws std::invalid_argument otherwise.
   std::vector<VertexIntensity> vertex_intensities(const FieldEvaluator &field,
                                                   const VertexEnrichment &frame,
                                                   const axisym::Problem &problem, double rho_1);
