@@ -5,6 +5,7 @@
 
 #include <Eigen/LU>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -59,14 +60,45 @@ namespace rfm
       return out;
     }
 
+    /// A rule on [0, length] for integrands regular at 0 or ~ x^(-a) (plain length weights):
+    /// 12 Gauss points on geometric cells of ratio 0.2, the innermost mapped by x = x_in s^2.
+    GaussRule1D face_rule(const double length)
+    {
+      GaussRule1D g = polar_radial_rule(length, 12, 8);
+      g.weights.array() /= g.nodes.array();
+      return g;
+    }
+
+    /// The polar angle from the bisector `beta` of the point of face `e` at the distance rho from
+    /// the vertex (`leaving`: e starts there; else it ends there), from the chord's turn from
+    /// the tangent, half the arc's angle, without the cancellation of x - v at small rho.
+    double chord_angle(const axisym::OutlineEdge &e, const bool leaving, const double rho, const double beta)
+    {
+      const axisym::Point t = leaving ? e.tangent_at(0.0) : e.tangent_at(1.0);
+      double angle = leaving ? std::atan2(t.z, t.r) : std::atan2(-t.z, -t.r);
+      if (e.kind == axisym::OutlineEdge::Kind::arc)
+        {
+          const double half = std::asin(std::min(1.0, 0.5 * rho / e.radius()));
+          const double turn = e.sweep() > 0.0 ? 1.0 : -1.0;
+          angle += (leaving ? turn : -turn) * half;
+        }
+      double theta = angle - beta;
+      theta -= 2.0 * pi * std::round(theta / (2.0 * pi));
+      return theta;
+    }
+
     /// The rule of the interaction integral: the sector rho < rho_1 of the body about the
-    /// vertex (area weights dr dz), and the points of the faces that are arcs within rho_1
-    /// (length weights ds), with the arc's outward normal and edge at each.
+    /// vertex (area weights dr dz), and the points of the faces that are arcs within rho_1,
+    /// by their distance rho from the vertex (weights ds = drho / cos(phi / 2), phi the arc's
+    /// angle from the vertex), with rho, the polar angle, the arc's outward normal and edge
+    /// and whether it leaves the vertex at each.
     struct InteractionRule
     {
       Quadrature2D area, arcs;
+      std::vector<double> arc_rho, arc_theta;
       std::vector<axisym::Point> normal;
       std::vector<const axisym::OutlineEdge *> edge;
+      std::vector<bool> leaving;
     };
 
     InteractionRule interaction_rule(const VertexEnrichment &frame, const axisym::Outline &outline,
@@ -79,6 +111,7 @@ namespace rfm
                               frame.material());
       const auto [arriving_edge, leaving_edge] = edges_at(outline, frame.vertex());
       InteractionRule rule;
+      const GaussRule1D g = face_rule(rho_1);
       for (const axisym::OutlineEdge *e : {leaving_edge, arriving_edge})
         {
           if (e->kind != axisym::OutlineEdge::Kind::arc)
@@ -86,31 +119,34 @@ namespace rfm
           const double radius = e->radius(), sweep = std::abs(e->sweep());
           if (!(rho_1 < 2.0 * radius * std::sin(0.5 * sweep)))
             throw std::invalid_argument("vertex_intensities: rho_1 reaches beyond the end of part " + e->part);
-          // The arc within rho_1 of the vertex, t in [0, t_1] from it (uniform in length),
-          // in geometric cells toward the vertex as the line faces'.
-          const double t_1 = 2.0 * std::asin(0.5 * rho_1 / radius) / sweep, length = radius * sweep;
-          std::vector<double> cells{0.0};
-          for (int l = 8; l >= 0; --l)
-            cells.push_back(t_1 * std::pow(0.2, l));
-          const GaussRule1D gt = gauss_on_cells(cells, 12, {0.0});
           const bool from_start = e == leaving_edge;
-          const Eigen::Index n0 = rule.arcs.weights.size(), n = gt.nodes.size();
+          const Eigen::Index n0 = rule.arcs.weights.size(), n = g.nodes.size();
           rule.arcs.r.conservativeResize(n0 + n), rule.arcs.z.conservativeResize(n0 + n);
           rule.arcs.weights.conservativeResize(n0 + n);
           for (Eigen::Index k = 0; k < n; ++k)
             {
-              const double t = from_start ? gt.nodes[k] : 1.0 - gt.nodes[k];
+              const double rho = g.nodes[k], phi = 2.0 * std::asin(0.5 * rho / radius);
+              const double t = from_start ? phi / sweep : 1.0 - phi / sweep;
               const axisym::Point x = e->point_at(t);
               rule.arcs.r[n0 + k] = x.r, rule.arcs.z[n0 + k] = x.z;
-              rule.arcs.weights[n0 + k] = gt.weights[k] * length;
+              rule.arcs.weights[n0 + k] = g.weights[k] / std::cos(0.5 * phi);
+              rule.arc_rho.push_back(rho);
+              rule.arc_theta.push_back(chord_angle(*e, from_start, rho, frame.bisector_angle()));
               rule.normal.push_back(e->outward_normal_at(t));
               rule.edge.push_back(e);
+              rule.leaving.push_back(from_start);
             }
         }
       if (rule.arcs.weights.size() > 0)
         sector.set_curved_faces(WedgeFrame(*arriving_edge, *leaving_edge));
       rule.area = sector.near_rule(8, 12);
       return rule;
+    }
+
+    /// int_0^rho_1 q(rho) rho^mu drho for q = 1 - 3 t^2 + 2 t^3, t = rho / rho_1 (Re mu > -1).
+    cd weighted_power_integral(const cd mu, const double rho_1)
+    {
+      return std::pow(cd(rho_1), mu + 1.0) * (1.0 / (mu + 1.0) - 3.0 / (mu + 3.0) + 2.0 / (mu + 4.0));
     }
 
     /// The points at which the integral asks for the field: the area's, then the arcs'.
@@ -199,12 +235,28 @@ namespace rfm
       }
 
     // The domain part on the sector, -int (q div W + W . grad q) dr dz, per dual.
+    //
+    // Its terms u_r s*_tt and - r alpha T tr s*, and the faces' t_h . u*, go like rho^(-a)
+    // drho at the vertex (a = Re lambda of the dual's mode): for a near 1 a fixed share of
+    // their integrals lies below any radius that points in (r, z) can resolve ((1e-14)^(1 - a)
+    // of it below 1e-14 rho_1: 13 % at the 186-degree free wedge's a = 0.9375, where the plain
+    // rule gave the mode's K 3.8 % low). So their parts with the vertex's values, u_r(v),
+    // r_v alpha T(v) and r_v t_h(v), whose integrals are q rho^mu times a function of the
+    // angle, are integrated in closed form in rho (weighted_power_integral) and by Gauss in the
+    // angle over the straight wedge, plus the slivers between a face's tangent and its arc
+    // (regular, by Gauss in rho); the rules take only the rest, regular at the vertex.
     const InteractionRule rule = interaction_rule(frame, problem.body->outline, rho_1);
     const Quadrature2D &qd = rule.area;
     const Quadrature2D asked = asked_points(rule);
     const FieldValues fh = field(asked.r, asked.z); // the area's points, then the arcs'
     const FieldValues fv = field(Eigen::VectorXd::Constant(1, at.r), Eigen::VectorXd::Constant(1, at.z));
     const axisym::BodyLoads &loads = problem.body_loads;
+    const double u_rv = fv.u(0, 0);
+    const double thermal_v = loads.thermal() ? at.r * axisym::thermal_strain(loads, m, at.r, at.z) : 0.0;
+    // The vertex part of the area's integrand at a dual's stress: u_r(v) s*_tt - r_v alpha T(v) tr s*.
+    const auto vertex_part = [&](const MeridianWedgeField &g) {
+      return u_rv * g.s[tt] - thermal_v * (g.s[rr] + g.s[zz] + g.s[tt]);
+    };
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
     for (Eigen::Index k = 0; k < qd.weights.size(); ++k)
       {
@@ -231,7 +283,46 @@ namespace rfm
             const double div_w = g.u[0] * fh.sigma(k, tt) + u_r * g.s[tt] - g.s[rr] * ut_r -
                                  g.s[rz] * ut_z - r * (f[0] * g.u[0] + f[1] * g.u[1]) -
                                  r * alpha_t * (g.s[rr] + g.s[zz] + g.s[tt]);
-            rhs[static_cast<Eigen::Index>(j)] -= qd.weights[k] * (q * div_w + (w_r * e_r + w_z * e_z) * dq);
+            rhs[static_cast<Eigen::Index>(j)] -=
+              qd.weights[k] * (q * (div_w - vertex_part(g)) + (w_r * e_r + w_z * e_z) * dq);
+          }
+      }
+
+    // The vertex parts in closed form: - int q rho^mu rho drho int vertex_part(S*(theta)) dtheta
+    // over the straight wedge (S* the dual's stress at rho = 1, mu + 1 = -a + i b its
+    // exponent), then the slivers where a face is an arc: the sector's angles at rho run from
+    // theta_0(rho) to theta_1(rho), not from -alpha to alpha.
+    const auto faces = edges_at(problem.body->outline, at); // arriving, leaving
+    const GaussRule1D gr = face_rule(rho_1), g3 = gauss_legendre(4);
+    for (std::size_t j = 0; j < n; ++j)
+      {
+        const WedgeMode &dual = duals.modes[duals.mode_of[j]];
+        const cd radial = weighted_power_integral(dual.lambda, rho_1); // s* ~ rho^(lambda - 1), times rho
+        for (Eigen::Index k = 0; k < gt.nodes.size(); ++k)
+          rhs[static_cast<Eigen::Index>(j)] -=
+            gt.weights[k] *
+            vertex_part(real_field(wedge, dual, radial, duals.part[j], 1.0, gt.nodes[k], beta, mu, nu));
+        for (int f = 0; f < 2; ++f)
+          {
+            const axisym::OutlineEdge &e = *faces[static_cast<std::size_t>(f)];
+            if (e.kind != axisym::OutlineEdge::Kind::arc)
+              continue;
+            const bool leaving = f == 1;
+            const double edge_theta = leaving ? -alpha : alpha;
+            for (Eigen::Index k = 0; k < gr.nodes.size(); ++k)
+              {
+                const double rho = gr.nodes[k], q = interaction_weight(rho, rho_1).first;
+                // The sector's angles at rho gain [alpha, theta_1] and lose [-alpha, theta_0].
+                const double to = chord_angle(e, leaving, rho, beta), sign = leaving ? -1.0 : 1.0;
+                double sliver = 0.0;
+                for (Eigen::Index l = 0; l < g3.nodes.size(); ++l)
+                  {
+                    const double theta = edge_theta + 0.5 * (g3.nodes[l] + 1.0) * (to - edge_theta);
+                    sliver += 0.5 * g3.weights[l] * (to - edge_theta) *
+                              vertex_part(real_field(wedge, dual, 1.0, duals.part[j], rho, theta, beta, mu, nu));
+                  }
+                rhs[static_cast<Eigen::Index>(j)] -= gr.weights[k] * q * rho * sign * sliver;
+              }
           }
       }
 
@@ -239,73 +330,77 @@ namespace rfm
     // carries a traction (on free faces it is 0; on clamped and symmetry lines both fields'
     // constrained parts vanish), and on an arc also - t* . u~, the dual's traction on it (the
     // dual is traction free on the straight wedge's face, the arc's tangent at the vertex, not
-    // on the arc: t* ~ rho^(-lambda) / R there, integrable against u~).
+    // on the arc: t* ~ rho^(-lambda) / R there, integrable against u~). The part
+    // q r_v t_h(v) . u*(rho, face angle), with the traction at the vertex, in closed form.
     using Kind = axisym::PartCondition::Kind;
-    const auto prescribed = [](const axisym::PartCondition &c, const double n_r, const double n_z) {
-      return c.kind == Kind::pressure ? std::array<double, 2>{-c.pressure * n_r, -c.pressure * n_z}
+    const auto prescribed = [](const axisym::PartCondition &c, const axisym::Point n_out) {
+      return c.kind == Kind::pressure ? std::array<double, 2>{-c.pressure * n_out.r, -c.pressure * n_out.z}
              : c.kind == Kind::traction ? std::array<double, 2>{c.traction[0], c.traction[1]}
                                         : std::array<double, 2>{0.0, 0.0};
     };
-    const auto faces = edges_at(problem.body->outline, at); // arriving, leaving
+    std::array<std::array<double, 2>, 2> t_vertex{}; // the faces' tractions at the vertex
     for (int f = 0; f < 2; ++f)
       {
         const axisym::OutlineEdge *e = faces[static_cast<std::size_t>(f)];
         const bool leaving = f == 1;
         const axisym::PartCondition &c = problem.body->conditions.at(e->part);
-        if (e->kind != axisym::OutlineEdge::Kind::line)
-          {
-            if (c.kind != Kind::traction_free && c.kind != Kind::pressure && c.kind != Kind::traction)
-              throw std::invalid_argument("vertex_intensities: part " + e->part +
-                                          " is an arc with a prescribed displacement or a die (the dual modes "
-                                          "meet such a condition on lines only)");
-            continue; // below, with the arcs' points
-          }
+        if (e->kind != axisym::OutlineEdge::Kind::line &&
+            c.kind != Kind::traction_free && c.kind != Kind::pressure && c.kind != Kind::traction)
+          throw std::invalid_argument("vertex_intensities: part " + e->part +
+                                      " is an arc with a prescribed displacement or a die (the dual modes "
+                                      "meet such a condition on lines only)");
         if (c.kind != Kind::pressure && c.kind != Kind::traction)
           continue;
-        if (!(rho_1 <= e->length() * (1.0 + 1e-12)))
+        if (e->kind == axisym::OutlineEdge::Kind::line && !(rho_1 <= e->length() * (1.0 + 1e-12)))
           throw std::invalid_argument("vertex_intensities: rho_1 is longer than part " + e->part);
-        const double theta = leaving ? -alpha : alpha, phi = theta + beta;
-        const double t_r = std::cos(phi), t_z = std::sin(phi);
-        // The outward normal: the body lies toward the bisector.
-        const auto [tr_r, tr_z] = prescribed(c, leaving ? t_z : -t_z, leaving ? -t_r : t_r);
-        // Geometric cells toward the vertex, where u* grows like x^(-Re lambda).
-        std::vector<double> cells{0.0};
-        for (int l = 8; l >= 0; --l)
-          cells.push_back(rho_1 * std::pow(0.2, l));
-        const GaussRule1D gx = gauss_on_cells(cells, 12, {0.0});
-        for (Eigen::Index k = 0; k < gx.nodes.size(); ++k)
+        const double theta = leaving ? -alpha : alpha;
+        t_vertex[static_cast<std::size_t>(f)] = prescribed(c, e->outward_normal_at(leaving ? 0.0 : 1.0));
+        const auto [tv_r, tv_z] = t_vertex[static_cast<std::size_t>(f)];
+        for (std::size_t j = 0; j < n; ++j)
           {
-            const double x = gx.nodes[k], r = at.r + x * t_r;
+            const WedgeMode &dual = duals.modes[duals.mode_of[j]];
+            const MeridianWedgeField g0 = real_field(wedge, dual, weighted_power_integral(dual.lambda, rho_1),
+                                                     duals.part[j], 1.0, theta, beta, mu, nu);
+            rhs[static_cast<Eigen::Index>(j)] += at.r * (tv_r * g0.u[0] + tv_z * g0.u[1]);
+          }
+        if (e->kind != axisym::OutlineEdge::Kind::line)
+          continue; // the rest below, with the arcs' points
+        // The rest on a line: q (r - r_v) t_h . u*.
+        const double phi = theta + beta, t_r = std::cos(phi);
+        for (Eigen::Index k = 0; k < gr.nodes.size(); ++k)
+          {
+            const double x = gr.nodes[k];
             const double q = interaction_weight(x, rho_1).first;
             for (std::size_t j = 0; j < n; ++j)
               {
                 const MeridianWedgeField g = real_field(wedge, duals.modes[duals.mode_of[j]], 1.0, duals.part[j], x,
                                                theta, beta, mu, nu);
-                rhs[static_cast<Eigen::Index>(j)] += gx.weights[k] * q * r * (tr_r * g.u[0] + tr_z * g.u[1]);
+                rhs[static_cast<Eigen::Index>(j)] += gr.weights[k] * q * x * t_r * (tv_r * g.u[0] + tv_z * g.u[1]);
               }
           }
       }
     for (Eigen::Index k = 0; k < rule.arcs.weights.size(); ++k)
       {
         const Eigen::Index at_k = qd.weights.size() + k; // the field's row
-        const double r = rule.arcs.r[k], z = rule.arcs.z[k];
-        const double rho = std::hypot(r - at.r, z - at.z);
-        if (!(rho > 0.0))
-          continue;
-        double theta = std::atan2(z - at.z, r - at.r) - beta;
-        theta -= 2.0 * pi * std::round(theta / (2.0 * pi));
+        const std::size_t ks = static_cast<std::size_t>(k);
+        const double r = rule.arcs.r[k], rho = rule.arc_rho[ks], theta = rule.arc_theta[ks];
         const double q = interaction_weight(rho, rho_1).first;
-        const axisym::Point n_out = rule.normal[static_cast<std::size_t>(k)];
-        const auto [tr_r, tr_z] = prescribed(problem.body->conditions.at(rule.edge[static_cast<std::size_t>(k)]->part),
-                                             n_out.r, n_out.z);
+        const axisym::Point n_out = rule.normal[ks];
+        const auto [tr_r, tr_z] = prescribed(problem.body->conditions.at(rule.edge[ks]->part), n_out);
+        const std::size_t f = rule.leaving[ks] ? 1 : 0;
+        const auto [tv_r, tv_z] = t_vertex[f];
+        const double edge_theta = rule.leaving[ks] ? -alpha : alpha;
         const double ut_r = fh.u(at_k, 0) - fv.u(0, 0), ut_z = fh.u(at_k, 1) - fv.u(0, 1);
         for (std::size_t j = 0; j < n; ++j)
           {
-            const MeridianWedgeField g =
-              real_field(wedge, duals.modes[duals.mode_of[j]], 1.0, duals.part[j], rho, theta, beta, mu, nu);
+            const WedgeMode &dual = duals.modes[duals.mode_of[j]];
+            const MeridianWedgeField g = real_field(wedge, dual, 1.0, duals.part[j], rho, theta, beta, mu, nu);
+            const MeridianWedgeField g0 = real_field(wedge, dual, 1.0, duals.part[j], rho, edge_theta, beta, mu, nu);
             const double ts_r = g.s[rr] * n_out.r + g.s[rz] * n_out.z, ts_z = g.s[rz] * n_out.r + g.s[zz] * n_out.z;
+            // ds = weight; the closed-form part took q r_v t_h(v) . u*(rho, edge angle) drho.
             rhs[static_cast<Eigen::Index>(j)] +=
-              rule.arcs.weights[k] * q * r * (tr_r * g.u[0] + tr_z * g.u[1] - ts_r * ut_r - ts_z * ut_z);
+              rule.arcs.weights[k] * q * r * (tr_r * g.u[0] + tr_z * g.u[1] - ts_r * ut_r - ts_z * ut_z) -
+              gr.weights[k % gr.nodes.size()] * q * at.r * (tv_r * g0.u[0] + tv_z * g0.u[1]);
           }
       }
 

@@ -36,6 +36,14 @@
 // tangent, not on the arc, where t* = s* n ~ rho^(-lambda) / R (R the arc's radius), which
 // is integrable against u~ ~ rho^lambda. Without that term K depended on rho_1 by O(rho_1 / R).
 //
+// The terms u_r s*_tt and - r alpha T tr s* of div W and the faces' t_h . u* go like
+// rho^(-Re lambda) drho at the vertex, integrable, but for lambda near 1 a fixed share of them
+// lies below any radius that points in (r, z) resolve (13 % below 1e-14 rho_1 at lambda =
+// 0.9375, the 186-degree free wedge, where a rule alone gave K 3.8 % low). Their parts with
+// the vertex's values (u_r(v), r_v alpha T(v), r_v t_h(v)) are q rho^mu times a function of
+// the angle, integrated in closed form in rho and by Gauss in the angle (and over the slivers
+// between an arc and its tangent); the rules take the rest, which is regular.
+//
 // B is the plane Betti form of
 // two wedge fields on a circle about the vertex (independent of its radius, zero between
 // modes of different exponents), so the K_i are the solution of one small linear system. The
