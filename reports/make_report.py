@@ -1563,6 +1563,31 @@ def hub_temperature_rows(corners, out_dir):
     return md
 
 
+def vertex_intensity_sentences(md, c, key):
+    """One sentence per vertex listed under `key` in the FEM's levels and the RFM's runs of a
+    corners case: K_1 of each FEM level and RFM degree, and the RFM's largest difference of the
+    vertex's K from the FEM's finest level, relative to each."""
+    f = c["fem"]
+    ps = numbered(c["rfm"], "p")
+    levels = [lk for lk in numbered(f, "L") if key in f[lk]]
+    if not ps or not levels or key not in c["rfm"][ps[-1]]:
+        return
+    def k_of(run, a):
+        return [complex(*x["K"]) for x in run[key][a]["intensities"]]
+    for a, v in enumerate(c["rfm"][ps[-1]][key]):
+        lam = v["intensities"][0]["lambda"][0]
+        finest = k_of(f[levels[-1]], a)
+        fem_k = ", ".join(f"{k_of(f[lk], a)[0].real:.6e}" for lk in levels)
+        rfm_k = ", ".join(f"{k_of(c['rfm'][k], a)[0].real:.6e}" for k in ps)
+        errs = ", ".join(f"{max(abs(x - y) / abs(y) for x, y in zip(k_of(c['rfm'][k], a), finest)):.1e}" for k in ps)
+        face = "with an arc face " if v.get("curved_faces", key == "arc_vertices") else ""
+        md.append(f"The vertex {face}at ({v['at'][0]:.4g}, {v['at'][1]:.4g}) m (lambda = {lam:.4f}; the sector of "
+                  f"its disc, radius {v['sector_radius']:.3g} m): K_1 = {fem_k} Pa m^{1 - lam:.3g} from the FEM's "
+                  f"{', '.join(levels)}, {rfm_k} from the RFM at p = {', '.join(k[1:] for k in ps)}, "
+                  f"{errs} from the FEM's finest level.")
+        md.append("")
+
+
 def corner_case_rows(md, ax, key, title, c):
     """One case of section 9 (`corners`' corner_case): the FEM's levels and adaptive row, the RFM
     with and without the vertex's columns against p (table rows and curves on ax)."""
@@ -1629,18 +1654,7 @@ def corner_case_rows(md, ax, key, title, c):
         md.append("")
     # Vertices with an arc face (their intensities on the body's sector, with the duals'
     # traction on the arc: rfm/fields/vertex_intensity.h).
-    arcs = c["rfm"][ps[-1]].get("arc_vertices", [])
-    for a, v in enumerate(arcs):
-        levels = numbered(f, "L")
-        lam = v["intensities"][0]["lambda"][0]
-        fem_k = ", ".join(f"{f[lk]['arc_vertices'][a]['intensities'][0]['K'][0]:.6e}" for lk in levels)
-        rfm_k = ", ".join(f"{c['rfm'][k]['arc_vertices'][a]['intensities'][0]['K'][0]:.6e}" for k in ps)
-        errs = ", ".join(f"{c['rfm'][k]['arc_vertex_intensity_error_relative']:.1e}" for k in ps)
-        md.append(f"The vertex with an arc face at ({v['at'][0]:.4g}, {v['at'][1]:.4g}) m (lambda = {lam:.4f}; the "
-                  f"sector of its disc, radius {v['sector_radius']:.3g} m): K_1 = {fem_k} Pa m^{1 - lam:.3g} from "
-                  f"the FEM's {', '.join(levels)}, {rfm_k} from the RFM at p = {', '.join(k[1:] for k in ps)}, "
-                  f"{errs} from the FEM's finest level.")
-        md.append("")
+    vertex_intensity_sentences(md, c, "arc_vertices")
     if axis:
         last = ps[-1]
         r = c["rfm"][last]
@@ -1749,6 +1763,7 @@ def traction_jump_rows(corners, out_dir):
                                 ("rfm_without_jump_field", "RFM without the field")),
                     lambda r: " | ".join(f"{e:.1e}" for e in r["sample_errors_relative"]))
         md.append("")
+        vertex_intensity_sentences(md, c, "vertices")
         decorate(ax, "degree p", "Phi_R against the FEM's limit (relative); indicator", key.replace("_", " "))
     md.append(f"![traction jumps: energy error and indicator against p]({save(fig, out_dir, 'corners_traction_jumps.png')})")
     md.append("")

@@ -82,6 +82,83 @@ namespace
     return m;
   }
 
+  // Vertices' generalized stress intensities from both solvers (rfm/fields/vertex_intensity.h),
+  // each on the sector of its enrichment's disc; the FEM's from its fields at the sectors'
+  // rules, appended to its samples after the problem's own (and any added before).
+  class IntensitySites
+  {
+  public:
+    IntensitySites(const axisym::Problem &problem, std::vector<rfm::VertexEnrichment> vertices)
+      : problem_(problem), vertices_(std::move(vertices))
+    {}
+    /// The enrichments of a model at p = 2 (their discs do not depend on p) with singular
+    /// modes (Re lambda < 1); `curved`: those with an arc face only.
+    static std::vector<rfm::VertexEnrichment> singular(const rfm::OutlineModel &model, const bool curved)
+    {
+      std::vector<rfm::VertexEnrichment> out;
+      for (const rfm::VertexEnrichment &e : model.vertex_enrichments())
+        if ((!curved || e.curved()) && std::any_of(e.modes().begin(), e.modes().end(), [](const rfm::WedgeMode &m) {
+              return m.lambda.real() < 1.0;
+            }))
+          out.push_back(e);
+      return out;
+    }
+    bool empty() const { return vertices_.empty(); }
+    void add_samples(axisym::Problem &sampled)
+    {
+      for (const rfm::VertexEnrichment &e : vertices_)
+        {
+          first_.push_back(sampled.samples.size());
+          verification::add_interaction_samples(sampled.samples,
+                                                rfm::vertex_interaction_quadrature(e, problem_, e.cutoff_radius()),
+                                                e.vertex().r, e.vertex().z);
+          vertex_sample_.push_back(sampled.samples.size() - 1);
+        }
+    }
+    std::vector<std::vector<rfm::VertexIntensity>> of(const fem::FemResult &f) const
+    {
+      std::vector<std::vector<rfm::VertexIntensity>> out;
+      for (std::size_t a = 0; a < vertices_.size(); ++a)
+        out.push_back(rfm::vertex_intensities(verification::sampled_interaction_field(f, first_[a], vertex_sample_[a]),
+                                              vertices_[a], problem_, vertices_[a].cutoff_radius()));
+      return out;
+    }
+    std::vector<std::vector<rfm::VertexIntensity>> of(const rfm::OutlineModel &m) const
+    {
+      const rfm::FieldEvaluator field = [&m](const Eigen::Ref<const Eigen::VectorXd> &rr,
+                                             const Eigen::Ref<const Eigen::VectorXd> &zz) { return m.evaluate(rr, zz); };
+      std::vector<std::vector<rfm::VertexIntensity>> out;
+      for (const rfm::VertexEnrichment &e : vertices_)
+        out.push_back(rfm::vertex_intensities(field, e, problem_, e.cutoff_radius()));
+      return out;
+    }
+    nlohmann::json to_json(const std::vector<std::vector<rfm::VertexIntensity>> &k) const
+    {
+      nlohmann::json j = nlohmann::json::array();
+      for (std::size_t a = 0; a < vertices_.size(); ++a)
+        j.push_back({{"at", {vertices_[a].vertex().r, vertices_[a].vertex().z}},
+                     {"sector_radius", vertices_[a].cutoff_radius()},
+                     {"curved_faces", vertices_[a].curved()},
+                     {"intensities", rfm::to_json(k[a])}});
+      return j;
+    }
+    /// The largest difference of the K of `k` from those of `reference`, each relative to its own.
+    static double largest_difference(const std::vector<std::vector<rfm::VertexIntensity>> &k,
+                                     const std::vector<std::vector<rfm::VertexIntensity>> &reference)
+    {
+      double out = 0.0;
+      for (std::size_t a = 0; a < k.size(); ++a)
+        for (std::size_t i = 0; i < k[a].size(); ++i)
+          out = std::max(out, std::abs(k[a][i].value - reference[a][i].value) / std::abs(reference[a][i].value));
+      return out;
+    }
+
+  private:
+    const axisym::Problem &problem_;
+    std::vector<rfm::VertexEnrichment> vertices_;
+    std::vector<std::size_t> first_, vertex_sample_;
+  };
+
   // z_degree_ratio > 0: a third variant, the RFM with that rfm.z_degree_ratio
   // ("rfm_z_degree_ratio").
   nlohmann::json corner_case(const verification::DriverContext &context, const std::string &file,
@@ -101,13 +178,11 @@ namespace
     // The vertex with straight faces (one a case), whose intensities the table gives; the
     // vertices with an arc face and singular modes apart ("arc_vertices"), each on the sector
     // of its own disc.
-    std::vector<rfm::VertexEnrichment> straight, arcs;
+    std::vector<rfm::VertexEnrichment> straight;
     for (const rfm::VertexEnrichment &e : frame_model.vertex_enrichments())
       if (!e.curved())
         straight.push_back(e);
-      else if (std::any_of(e.modes().begin(), e.modes().end(),
-                           [](const rfm::WedgeMode &m) { return m.lambda.real() < 1.0; }))
-        arcs.push_back(e);
+    IntensitySites arcs(problem, IntensitySites::singular(frame_model, true));
     if (straight.size() != 1)
       throw verification::NumericalFailure(file + ": expected one enriched vertex with straight faces");
     const rfm::VertexEnrichment frame = straight.front();
@@ -125,28 +200,7 @@ namespace
     verification::add_interaction_samples(sampled.samples, rfm::vertex_interaction_quadrature(frame, problem, rho_1),
                                           frame.vertex().r, frame.vertex().z);
     const std::size_t frame_vertex_sample = sampled.samples.size() - 1;
-    std::vector<std::size_t> arc_first; // each arc vertex's first sample (its own vertex last)
-    for (const rfm::VertexEnrichment &e : arcs)
-      {
-        arc_first.push_back(sampled.samples.size());
-        verification::add_interaction_samples(sampled.samples,
-                                              rfm::vertex_interaction_quadrature(e, problem, e.cutoff_radius()),
-                                              e.vertex().r, e.vertex().z);
-      }
-    const auto arc_intensities = [&](const auto &field_of) {
-      std::vector<std::vector<rfm::VertexIntensity>> out;
-      for (std::size_t a = 0; a < arcs.size(); ++a)
-        out.push_back(rfm::vertex_intensities(field_of(a), arcs[a], problem, arcs[a].cutoff_radius()));
-      return out;
-    };
-    const auto arc_json = [&](const std::vector<std::vector<rfm::VertexIntensity>> &k) {
-      nlohmann::json j = nlohmann::json::array();
-      for (std::size_t a = 0; a < arcs.size(); ++a)
-        j.push_back({{"at", {arcs[a].vertex().r, arcs[a].vertex().z}},
-                     {"sector_radius", arcs[a].cutoff_radius()},
-                     {"intensities", rfm::to_json(k[a])}});
-      return j;
-    };
+    arcs.add_samples(sampled);
     std::vector<std::vector<rfm::VertexIntensity>> fem_arc_k;
     for (const int level : levels)
       {
@@ -160,10 +214,7 @@ namespace
         fem_k = rfm::vertex_intensities(
           verification::sampled_interaction_field(f, problem.samples.size(), frame_vertex_sample), frame, problem,
           rho_1);
-        fem_arc_k = arc_intensities([&](const std::size_t a) {
-          const std::size_t last = a + 1 < arcs.size() ? arc_first[a + 1] - 1 : f.samples.size() - 1;
-          return verification::sampled_interaction_field(f, arc_first[a], last);
-        });
+        fem_arc_k = arcs.of(f);
         fmt::print("FEM Q2 L = {}: Phi_R = {:.10e} J/rad, K_1 = {:.8e} ({} dofs, {:.1f} s)\n", level, phi,
                    fem_k.front().value.real(), f.n_dofs, f.total_seconds);
         nlohmann::json samples = nlohmann::json::array();
@@ -180,7 +231,7 @@ namespace
                                                  {"samples", samples},
                                                  {"intensities", rfm::to_json(fem_k)}};
         if (!arcs.empty())
-          c["fem"]["L" + std::to_string(level)]["arc_vertices"] = arc_json(fem_arc_k);
+          c["fem"]["L" + std::to_string(level)]["arc_vertices"] = arcs.to_json(fem_arc_k);
         energies.push_back(phi);
       }
     const double limit = energy_limit(energies, file, c["fem"]);
@@ -264,23 +315,6 @@ namespace
             double k_error = 0.0;
             for (std::size_t i = 0; i < k.size(); ++i)
               k_error = std::max(k_error, std::abs(k[i].value - fem_k[i].value) / std::abs(fem_k[i].value));
-            // The arc vertices' intensities against the FEM's (for the RFM with its vertex
-            // columns).
-            std::vector<std::vector<rfm::VertexIntensity>> arc_k;
-            double arc_k_error = 0.0;
-            if (enriched)
-              {
-                arc_k = arc_intensities([&m](std::size_t) -> rfm::FieldEvaluator {
-                  return [&m](const Eigen::Ref<const Eigen::VectorXd> &rr,
-                              const Eigen::Ref<const Eigen::VectorXd> &zz) { return m.evaluate(rr, zz); };
-                });
-                for (std::size_t a = 0; a < arcs.size(); ++a)
-                  for (std::size_t i = 0; i < arc_k[a].size(); ++i)
-                    arc_k_error = std::max(arc_k_error, std::abs(arc_k[a][i].value - fem_arc_k[a][i].value) /
-                                                          std::abs(fem_arc_k[a][i].value));
-                if (!arcs.empty())
-                  fmt::print("RFM p = {:>2}: K at the arc vertices {:.2e} from the FEM's\n", p, arc_k_error);
-              }
             fmt::print("RFM{} p = {:>2}: Phi_R {:.10e} ({:.2e} from the FEM's limit), indicator {:.2e}, "
                        "samples {:.2e} of max |sigma| from the FEM's{}, K {:.2e} from the FEM's, {} vertex "
                        "columns ({:.1f} s)\n",
@@ -311,9 +345,14 @@ namespace
                                                {"N", m.n_basis_functions()},
                                                {"degree_z", m.degree_z()},
                                                {"seconds", seconds}};
+            // The arc vertices' intensities against the FEM's (for the RFM with its vertex
+            // columns).
             if (enriched && !arcs.empty())
               {
-                c[key]["p" + std::to_string(p)]["arc_vertices"] = arc_json(arc_k);
+                const std::vector<std::vector<rfm::VertexIntensity>> arc_k = arcs.of(m);
+                const double arc_k_error = IntensitySites::largest_difference(arc_k, fem_arc_k);
+                fmt::print("RFM p = {:>2}: K at the arc vertices {:.2e} from the FEM's\n", p, arc_k_error);
+                c[key]["p" + std::to_string(p)]["arc_vertices"] = arcs.to_json(arc_k);
                 c[key]["p" + std::to_string(p)]["arc_vertex_intensity_error_relative"] = arc_k_error;
               }
             if (on_axis)
@@ -343,22 +382,33 @@ namespace
     const axisym::Problem problem = axisym::read_problem_file(context.problem_path(file));
     nlohmann::json c = {{"problem_file", "verification/problems/" + file}};
     fmt::print("\n== {} ==\n", file);
+    // The singular vertices' intensities from both solvers (issue 24 item 8), where there are
+    // any (the hub's 186-degree arc vertex and taper-neck vertex; the straight jumps have none).
+    rfm::DiscretizationOptions frame_options = problem.rfm;
+    frame_options.degree = 2;
+    frame_options.tolerance.reset();
+    const rfm::OutlineModel frame_model(problem, frame_options);
+    IntensitySites sites(problem, IntensitySites::singular(frame_model, false));
+    axisym::Problem sampled = problem;
+    sites.add_samples(sampled);
+    std::vector<std::vector<rfm::VertexIntensity>> fem_k;
     std::vector<double> energies;
     std::vector<std::array<double, 4>> fem_samples;
     for (const int level : levels)
       {
-        fem::FemOptions o = fem::options_from_problem(problem);
+        fem::FemOptions o = fem::options_from_problem(sampled);
         o.refinements = level;
         o.progress = false;
-        const fem::FemResult f = fem::solve(problem, o);
+        const fem::FemResult f = fem::solve(sampled, o);
         if (!f.success)
           throw verification::NumericalFailure(file + " FEM L = " + std::to_string(level) + ": " + f.message);
         fmt::print("FEM Q2 L = {}: Phi_R = {:.10e} J/rad ({} dofs, {:.1f} s)\n", level, f.functionals.reissner,
                    f.n_dofs, f.total_seconds);
         nlohmann::json samples = nlohmann::json::array();
         fem_samples.clear();
-        for (const fem::FieldSample &x : f.samples)
+        for (std::size_t k = 0; k < problem.samples.size(); ++k)
           {
+            const fem::FieldSample &x = f.samples[k];
             samples.push_back({{"r", x.r}, {"z", x.z}, {"sigma", x.sigma}});
             fem_samples.push_back(x.sigma);
           }
@@ -366,6 +416,11 @@ namespace
                                                  {"dofs", f.n_dofs},
                                                  {"seconds", f.total_seconds},
                                                  {"samples", samples}};
+        if (!sites.empty())
+          {
+            fem_k = sites.of(f);
+            c["fem"]["L" + std::to_string(level)]["vertices"] = sites.to_json(fem_k);
+          }
         energies.push_back(f.functionals.reissner);
       }
     const double limit = energy_limit(energies, file, c["fem"]);
@@ -431,6 +486,14 @@ namespace
                                                {"seconds", seconds}};
             if (variant == 0)
               c[key]["p" + std::to_string(p)]["lagrange_ritz"] = m.ritz_lagrange();
+            if (variant == 0 && !sites.empty())
+              {
+                const std::vector<std::vector<rfm::VertexIntensity>> k = sites.of(m);
+                const double k_error = IntensitySites::largest_difference(k, fem_k);
+                fmt::print("RFM p = {:>2}: K at the singular vertices {:.2e} from the FEM's\n", p, k_error);
+                c[key]["p" + std::to_string(p)]["vertices"] = sites.to_json(k);
+                c[key]["p" + std::to_string(p)]["vertex_intensity_error_relative"] = k_error;
+              }
           }
         // 1 when the indicator fell at every step of p (issue 24: "at every fixed degree
         // from 8 to 20 the indicator falls monotonically").
