@@ -221,8 +221,8 @@ namespace
   }
 
   // The RFM's stepped ring: the intensity does not depend on the sector's radius (Betti's
-  // theorem holds for the discrete field up to its error), and the mode columns' own
-  // coefficient at the vertex agrees with it.
+  // theorem holds for the discrete field up to its error; measured at p = 10 1.1e-5 for K_1
+  // and 1.4e-4 for K_2, the test's bound 1e-2 before session 62, 1e-3 now).
   TEST(VertexIntensity, StepRingIntensityIsPathIndependent)
   {
     const axisym::Problem problem = axisym::parse_problem(axisym::testing::stepped_ring());
@@ -241,7 +241,7 @@ namespace
       {
         std::printf("K_%zu = %.8e (rho_1 = %g), %.8e (rho_1 = %g)\n", i + 1, k1[i].value.real(),
                     v.cutoff_radius(), k2[i].value.real(), 0.5 * v.cutoff_radius());
-        EXPECT_NEAR(k2[i].value.real() / k1[i].value.real(), 1.0, 1e-2);
+        EXPECT_NEAR(k2[i].value.real() / k1[i].value.real(), 1.0, 1e-3);
       }
   }
 } // namespace
