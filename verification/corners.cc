@@ -91,7 +91,16 @@ namespace
     IntensitySites(const axisym::Problem &problem, std::vector<rfm::VertexEnrichment> vertices)
       : problem_(problem), vertices_(std::move(vertices))
     {}
-    /// The enrichments of a model at p = 2 (their discs do not depend on p) with singular
+    /// A model whose enrichments give the vertices' frames and discs: at p = 2, as the discs do
+    /// not depend on p.
+    static rfm::OutlineModel frame_model(const axisym::Problem &problem)
+    {
+      rfm::DiscretizationOptions options = problem.rfm;
+      options.degree = 2;
+      options.tolerance.reset();
+      return rfm::OutlineModel(problem, options);
+    }
+    /// The enrichments of a model (frame_model) with singular
     /// modes (Re lambda < 1); `curved`: those with an arc face only.
     static std::vector<rfm::VertexEnrichment> singular(const rfm::OutlineModel &model, const bool curved)
     {
@@ -170,11 +179,8 @@ namespace
     fmt::print("\n== {} ==\n", file);
 
     // The vertex's frame and the intensities' sector (vertex_intensity.h): the enrichment's
-    // support, the same for every degree (a model at p = 2 gives it).
-    rfm::DiscretizationOptions frame_options = problem.rfm;
-    frame_options.degree = 2;
-    frame_options.tolerance.reset();
-    const rfm::OutlineModel frame_model(problem, frame_options);
+    // support.
+    const rfm::OutlineModel frame_model = IntensitySites::frame_model(problem);
     // The vertex with straight faces (one a case), whose intensities the table gives; the
     // vertices with an arc face and singular modes apart ("arc_vertices"), each on the sector
     // of its own disc.
@@ -384,11 +390,7 @@ namespace
     fmt::print("\n== {} ==\n", file);
     // The singular vertices' intensities from both solvers (issue 24 item 8), where there are
     // any (the hub's 186-degree arc vertex and taper-neck vertex; the straight jumps have none).
-    rfm::DiscretizationOptions frame_options = problem.rfm;
-    frame_options.degree = 2;
-    frame_options.tolerance.reset();
-    const rfm::OutlineModel frame_model(problem, frame_options);
-    IntensitySites sites(problem, IntensitySites::singular(frame_model, false));
+    IntensitySites sites(problem, IntensitySites::singular(IntensitySites::frame_model(problem), false));
     axisym::Problem sampled = problem;
     sites.add_samples(sampled);
     std::vector<std::vector<rfm::VertexIntensity>> fem_k;

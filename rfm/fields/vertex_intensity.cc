@@ -90,12 +90,12 @@ namespace rfm
     /// The rule of the interaction integral: the sector rho < rho_1 of the body about the
     /// vertex (area weights dr dz), and the points of the faces that are arcs within rho_1,
     /// by their distance rho from the vertex (weights ds = drho / cos(phi / 2), phi the arc's
-    /// angle from the vertex), with rho, the polar angle, the arc's outward normal and edge
-    /// and whether it leaves the vertex at each.
+    /// angle from the vertex), with rho and its weight drho, the polar angle, the arc's outward
+    /// normal and edge and whether it leaves the vertex at each.
     struct InteractionRule
     {
       Quadrature2D area, arcs;
-      std::vector<double> arc_rho, arc_theta;
+      std::vector<double> arc_rho, arc_drho, arc_theta;
       std::vector<axisym::Point> normal;
       std::vector<const axisym::OutlineEdge *> edge;
       std::vector<bool> leaving;
@@ -130,7 +130,7 @@ namespace rfm
               const axisym::Point x = e->point_at(t);
               rule.arcs.r[n0 + k] = x.r, rule.arcs.z[n0 + k] = x.z;
               rule.arcs.weights[n0 + k] = g.weights[k] / std::cos(0.5 * phi);
-              rule.arc_rho.push_back(rho);
+              rule.arc_rho.push_back(rho), rule.arc_drho.push_back(g.weights[k]);
               rule.arc_theta.push_back(chord_angle(*e, from_start, rho, frame.bisector_angle()));
               rule.normal.push_back(e->outward_normal_at(t));
               rule.edge.push_back(e);
@@ -400,7 +400,7 @@ namespace rfm
             // ds = weight; the closed-form part took q r_v t_h(v) . u*(rho, edge angle) drho.
             rhs[static_cast<Eigen::Index>(j)] +=
               rule.arcs.weights[k] * q * r * (tr_r * g.u[0] + tr_z * g.u[1] - ts_r * ut_r - ts_z * ut_z) -
-              gr.weights[k % gr.nodes.size()] * q * at.r * (tv_r * g0.u[0] + tv_z * g0.u[1]);
+              rule.arc_drho[ks] * q * at.r * (tv_r * g0.u[0] + tv_z * g0.u[1]);
           }
       }
 
