@@ -455,4 +455,18 @@ namespace axisym
         indices.push_back(i);
     return indices;
   }
+
+  std::pair<const OutlineEdge *, const OutlineEdge *> Outline::edges_at(const Point x) const
+  {
+    const double tol = point_tolerance * size_;
+    const OutlineEdge *arriving = nullptr, *leaving = nullptr;
+    for (const OutlineEdge &e : edges_)
+      {
+        if (std::hypot(e.end.r - x.r, e.end.z - x.z) < tol)
+          arriving = &e;
+        if (std::hypot(e.start.r - x.r, e.start.z - x.z) < tol)
+          leaving = &e;
+      }
+    return {arriving, leaving};
+  }
 } // namespace axisym

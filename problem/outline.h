@@ -20,6 +20,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace axisym
@@ -114,6 +115,10 @@ namespace axisym
     std::vector<std::string> parts() const;
     /// Indices of the edges on the axis r = 0 (on_axis with point_tolerance * size()).
     std::vector<int> axis_edges() const;
+    /// The edge that arrives at x and the one that leaves it (x within point_tolerance *
+    /// size() of its end, of its start); nullptr where there is none. Both are set exactly
+    /// when x is a vertex of the outline.
+    std::pair<const OutlineEdge *, const OutlineEdge *> edges_at(Point x) const;
 
   private:
     std::vector<OutlineEdge> edges_;

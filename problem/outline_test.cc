@@ -377,6 +377,27 @@ namespace axisym
     EXPECT_NEAR(o.distance_to_boundary({0.25, -0.1}), std::hypot(0.05, 0.1), 1e-16);
   }
 
+  TEST(Outline, EdgesAtVerticesAndElsewhere)
+  {
+    const Outline o = quarter_annulus();
+    const std::vector<OutlineEdge> &e = o.edges();
+    // Vertex i is the start of edge i and the end of edge i - 1 (the loop closes at 0).
+    for (std::size_t i = 0; i < e.size(); ++i)
+      {
+        const auto [arriving, leaving] = o.edges_at(e[i].start);
+        EXPECT_EQ(arriving, &e[(i + e.size() - 1) % e.size()]) << "vertex " << i;
+        EXPECT_EQ(leaving, &e[i]) << "vertex " << i;
+      }
+    // Within point_tolerance * size() of a vertex it is that vertex; beyond, and on an
+    // edge's interior, no edge arrives or leaves.
+    const double tol = Outline::point_tolerance * o.size();
+    EXPECT_EQ(o.edges_at({R2 + 0.5 * tol, 0.0}).first, &e[0]);
+    EXPECT_EQ(o.edges_at({R2 + 2.0 * tol, 0.0}).first, nullptr);
+    const auto [a, l] = o.edges_at({0.15, 0.0});
+    EXPECT_EQ(a, nullptr);
+    EXPECT_EQ(l, nullptr);
+  }
+
   // ---------------------------------------------------------------------------------------
   // Invalid outlines: InputError naming the entry (edge i is geometry.outline[i + 1])
 

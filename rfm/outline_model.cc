@@ -239,21 +239,6 @@ namespace rfm
       return zones;
     }
 
-    /// The edges of the outline that arrive at x and leave it (nullptr where none).
-    std::pair<const axisym::OutlineEdge *, const axisym::OutlineEdge *>
-    edges_at(const std::vector<axisym::OutlineEdge> &edges, const axisym::Point x, const double tol)
-    {
-      const axisym::OutlineEdge *arriving = nullptr, *leaving = nullptr;
-      for (const axisym::OutlineEdge &e : edges)
-        {
-          if (std::hypot(e.end.r - x.r, e.end.z - x.z) < tol)
-            arriving = &e;
-          if (std::hypot(e.start.r - x.r, e.start.z - x.z) < tol)
-            leaving = &e;
-        }
-      return {arriving, leaving};
-    }
-
     /// Whether x is one of `points` (within tol).
     bool is_one_of(const std::vector<axisym::Point> &points, const axisym::Point x, const double tol)
     {
@@ -1561,7 +1546,7 @@ namespace rfm
       bool rough_here = false;
       for (std::size_t i = n_singular; i < vertices.size(); ++i)
         rough_here |= std::hypot(vertices[i].at.r - x.r, vertices[i].at.z - x.z) < tol;
-      const auto [a, l] = edges_at(edges, x, tol);
+      const auto [a, l] = body.outline.edges_at(x);
       if (!rough_here || !a || !l)
         return false;
       bool arc = false, free_arcs = true;
@@ -1588,7 +1573,7 @@ namespace rfm
         // The two parts at v: lines, or arcs that carry a traction (the mapped stresses of
         // vertex_enrichment.h: set_curved_faces), and no die (a zone's reach is not known
         // before the solve; its own ends are contact edges).
-        const auto [arriving, leaving] = edges_at(edges, v.at, tol);
+        const auto [arriving, leaving] = body.outline.edges_at(v.at);
         if (!arriving || !leaving || body.conditions.at(arriving->part).kind == Kind::die ||
             body.conditions.at(leaving->part).kind == Kind::die)
           continue;
@@ -1657,7 +1642,7 @@ namespace rfm
               if (overlap && curved_rough_at(x))
                 continue;
               const double d = std::hypot(x.r - v.at.r, x.z - v.at.z);
-              const auto [a_x, l_x] = edges_at(edges, x, tol);
+              const auto [a_x, l_x] = body.outline.edges_at(x);
               if (!(d > tol) || !a_x || !l_x)
                 continue;
               room = std::min(room, std::max(d - room_alone(edges, *a_x, *l_x, jump_points, tol), 0.25 * d));
@@ -1944,7 +1929,7 @@ namespace rfm
       site_points.push_back(s.at);
     for (const axisym::ResonantSite &site : sites)
       {
-        const auto [arriving, leaving] = edges_at(edges, site.at, tol);
+        const auto [arriving, leaving] = body.outline.edges_at(site.at);
         if (!arriving || !leaving)
           continue;
         // The room, as a traction jump's.

@@ -43,21 +43,13 @@ namespace rfm
     };
 
     /// The outline's edges that arrive at (end at) and leave (start at) `at`.
-    std::array<const axisym::OutlineEdge *, 2> edges_at(const axisym::Outline &outline, const axisym::Point at)
+    std::array<const axisym::OutlineEdge *, 2> faces_at(const axisym::Outline &outline, const axisym::Point at)
     {
-      const double tol = 1e-9 * outline.size();
-      std::array<const axisym::OutlineEdge *, 2> out{nullptr, nullptr};
-      for (const axisym::OutlineEdge &e : outline.edges())
-        {
-          if (std::hypot(e.end.r - at.r, e.end.z - at.z) < tol)
-            out[0] = &e;
-          if (std::hypot(e.start.r - at.r, e.start.z - at.z) < tol)
-            out[1] = &e;
-        }
-      if (!out[0] || !out[1])
+      const auto [arriving, leaving] = outline.edges_at(at);
+      if (!arriving || !leaving)
         throw std::invalid_argument("vertex_intensities: (" + std::to_string(at.r) + ", " + std::to_string(at.z) +
                                     ") is not a vertex of the outline");
-      return out;
+      return {arriving, leaving};
     }
 
     /// A rule on [0, length] for integrands regular at 0 or ~ x^(-a) (plain length weights):
@@ -109,7 +101,7 @@ namespace rfm
       const double alpha = frame.wedge().half_angle(), leaving = frame.bisector_angle() - alpha;
       VertexEnrichment sector(frame.vertex(), {std::cos(leaving), std::sin(leaving)}, frame.wedge(), {}, rho_1,
                               frame.material());
-      const auto [arriving_edge, leaving_edge] = edges_at(outline, frame.vertex());
+      const auto [arriving_edge, leaving_edge] = faces_at(outline, frame.vertex());
       InteractionRule rule;
       const GaussRule1D g = face_rule(rho_1);
       for (const axisym::OutlineEdge *e : {leaving_edge, arriving_edge})
@@ -292,7 +284,7 @@ namespace rfm
     // over the straight wedge (S* the dual's stress at rho = 1, mu + 1 = -a + i b its
     // exponent), then the slivers where a face is an arc: the sector's angles at rho run from
     // theta_0(rho) to theta_1(rho), not from -alpha to alpha.
-    const auto faces = edges_at(problem.body->outline, at); // arriving, leaving
+    const auto faces = faces_at(problem.body->outline, at); // arriving, leaving
     const GaussRule1D gr = face_rule(rho_1), g3 = gauss_legendre(4);
     for (std::size_t j = 0; j < n; ++j)
       {
