@@ -674,7 +674,7 @@ namespace axisym
                               "local_max_box", "vertex_max_exponent", "vertex_mode_degree",
                               "vertex_cutoff", "vertex_local_degree",
                               "vertex_local_displacement_degree", "vertex_support",
-                              "resonant_displacement_degree", "axis_parity", "notch_roots",
+                              "resonant_displacement_degree", "axis_parity", "axis_coupling", "notch_roots",
                               "rough_vertices", "ritz_bound", "vertex_shadow", "vertex_inner_disc",
                               "vertex_disc_overlap",
                               "z_degree_ratio"});
@@ -746,6 +746,7 @@ namespace axisym
           to = r.at(key).get<bool>();
         };
         flag("axis_parity", p.rfm.axis_parity);
+        flag("axis_coupling", p.rfm.axis_coupling);
         flag("notch_roots", p.rfm.notch_roots);
         flag("rough_vertices", p.rfm.rough_vertices);
         flag("vertex_shadow", p.rfm.vertex_shadow);

@@ -169,6 +169,17 @@ namespace axisym
     /// axis converge like the rest. Used where OutlineModel::axis_parity_obstacle finds
     /// nothing against it; false: never (the plain polynomials in r, as before).
     bool axis_parity = true;
+    /// Axis coupling (rfm/outline_model.h, issue 24 item 5): on a section with an edge on the
+    /// axis, sigma_tt = sigma_rr + (r / l) P_tt ((r / l)^2 with the axis parity) instead of a
+    /// free P_tt, so that sigma_rr = sigma_tt on r = 0 for every coefficient, as the smooth
+    /// fields of a body of revolution have it (the r-weighted functionals do not ask for it).
+    /// The enrichment columns' sigma_tt takes their sigma_rr near the axis. Not with the die's
+    /// local stress columns (rectangles with a die). Off by default: the smaller stress space
+    /// costs the stepped shaft a fifth more energy error (Phi_R at p = 16 8.6e-7 -> 1.03e-6
+    /// from the FEM's limit) and leaves its axis values as far off (the header of
+    /// outline_model.h has the numbers), while the dies on the axis gain (report 7.1: the Hertz
+    /// pressure 0.48 % -> 0.40 % off, its indicator 1.3e-3 -> 5.0e-4).
+    bool axis_coupling = false;
     /// Local resolution at notch roots (problem/wedge_modes.h: notch_roots; issue 24 item
     /// 3): the vertex's smooth local columns (vertex_local_degree,
     /// vertex_local_displacement_degree) in a disc about every root of a concave arc of radius

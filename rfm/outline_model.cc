@@ -193,9 +193,9 @@ namespace rfm
       return q;
     }
 
-    StressStructureValues polynomial_part(const OutlineStressValues &s)
+    StressStructureValues polynomial_part(const OutlineStressValues &s, const bool hoop_coupled)
     {
-      return {s.omega, s.s0};
+      return {s.omega, s.s0, hoop_coupled};
     }
     DisplacementStructureValues as_structure(const OutlineDisplacementValues &d)
     {
@@ -296,6 +296,9 @@ namespace rfm
     , loads_(problem.body_loads)
     , mirrored_(problem.body->mirrored)
     , axis_parity_obstacle_(rfm::axis_parity_obstacle(problem, options))
+    , hoop_coupled_(options.axis_coupling && n_local_stress_ == 0 &&
+                    std::any_of(problem.body->conditions.begin(), problem.body->conditions.end(),
+                                [](const auto &pc) { return pc.second.kind == axisym::PartCondition::Kind::axis; }))
     , structures_(*problem.body, options.largest_degree(),
                   faded_zones(*problem.body, zones, local_),
                   axis_parity_obstacle_.empty())
@@ -324,6 +327,26 @@ namespace rfm
     make_vertex_enrichments(problem, options, graded);
     make_traction_jumps(problem, options);
     make_resonant_vertices(problem, options);
+    if (hoop_coupled_)
+      {
+        // Half the smallest radius of an enrichment's centre off the axis (the columns'
+        // sigma_tt is untouched about their centres), at most half the section's size.
+        const double l = split.size(), tol = 1e-9 * l;
+        double r_min = l;
+        auto centre = [&](const double r) {
+          if (r > tol)
+            r_min = std::min(r_min, r);
+        };
+        for (const EdgeEnrichment &e : enrichments_)
+          centre(e.frame().r);
+        for (const VertexEnrichment &v : vertices_)
+          centre(v.vertex().r);
+        for (const TractionJump &j : jumps_)
+          centre(j.vertex().r);
+        for (const ResonantVertex &v : resonances_)
+          centre(v.vertex().r);
+        axis_coupling_radius_ = 0.5 * r_min;
+      }
     {
       std::vector<VertexEnrichment::Circle> rims;
       for (const VertexEnrichment &v : vertices_)
@@ -871,7 +894,7 @@ namespace rfm
     const Quadrature2D &q = quadrature_;
     const Eigen::VectorXd mu = q.weights.cwiseProduct(q.r);
     const BasisValues b = basis_values(q.r, q.z);
-    const OutlineStressValues s = structures_.stress(q.r, q.z); // the local stress columns below
+    const OutlineStressValues s = structure_stress(q.r, q.z); // the local stress columns below
     const DisplacementStructureValues d = as_structure(structures_.displacement(q.r, q.z));
 
     ReissnerSystem sys;
@@ -879,7 +902,7 @@ namespace rfm
     sys.r12.setZero(n_s, n_u);
     sys.p_s.setZero(n_s);
     sys.p_u.setZero(n_u);
-    const StressStructureValues sp = polynomial_part(s);
+    const StressStructureValues sp = polynomial_part(s, hoop_coupled_);
     // R11's lower triangle (what the solver reads; the transform fills the rest).
     add_polynomial_blocks(mu, q.r, b, sp, d, c, sys, 0, false);
     // The displacement columns' values (6 n_q x N matrices: a tenth of the assembly's time at
@@ -896,6 +919,9 @@ namespace rfm
         for (const int k : {rr, zz, tt})
           sys.p_s.segment(k * n, n).noalias() -=
             b.value.transpose() * mu.cwiseProduct(s.omega.col(k)).cwiseProduct(e_th);
+        if (hoop_coupled_) // the rr columns' sigma_tt
+          sys.p_s.segment(rr * n, n).noalias() -=
+            b.value.transpose() * mu.cwiseProduct(s.omega.col(rr)).cwiseProduct(e_th);
       }
     if (loads_.body_force())
       {
@@ -938,6 +964,8 @@ namespace rfm
           {
             const Eigen::MatrixXd omega_b = s.omega.col(k).asDiagonal() * b.value;
             sys.r11.block(k * n, 4 * n, n, n_sb).noalias() -= omega_b.transpose() * cxb[k];
+            if (hoop_coupled_ && k == rr) // the rr columns' sigma_tt
+              sys.r11.block(k * n, 4 * n, n, n_sb).noalias() -= omega_b.transpose() * cxb[tt];
             sys.r11.block(4 * n, 4 * n, n_sb, n_sb).noalias() -= s.boundary[k].transpose() * cxb[k];
           }
         sys.r11.block(4 * n, 0, n_sb, 4 * n) = sys.r11.block(0, 4 * n, 4 * n, n_sb).transpose();
@@ -1089,7 +1117,7 @@ namespace rfm
                     f(k, 0) = fk[0], f(k, 1) = fk[1];
                   }
               }
-            add_enrichment_blocks(near_mu, nr, nb, polynomial_part(ns), nd, ec,
+            add_enrichment_blocks(near_mu, nr, nb, polynomial_part(ns, hoop_coupled_), nd, ec,
                                   n_b > 0 ? &ns.boundary : nullptr, loads_.thermal() ? &th : nullptr,
                                   loads_.body_force() ? &f : nullptr, c, sys, &held);
             // The Gram matrices over the columns with displacements (stress-only columns have
@@ -1222,6 +1250,8 @@ namespace rfm
     for (int k = 0; k < n_stress_components; ++k)
       {
         f.sigma.col(k) += s.omega.col(k).cwiseProduct(b.value * q_s_.segment(k * n, n));
+        if (hoop_coupled_ && k == rr)
+          f.sigma.col(tt) += s.omega.col(rr).cwiseProduct(b.value * q_s_.segment(rr * n, n));
         if (n_b > 0)
           f.sigma.col(k) += s.boundary[k] * q_s_.segment(4 * n, n_b);
       }
@@ -1251,7 +1281,9 @@ namespace rfm
         Eigen::Index at = 0;
         auto add = [&](const auto &en) {
           const Eigen::Index w = en.n_columns();
-          add_enrichment_fields(en.evaluate(r, z), q_s.segment(at, w), q_u.segment(at, w), f);
+          EdgeColumns e = en.evaluate(r, z);
+          couple_at_axis(e, r);
+          add_enrichment_fields(e, q_s.segment(at, w), q_u.segment(at, w), f);
           at += w;
         };
         for (const EdgeEnrichment &en : enrichments_)
@@ -1280,7 +1312,25 @@ namespace rfm
       all.set_columns(at, en.evaluate(r, z)), at += en.n_columns();
     for (const ResonantVertex &en : resonances_)
       all.set_columns(at, en.evaluate(r, z)), at += en.n_columns();
+    couple_at_axis(all, r);
     return all;
+  }
+
+  void OutlineModel::couple_at_axis(EdgeColumns &e, const Eigen::Ref<const Eigen::VectorXd> &r) const
+  {
+    if (!hoop_coupled_)
+      return;
+    // sigma_tt += h (sigma_rr - sigma_tt), h = 1 - S(r / rho) with S the quintic smoothstep:
+    // 1 on the axis, 0 from r = rho on (clear of every enrichment's centre).
+    const double rho = axis_coupling_radius_;
+    for (Eigen::Index k = 0; k < r.size(); ++k)
+      {
+        const double t = r[k] / rho;
+        if (t >= 1.0)
+          continue;
+        const double h = 1.0 - t * t * t * (10.0 - 15.0 * t + 6.0 * t * t);
+        e.stress[tt].row(k) += h * (e.stress[rr].row(k) - e.stress[tt].row(k));
+      }
   }
 
   EdgeColumns OutlineModel::section_mode_columns(const Eigen::Ref<const Eigen::VectorXd> &r,
@@ -1295,13 +1345,30 @@ namespace rfm
     for (const VertexEnrichment &en : vertices_)
       if (en.section_support())
         all.set_columns(at, en.evaluate(r, z, true)), at += en.n_mode_columns();
+    couple_at_axis(all, r);
     return all;
+  }
+
+  OutlineStressValues OutlineModel::structure_stress(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                                     const Eigen::Ref<const Eigen::VectorXd> &z) const
+  {
+    OutlineStressValues s = structures_.stress(r, z);
+    if (!hoop_coupled_)
+      return s;
+    // omega_tt = r / l (r^2 / l^2 with the axis parity: even in r), l the section's size.
+    const double l = structures_.body().outline.size();
+    s.omega.col(tt) = structures_.axis_parity() ? Eigen::VectorXd(r.array().square() / (l * l))
+                                                : Eigen::VectorXd(r / l);
+    s.s0.col(tt) = s.s0.col(rr);
+    if (structures_.n_boundary_columns() > 0)
+      s.boundary[tt] += s.boundary[rr];
+    return s;
   }
 
   OutlineStressValues OutlineModel::stress_values(const Eigen::Ref<const Eigen::VectorXd> &r,
                                                   const Eigen::Ref<const Eigen::VectorXd> &z) const
   {
-    OutlineStressValues s = structures_.stress(r, z);
+    OutlineStressValues s = structure_stress(r, z);
     if (n_local_stress_ == 0)
       return s;
     const Eigen::MatrixXd l = local_.piecewise_values(r, z, local_stress_degree_);
@@ -1978,7 +2045,7 @@ namespace rfm
             rin[k] = r[in[k]], zin[k] = z[in[k]];
             h[k] = 1e-3 * std::hypot(rin[k] - j.vertex().r, zin[k] - j.vertex().z);
           }
-        const Eigen::MatrixXd s = j.stress(rin, zin), s0 = structures_.stress(rin, zin).s0;
+        const Eigen::MatrixXd s = j.stress(rin, zin), s0 = structure_stress(rin, zin).s0;
         const Eigen::VectorXd chi = j.cutoff(rin, zin);
         auto cut_u = [&](const Eigen::VectorXd &x, const Eigen::VectorXd &y) {
           return Eigen::MatrixXd(j.cutoff(x, y).asDiagonal() * j.displacement(x, y, mu));
@@ -2045,6 +2112,8 @@ namespace rfm
       {
         const Eigen::VectorXd w = mu.cwiseProduct(cj.col(k));
         sys.p_s.segment(k * n, n).noalias() -= b.value.transpose() * w.cwiseProduct(s.omega.col(k));
+        if (hoop_coupled_ && k == tt) // the rr columns' sigma_tt
+          sys.p_s.segment(rr * n, n).noalias() -= b.value.transpose() * w.cwiseProduct(s.omega.col(rr));
         if (n_b > 0)
           sys.p_s.segment(4 * n, n_b).noalias() -= s.boundary[k].transpose() * w;
         if (n_e > 0)

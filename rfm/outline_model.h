@@ -56,6 +56,30 @@
 // with the parity; the indicator 1.2e-8, 5.2e-10, 2.3e-11 against 1.3e-9, 1.6e-11, 1.8e-13.
 // Not on other sections yet: their recurrence in r^2 is too noisy beyond p = 16
 // (section_basis.h), and arcs and inclined lines would need even omegas (tori, cones).
+//
+// Axis coupling (issue 24 item 5; rfm.axis_coupling, default off). The smooth fields of a
+// body of revolution have sigma_rr = sigma_tt on r = 0, which the r-weighted functionals do
+// not ask for (the hoop stress is free of every boundary condition). With the option, on a
+// section with an edge on the axis (without the die's local stress columns), the polynomial
+// column (rr, j) carries sigma_tt = sigma_rr too and the hoop block is omega_tt P_tt with
+// omega_tt = r / l ((r / l)^2 with the parity; l the section's size): sigma_tt = sigma_rr +
+// omega_tt P_tt, the same number of columns. In the assembly this is the change of variables
+// T (the blocks' components to the stress's; assembly.h: block_compliance): C becomes
+// T^T C T between polynomial blocks and the rr block pairs with e_rr + e_tt and with the
+// thermal strain twice. The particular stress and the boundary columns B_e take sigma_tt =
+// sigma_rr (structure_stress), and the enrichment columns, given as whole fields, sigma_tt +
+// h (sigma_rr - sigma_tt) with h = 1 - S(r / rho) (couple_at_axis; S the quintic
+// smoothstep, rho half the smallest radius of an enrichment's centre, so that a vertex's own
+// field is untouched). Measured on the stepped shaft, sigma_zz(0, 0) against the FEM's
+// 3.607754 MPa at p = 8 / 12 / 16 / 20: -36 % / -11 % / -5.1 % / -2.2 % free, -21 % / -16 %
+// / -5.9 % / -1.5 % coupled; the indicator 1.5e-4 / 1.0e-5 / 2.5e-6 / 9.7e-7 -> 2.1e-4 /
+// 9.4e-6 / 2.2e-6 / 8.7e-7, Phi_R's error at p = 16 8.6e-7 -> 1.03e-6 (the smaller stress
+// space), sigma_rr - sigma_tt at (0, 0) up to 0.3 MPa free, 0 coupled. So the free hoop
+// stress on the axis is not what holds the axis back. Off by default: the report's gates of
+// the stepped shaft (Phi_R at p = 16 within 1e-6; with p_z = 2 p the axis within 0.5 % at p =
+// 16: 0.54 %) fail with it, while the dies on the axis gain (the Hertz pressure 0.48 % ->
+// 0.40 % off, its indicator 1.3e-3 -> 5.0e-4) and the thick sphere's stresses move by a few
+// per cent of their error either way.
 #pragma once
 
 #include "problem/problem.h"
@@ -151,6 +175,9 @@ namespace rfm
     /// parity), and if not, why (axis_parity_obstacle).
     bool axis_parity() const { return structures_.axis_parity(); }
     const std::string &axis_parity_obstacle() const { return axis_parity_obstacle_; }
+    /// Whether sigma_tt = sigma_rr + omega_tt P_tt (rfm.axis_coupling; problem/settings.h):
+    /// a section with an edge on the axis, without the die's local stress columns.
+    bool axis_coupling() const { return hoop_coupled_; }
     /// The stress-only local columns (all four components; 0 without local boxes).
     Eigen::Index n_local_stress_columns() const { return n_local_stress_; }
     Eigen::Index n_quadrature_points() const { return quadrature_.n_points(); }
@@ -392,7 +419,16 @@ namespace rfm
     axisym::BodyLoads loads_; ///< body force in p_u and W, thermal strain in p_s and the functionals
     bool mirrored_ = false;   ///< integrals twice (the section and its image in z = 0)
     std::string axis_parity_obstacle_;
+    /// The axis coupling: sigma_tt = sigma_rr + omega_tt P_tt with omega_tt = r (r^2 with
+    /// the axis parity), on a section with an edge on the axis (assembly.h).
+    bool hoop_coupled_ = false;
+    double axis_coupling_radius_ = 0.0; ///< where the enrichment columns' sigma_tt is coupled
     OutlineStructures structures_;
+    /// The structures' stress values, with the axis coupling applied to s0 and the boundary
+    /// columns (their sigma_tt gets their sigma_rr) and omega_tt.
+    void couple_at_axis(EdgeColumns &e, const Eigen::Ref<const Eigen::VectorXd> &r) const;
+    OutlineStressValues structure_stress(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                         const Eigen::Ref<const Eigen::VectorXd> &z) const;
     /// The coordinate functions: the tensor Legendre polynomials of the box on a rectangle
     /// with sides along r and z (orthogonal there; their values cost no N x N transform; in
     /// r^2 with the axis parity) when no displacement component is reduced in degree, else the

@@ -472,6 +472,7 @@ namespace
       {"quadrature_points", model->n_quadrature_points()},
       {"section", "the outline as given (no mirroring)"},
       {"axis_parity", model->axis_parity()},
+      {"axis_coupling", model->axis_coupling()},
       {"degree_policy", target_indicator ? "tolerance" : "fixed"}};
     if (!model->axis_parity())
       result["discretization"]["axis_parity_obstacle"] = model->axis_parity_obstacle();

@@ -170,6 +170,7 @@ namespace
       Case{"rough_vertices_not_a_bool", with("/rfm/rough_vertices", 1), "rfm.rough_vertices"},
       Case{"vertex_shadow_not_a_bool", with("/rfm/vertex_shadow", "yes"), "rfm.vertex_shadow"},
       Case{"vertex_inner_disc_not_a_bool", with("/rfm/vertex_inner_disc", 0), "rfm.vertex_inner_disc"},
+      Case{"axis_coupling_not_a_bool", with("/rfm/axis_coupling", "no"), "rfm.axis_coupling"},
       Case{"vertex_disc_overlap_not_a_bool", with("/rfm/vertex_disc_overlap", "yes"), "rfm.vertex_disc_overlap"},
       Case{"z_degree_ratio_large", with("/rfm/z_degree_ratio", 5.0), "rfm.z_degree_ratio"},
       Case{"z_degree_ratio_beyond_48", with("/rfm", {{"degree", 20}, {"z_degree_ratio", 3.0}}),

@@ -27,6 +27,15 @@ namespace rfm
     return v;
   }
 
+  Eigen::Matrix4d block_compliance(const Eigen::Matrix4d &c, const bool hoop_coupled)
+  {
+    if (!hoop_coupled)
+      return c;
+    Eigen::Matrix4d t = Eigen::Matrix4d::Identity();
+    t(tt, rr) = 1.0;
+    return t.transpose() * c * t;
+  }
+
   // The products with the enrichment columns, on the near-edge rule: the borders of R11 and
   // R12 and the enrichment rows of p_s and p_u (but the traction term). The polynomial and
   // boundary-column blocks are not touched. The polynomial stress column (c, j) is
@@ -85,8 +94,11 @@ namespace rfm
     Eigen::MatrixXd g(n_p, 6 * n_e + 4 * n_w), g_r(n_p, 2 * n_e), g_z(n_p, 2 * n_e);
     for (int k = 0; k < n_stress_components; ++k)
       {
-        g.middleCols(k * n_e, n_e) = -(s.omega.col(k).asDiagonal() * cx[k]);
-        g.middleCols(strains_at + k * n_w, n_w) = (mu.cwiseProduct(s.omega.col(k))).asDiagonal() * strain_w[k];
+        // With the hoop coupling the rr block's columns carry sigma_tt too.
+        const bool both = s.hoop_coupled && k == rr;
+        g.middleCols(k * n_e, n_e) = -(s.omega.col(k).asDiagonal() * (both ? Eigen::MatrixXd(cx[rr] + cx[tt]) : cx[k]));
+        g.middleCols(strains_at + k * n_w, n_w) =
+          (mu.cwiseProduct(s.omega.col(k))).asDiagonal() * (both ? Eigen::MatrixXd(strain_w[rr] + strain_w[tt]) : strain_w[k]);
       }
     const Eigen::VectorXd omega_r_over_r = d.omega.col(0).cwiseQuotient(r);
     g.middleCols(4 * n_e, n_e) = d.omega_r.col(0).asDiagonal() * wx[rr] +
@@ -254,9 +266,10 @@ namespace rfm
   void add_polynomial_blocks(const Eigen::Ref<const Eigen::VectorXd> &mu,
                              const Eigen::Ref<const Eigen::VectorXd> &r, const BasisValues &b,
                              const StressStructureValues &s, const DisplacementStructureValues &d,
-                             const Eigen::Matrix4d &c, ReissnerSystem &sys,
+                             const Eigen::Matrix4d &c_stress, ReissnerSystem &sys,
                              Eigen::Index chunk_points, const bool full_r11)
   {
+    const Eigen::Matrix4d c = block_compliance(c_stress, s.hoop_coupled);
     const Eigen::Index n = b.value.cols(), n_q = b.value.rows();
     const Eigen::Index chunk =
       chunk_points > 0 ? chunk_points : assembly_chunk_points(n, l2_cache_bytes());
@@ -320,6 +333,8 @@ namespace rfm
           w.col(w12 + 6).head(m) = mu_c.cwiseProduct(om.col(zz)).cwiseProduct(u.col(1));
           w.col(w12 + 7).head(m) = mu_c.cwiseProduct(om.col(rz)).cwiseProduct(u_r.col(1));
           w.col(w12 + 8).head(m) = mu_c.cwiseProduct(om.col(rz)).cwiseProduct(u.col(1));
+          if (s.hoop_coupled) // the rr block's sigma_tt against u_r / r
+            w.col(w12 + 0).head(m) += mu_c.cwiseProduct(om.col(rr)).cwiseProduct(u.col(0)).cwiseQuotient(r_c);
 
           const auto b_c = b.value.middleRows(start, m);
           const auto b_r = b.d_r.middleRows(start, m);
@@ -374,9 +389,11 @@ namespace rfm
             DisplacementStructureValues{Eigen::MatrixXd(), Eigen::MatrixXd(), Eigen::MatrixXd(),
                                         d.u0.middleRows(start, m), d.u0_r.middleRows(start, m),
                                         d.u0_z.middleRows(start, m)},
-            r_c, c);
+            r_c, c_stress);
           for (int k = 0; k < n_stress_components; ++k)
             v.col(k).head(m) = mu_c.cwiseProduct(om.col(k)).cwiseProduct(residual.col(k));
+          if (s.hoop_coupled)
+            v.col(rr).head(m) += mu_c.cwiseProduct(om.col(rr)).cwiseProduct(residual.col(tt));
           const auto s0 = s.s0.middleRows(start, m);
           const Eigen::VectorXd m_rr = mu_c.cwiseProduct(s0.col(rr));
           const Eigen::VectorXd m_zz = mu_c.cwiseProduct(s0.col(zz));

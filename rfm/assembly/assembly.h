@@ -43,10 +43,20 @@ namespace rfm
   using DiscretizationOptions = axisym::RfmSettings;
 
   /// Stress structure at points: columns in StressComponent order (n_points x 4).
+  ///
+  /// hoop_coupled: the polynomial column (rr, j) is omega_rr phi_j (e_rr + e_tt) rather than
+  /// omega_rr phi_j e_rr, so that sigma_tt = sigma_rr + omega_tt P_tt (OutlineModel: the axis
+  /// coupling, sigma_tt = sigma_rr on r = 0 with omega_tt = r). s0 is the full particular
+  /// stress either way.
   struct StressStructureValues
   {
     Eigen::MatrixXd omega, s0;
+    bool hoop_coupled = false;
   };
+
+  /// The compliance between the polynomial blocks: C, or with s.hoop_coupled T^T C T, where
+  /// T (the blocks' components to the stress's) adds the rr block to sigma_tt.
+  Eigen::Matrix4d block_compliance(const Eigen::Matrix4d &c, bool hoop_coupled);
 
   /// Displacement structure at points: columns (u_r, u_z) (n_points x 2), with the
   /// r and z derivatives of omega and u0.
