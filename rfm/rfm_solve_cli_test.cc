@@ -420,6 +420,54 @@ namespace
       }
   }
 
+  // A sample on the axis where sigma_rr and sigma_tt differ by more than the tolerance
+  // promises warns (issue 24 items 5 and 6): the indicator does not see r = 0. The thick
+  // sphere's (0, 0.15): at the tolerance 1e-4 (p = 6, indicator 8.7e-5 < 1e-4) they differ by
+  // 4.7 % of the scale (the energy's stress, 5.86 MPa) against the limit 2 sqrt(1e-4) = 2 %,
+  // and sigma_rr is 6.7 % off Lame's hoop stress; at 1e-6 (p = 10) by 0.05 % against 0.2 %,
+  // and both are within 0.03 % of the scale of Lame's.
+  TEST(RfmSolveCli, AxisSampleWithUnequalNormalStressesWarns)
+  {
+    const fs::path dir = scratch("axis_sample");
+    const fs::path in = dir / "problem.json", out = dir / "result.json";
+    std::ofstream(in) << sphere_with("/samples", {{0.0, 0.15}});
+    // Lame's sphere, a = 0.1 m, b = 0.2 m, inner pressure 10 MPa: on the axis at rho = 0.15 m
+    // sigma_rr = sigma_tt = the hoop stress p a^3 / (b^3 - a^3) (1 + b^3 / (2 rho^3)).
+    const double hoop = 1e7 * 1e-3 / 7e-3 * (1.0 + 8e-3 / (2.0 * 3.375e-3));
+    for (const auto &[given, warns] : {std::pair{"1e-4", true}, std::pair{"1e-6", false}})
+      {
+        const double tolerance = std::stod(given);
+        const Outcome o = run(in.string() + " --tolerance " + given + " --output " + out.string());
+        ASSERT_EQ(o.status, 0) << o.err;
+        const nlohmann::json r = nlohmann::json::parse(std::ifstream(out));
+        const nlohmann::json &d = r.at("diagnostics");
+        ASSERT_EQ(d.at("axis_samples").size(), 1u);
+        const nlohmann::json &a = d.at("axis_samples")[0];
+        const double relative = a.at("relative").get<double>(), limit = a.at("limit").get<double>(),
+                     scale = a.at("scale").get<double>();
+        EXPECT_NEAR(limit, 2.0 * std::sqrt(tolerance), 1e-15);
+        const nlohmann::json &s = r.at("samples")[0];
+        const double error = std::max(std::abs(s.at("sigma_rr").get<double>() - hoop),
+                                      std::abs(s.at("sigma_tt").get<double>() - hoop)) / scale;
+        if (warns)
+          {
+            EXPECT_GT(relative, limit);
+            EXPECT_EQ(d.at("status"), "warning");
+            EXPECT_NE(d.at("message").get<std::string>().find("on the axis sigma_rr = sigma_tt"), std::string::npos)
+              << d.at("message");
+            EXPECT_NE(o.err.find("warning"), std::string::npos);
+            EXPECT_GT(error, 0.5 * limit);
+          }
+        else
+          {
+            // Quiet, and rightly: the exact error is below what the tolerance promises.
+            EXPECT_LT(relative, limit);
+            EXPECT_EQ(d.at("status"), "ok") << d.at("message");
+            EXPECT_LT(error, 0.5 * limit);
+          }
+      }
+  }
+
   // A fixed degree is checked against p - 2 where its indicator is above 1e-8 (issue 24 item
   // 6): the cylinder clamped on its base converges to p = 14 and then rounding wins (indicator
   // 1.6e-8 at p = 14, 1.0e-7 at p = 16, with 9 more dependent stress directions dropped), so
