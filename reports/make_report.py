@@ -904,7 +904,16 @@ def bodies_section(bor, out_dir):
                 f"L = {levels[-1][1:]}, whose last two levels differ there by "
                 f"{100 * abs(f['axis_stress_relative'] / f0['axis_stress_relative'] - 1):.3f} %: values on r = 0 "
                 "are not controlled by the r-weighted norms of the method where the axis parity (6.7) does not "
-                "apply, as on this section with arcs (issue 24 item 5, open).")
+                "apply, as on this section with arcs (issue 24 item 5, open)." + mismatch(r))
+
+    def mismatch(r):
+        # rfm_solve's axis check: sigma_rr = sigma_tt in the exact field on r = 0.
+        if "axis_rr_minus_tt_relative" not in r:
+            return ""
+        return (f" The RFM sees it itself: its sigma_rr - sigma_tt there, zero in the exact field, is "
+                f"{100 * r['axis_rr_minus_tt_relative']:+.2f} % of the net-section stress, so at least half of "
+                "that is the error of one of the two; `rfm_solve` warns where this passes its limit "
+                "(`diagnostics.axis_samples`).")
 
     md += shaft_rows(sh)
     md.append("")
