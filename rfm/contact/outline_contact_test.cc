@@ -236,7 +236,7 @@ namespace rfm
 
   // The rounded flat punch (b = 0.5 mm, rho = 50 mm) on a zone of 0.75 mm about the axis,
   // where X_0 is half_space::pressure_shape: the pressure carries the domain force (a rule split at
-  // the kink s = b, 40 points a piece against the moments' 32; measured 2.2e-9), is even about the centre (a point a rounding error
+  // the kink s = b, 40 points a piece against the moments' 32; measured 2.2e-9 when written, 5.4e-9 in session 64: the bound is 1e-8), is even about the centre (a point a rounding error
   // across it is not refused: rfm_solve's profile threw there before this test), vanishes at
   // the zone's end and beyond, and peaks near the flat's end, not on the axis.
   TEST(ConsistentDiePressure, RoundedPunchTakesTheHalfSpaceShape)
