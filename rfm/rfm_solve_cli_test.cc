@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <tuple>
 
 namespace
 {
@@ -466,6 +467,48 @@ namespace
             EXPECT_LT(error, 0.5 * limit);
           }
       }
+  }
+
+  // A sample at a vertex where the stress has no value warns and is listed (issue 24 item 6);
+  // one beside it is not. The L-shaped ring's re-entrant vertex (0.15, 0.1), free-free at 270
+  // degrees (Re lambda = 0.5444837, Williams), read sigma_zz = 0 there before; the pressure
+  // band's jump (0.5, 0.25), where the pressure on the bore ends, sigma_rr = -5 MPa, the mean
+  // of the two sides' -10 and 0 MPa.
+  TEST(RfmSolveCli, SampleAtASingularVertexOrATractionJumpWarns)
+  {
+    const fs::path dir = scratch("vertex_sample");
+    const fs::path in = dir / "problem.json", out = dir / "result.json";
+    const std::array<std::tuple<nlohmann::json, std::array<double, 2>, std::string>, 2> cases{
+      {{axisym::testing::stepped_ring(), {0.15, 0.1}, "singular"},
+       {axisym::testing::pressure_band(), {0.5, 0.25}, "traction_jump"}}};
+    for (const auto &[problem, vertex, kind] : cases)
+      for (const bool at_vertex : {true, false})
+        {
+          nlohmann::json j = problem;
+          const std::array<double, 2> near{vertex[0] + 0.01, vertex[1] + 0.01};
+          j["samples"] = {at_vertex ? vertex : near};
+          std::ofstream(in) << j.dump();
+          const Outcome o = run(in.string() + " --degree 4 --output " + out.string());
+          ASSERT_EQ(o.status, 0) << o.err;
+          const nlohmann::json d = nlohmann::json::parse(std::ifstream(out)).at("diagnostics");
+          if (!at_vertex)
+            {
+              EXPECT_FALSE(d.contains("samples_at_vertices")) << kind;
+              continue;
+            }
+          ASSERT_TRUE(d.contains("samples_at_vertices")) << kind;
+          ASSERT_EQ(d.at("samples_at_vertices").size(), 1u);
+          const nlohmann::json &s = d.at("samples_at_vertices")[0];
+          EXPECT_EQ(s.at("kind"), kind);
+          EXPECT_EQ(s.at("r").get<double>(), vertex[0]);
+          if (kind == "singular")
+            {
+              EXPECT_NEAR(s.at("exponent").get<double>(), 0.5444837, 1e-6);
+            }
+          EXPECT_EQ(d.at("status"), "warning");
+          EXPECT_NE(d.at("message").get<std::string>().find("the stress has no value there"), std::string::npos)
+            << d.at("message");
+        }
   }
 
   // A fixed degree is checked against p - 2 where its indicator is above 1e-8 (issue 24 item
