@@ -910,10 +910,10 @@ def bodies_section(bor, out_dir):
         # rfm_solve's axis check: sigma_rr = sigma_tt in the exact field on r = 0.
         if "axis_rr_minus_tt_relative" not in r:
             return ""
-        return (f" The RFM sees it itself: its sigma_rr - sigma_tt there, zero in the exact field, is "
-                f"{100 * r['axis_rr_minus_tt_relative']:+.2f} % of the net-section stress, so at least half of "
-                "that is the error of one of the two; `rfm_solve` warns where this passes its limit "
-                "(`diagnostics.axis_samples`).")
+        return (f" The RFM's own axis check there, sigma_rr - sigma_tt (zero in the exact field), is "
+                f"{100 * r['axis_rr_minus_tt_relative']:+.2f} % of the net-section stress: half of it is a lower "
+                "bound of the error of sigma_rr or sigma_tt, and it does not see sigma_zz's; `rfm_solve` warns "
+                "where it passes its limit (`diagnostics.axis_samples`).")
 
     md += shaft_rows(sh)
     md.append("")
@@ -1707,9 +1707,9 @@ def axis_mismatch_sentence(rfm, ps):
         return ""
     return (" The RFM's own axis check (`rfm_solve`'s `diagnostics.axis_samples`): sigma_rr - sigma_tt, zero in "
             "the exact field on r = 0, reaches " + ", ".join(f"{v:.2g}" for v in values) + " of the largest "
-            "sample stress there at the same p, so at least half of it is the error of sigma_rr or sigma_tt: "
-            "a lower bound that says the axis is in doubt, not an estimate of the error (compare the axis "
-            "errors above).")
+            "sample stress there at the same p: half of it is a lower bound of the error of sigma_rr or "
+            "sigma_tt, which says the axis is in doubt but does not estimate the error (compare the axis "
+            "errors above), and it does not see sigma_zz's.")
 
 
 def fem_level_rows(md, f):

@@ -1911,28 +1911,11 @@ namespace rfm
     const axisym::Body &body = *problem.body;
     const std::vector<axisym::OutlineEdge> &edges = body.outline.edges();
     const double tol = 1e-9 * body.outline.size();
-    using Kind = axisym::PartCondition::Kind;
-    auto load = [&](const axisym::OutlineEdge &e, const double t) -> std::optional<TractionJump::FaceLoad> {
-      const std::optional<axisym::Point> traction = axisym::edge_traction(body, e, t);
-      if (!traction)
-        return std::nullopt;
-      // A free face's or a pressure's traction turns with the normal on an arc; a fixed
-      // traction vector does not.
-      return TractionJump::FaceLoad{{traction->r, traction->z},
-                                    body.conditions.at(e.part).kind != Kind::traction};
-    };
     // The vertices with a jump (v between edges i and i + 1), found with a provisional radius.
     const std::size_t n_edges = edges.size();
     std::vector<bool> jump_at(n_edges, false);
-    for (std::size_t i = 0; i < n_edges; ++i)
-      {
-        const axisym::OutlineEdge &arriving = edges[i], &leaving = edges[(i + 1) % n_edges];
-        const auto on_arriving = load(arriving, 1.0), on_leaving = load(leaving, 0.0);
-        jump_at[i] = leaving.start.r > tol && on_arriving && on_leaving &&
-                     TractionJump::make(arriving, *on_arriving, leaving, *on_leaving, 1.0,
-                                        material_.poisson_ratio)
-                       .has_value();
-      }
+    for (const std::size_t i : traction_jump_vertices(body, material_.poisson_ratio))
+      jump_at[i] = true;
     std::vector<axisym::Point> jump_points;
     for (std::size_t i = 0; i < n_edges; ++i)
       if (jump_at[i])
@@ -1968,8 +1951,9 @@ namespace rfm
               continue;
             rho_0 = options.vertex_cutoff * room;
           }
-        std::optional<TractionJump> jump = TractionJump::make(
-          arriving, *load(arriving, 1.0), leaving, *load(leaving, 0.0), rho_0, material_.poisson_ratio);
+        std::optional<TractionJump> jump =
+          TractionJump::make(arriving, *face_load(body, arriving, 1.0), leaving, *face_load(body, leaving, 0.0),
+                             rho_0, material_.poisson_ratio);
         jumps_.push_back(std::move(*jump));
         jump_rules_.push_back(shared == nullptr);
       }

@@ -469,8 +469,8 @@ namespace
       }
   }
 
-  // A sample at a vertex where the stress has no value warns and is listed (issue 24 item 6);
-  // one beside it is not. The L-shaped ring's re-entrant vertex (0.15, 0.1), free-free at 270
+  // A sample at a vertex where the stress has no value warns and is listed (issue 24 item 6),
+  // whatever columns the discretization placed there; one beside it is not. The L-shaped ring's re-entrant vertex (0.15, 0.1), free-free at 270
   // degrees (Re lambda = 0.5444837, Williams), read sigma_zz = 0 there before; the pressure
   // band's jump (0.5, 0.25), where the pressure on the bore ends, sigma_rr = -5 MPa, the mean
   // of the two sides' -10 and 0 MPa.
@@ -478,9 +478,13 @@ namespace
   {
     const fs::path dir = scratch("vertex_sample");
     const fs::path in = dir / "problem.json", out = dir / "result.json";
-    const std::array<std::tuple<nlohmann::json, std::array<double, 2>, std::string>, 2> cases{
+    // The jump also without its field (rfm.vertex_max_exponent 0): the vertices are the problem's.
+    nlohmann::json bare_band = axisym::testing::pressure_band();
+    bare_band["rfm"]["vertex_max_exponent"] = 0;
+    const std::array<std::tuple<nlohmann::json, std::array<double, 2>, std::string>, 3> cases{
       {{axisym::testing::stepped_ring(), {0.15, 0.1}, "singular"},
-       {axisym::testing::pressure_band(), {0.5, 0.25}, "traction_jump"}}};
+       {axisym::testing::pressure_band(), {0.5, 0.25}, "traction_jump"},
+       {bare_band, {0.5, 0.25}, "traction_jump"}}};
     for (const auto &[problem, vertex, kind] : cases)
       for (const bool at_vertex : {true, false})
         {

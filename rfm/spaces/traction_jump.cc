@@ -1,5 +1,6 @@
 #include "rfm/spaces/traction_jump.h"
 
+#include "problem/wedge_modes.h"
 #include "rfm/material.h"
 #include "rfm/spaces/edge_modes.h"
 
@@ -149,5 +150,33 @@ namespace rfm
                                    const std::vector<Circle> &rims, const int n_beyond_rims) const
   {
     return frame_.near_rule(cutoff_radius_, n_radial, n_angular, n_layers, rims, n_beyond_rims);
+  }
+
+  std::optional<TractionJump::FaceLoad> face_load(const axisym::Body &body, const axisym::OutlineEdge &e,
+                                                  const double t)
+  {
+    const std::optional<axisym::Point> traction = axisym::edge_traction(body, e, t);
+    if (!traction)
+      return std::nullopt;
+    // A free face's or a pressure's traction turns with the normal on an arc; a fixed
+    // traction vector does not.
+    return TractionJump::FaceLoad{{traction->r, traction->z},
+                                  body.conditions.at(e.part).kind != axisym::PartCondition::Kind::traction};
+  }
+
+  std::vector<std::size_t> traction_jump_vertices(const axisym::Body &body, const double poisson_ratio)
+  {
+    const std::vector<axisym::OutlineEdge> &edges = body.outline.edges();
+    const double tol = 1e-9 * body.outline.size();
+    std::vector<std::size_t> out;
+    for (std::size_t i = 0; i < edges.size(); ++i)
+      {
+        const axisym::OutlineEdge &arriving = edges[i], &leaving = edges[(i + 1) % edges.size()];
+        const auto on_arriving = face_load(body, arriving, 1.0), on_leaving = face_load(body, leaving, 0.0);
+        if (leaving.start.r > tol && on_arriving && on_leaving &&
+            TractionJump::make(arriving, *on_arriving, leaving, *on_leaving, 1.0, poisson_ratio).has_value())
+          out.push_back(i);
+      }
+    return out;
   }
 } // namespace rfm

@@ -39,6 +39,7 @@
 #pragma once
 
 #include "problem/outline.h"
+#include "problem/problem.h"
 #include "rfm/quadrature/quadrature.h"
 #include "rfm/spaces/wedge_frame.h"
 
@@ -47,6 +48,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace rfm
 {
@@ -109,4 +111,17 @@ namespace rfm
     double cutoff_radius_ = 0.0;
     double poisson_ratio_ = 0.0;
   };
+
+  /// The traction of edge e's part at its point t in [0, 1] (problem/wedge_modes.h:
+  /// edge_traction) as a face load; std::nullopt where the part prescribes none (a symmetry
+  /// line, a prescribed displacement).
+  std::optional<TractionJump::FaceLoad> face_load(const axisym::Body &body, const axisym::OutlineEdge &e,
+                                                  double t);
+
+  /// The outline's vertices off the axis where the prescribed traction jumps: for each, the
+  /// index i of the arriving edge (the vertex is edges[i + 1].start, cyclically), where the two
+  /// faces' loads (face_load) are met by no constant stress and TractionJump::make has the
+  /// field. Independent of the discretization (OutlineModel places the field at these
+  /// vertices where there is room; rfm_solve flags samples on them).
+  std::vector<std::size_t> traction_jump_vertices(const axisym::Body &body, double poisson_ratio);
 } // namespace rfm

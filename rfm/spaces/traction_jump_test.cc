@@ -11,6 +11,7 @@ namespace
 {
   using axisym::OutlineEdge;
   using axisym::Point;
+  using rfm::traction_jump_vertices;
   using rfm::TractionJump;
   constexpr double pi = 3.14159265358979323846;
   constexpr double nu = 0.3, young = 2.1e11, mu = young / (2 * (1 + nu));
@@ -149,5 +150,19 @@ namespace
     std::string why;
     EXPECT_FALSE(TractionJump::make(low, free_face, high, {{0.0, 1e7}, false}, 0.1, nu, &why));
     EXPECT_NE(why.find("log"), std::string::npos) << why;
+  }
+
+  // The problem's jump vertices, independent of the discretization: the pressure band's
+  // (0.5, 0.25), where bore_free (edge 3) meets bore_loaded; none with the pressure on the
+  // whole bore (a constant stress meets it), none on the L-shaped ring (its pressure meets a
+  // free face at 90 degrees, where -p e_r e_r meets both, and a symmetry line).
+  TEST(TractionJump, VerticesOfAProblem)
+  {
+    nlohmann::json band = axisym::testing::pressure_band();
+    const axisym::Problem loaded = axisym::parse_problem(band);
+    EXPECT_EQ(traction_jump_vertices(*loaded.body, nu), std::vector<std::size_t>{3});
+    band["boundary"]["bore_free"] = {{"pressure", 1.0e7}};
+    EXPECT_TRUE(traction_jump_vertices(*axisym::parse_problem(band).body, nu).empty());
+    EXPECT_TRUE(traction_jump_vertices(*axisym::parse_problem(axisym::testing::stepped_ring()).body, nu).empty());
   }
 } // namespace
