@@ -470,10 +470,10 @@ namespace
   }
 
   // A sample at a vertex where the stress has no value warns and is listed (issue 24 item 6),
-  // whatever columns the discretization placed there; one beside it is not. The L-shaped ring's re-entrant vertex (0.15, 0.1), free-free at 270
-  // degrees (Re lambda = 0.5444837, Williams), read sigma_zz = 0 there before; the pressure
-  // band's jump (0.5, 0.25), where the pressure on the bore ends, sigma_rr = -5 MPa, the mean
-  // of the two sides' -10 and 0 MPa.
+  // whatever columns the discretization placed there; one beside it is not. The L-shaped
+  // ring's re-entrant vertex (0.15, 0.1), free-free at 270 degrees (Re lambda = 0.5444837,
+  // Williams), read sigma_zz = 0 there before; the pressure band's jump (0.5, 0.25), where the
+  // pressure on the bore ends, sigma_rr = -5 MPa, the mean of the two sides' -10 and 0 MPa.
   TEST(RfmSolveCli, SampleAtASingularVertexOrATractionJumpWarns)
   {
     const fs::path dir = scratch("vertex_sample");
