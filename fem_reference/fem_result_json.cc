@@ -1,6 +1,10 @@
 #include "fem_reference/fem_result_json.h"
 
+#include "problem/sample_checks.h"
+
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace fem
 {
@@ -100,6 +104,17 @@ namespace fem
       j["discretization"]["graded_vertices"].push_back(
         {{"r", g[0]}, {"z", g[1]}, {"lambda", g[2]}, {"halvings", static_cast<int>(g[3])}});
     j["diagnostics"] = {{"status", r.success ? "ok" : "failed"}, {"message", r.message}};
+    // A sample at a vertex where the stress has no value (problem/sample_checks.h, the same
+    // check as rfm_solve's): the mesh's value there is whichever cell's holds the point.
+    if (const std::vector<axisym::SampleAtVertex> at = axisym::samples_at_vertices(problem); !at.empty())
+      {
+        j["diagnostics"]["samples_at_vertices"] = axisym::to_json(at);
+        if (r.success)
+          {
+            j["diagnostics"]["status"] = "warning";
+            j["diagnostics"]["message"] = axisym::samples_at_vertices_warning(at);
+          }
+      }
     if (r.stress_l2_error)
       {
         j["diagnostics"]["stress_l2_error"] = *r.stress_l2_error;

@@ -182,6 +182,8 @@ int main(int argc, char **argv)
           fmt::print(stderr, "fem_solve: numerical failure: {}\n", r.message);
           return 3;
         }
+      if (result["diagnostics"]["status"] == "warning")
+        fmt::print(stderr, "fem_solve: warning: {}\n", result["diagnostics"]["message"].get<std::string>());
       fmt::print(stderr, "fem_solve: Phi_L = {:.6e}, Phi_C = {:.6e}, Phi_R = {:.6e} J/rad; "
                          "assembly {:.3f} s, solve {:.3f} s\n",
                  r.functionals.lagrange, r.functionals.castigliano, r.functionals.reissner,

@@ -1,19 +1,21 @@
 // fem_solve through its command line (FEM_SOLVE is the path of the executable under test):
 // an outline problem end to end (with and without body loads), --vtu into a directory that
-// does not exist yet, and the input errors of the outline path and of the loads (exit 2,
-// message naming the field, nothing written).
+// does not exist yet, the input errors of the outline path and of the loads (exit 2,
+// message naming the field, nothing written), and the warning for a sample at a vertex.
 #include "problem/test_problems.h"
 
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <unistd.h>
 #include <vector>
 
@@ -289,6 +291,64 @@ namespace
     const Outcome o = run(in.string() + " --refinements 0");
     EXPECT_EQ(o.status, 2) << o.err;
     EXPECT_NE(o.err.find("loading.outer_pressure"), std::string::npos) << o.err;
+    fs::remove_all(dir);
+  }
+  // A sample at a vertex where the stress has no value warns, as rfm_solve's does
+  // (problem/sample_checks.h): the stepped ring's 270-degree step corner and the pressure
+  // band's end. Samples 1 cm off them do not.
+  TEST(FemSolveCli, SampleAtASingularVertexOrATractionJumpWarns)
+  {
+    const fs::path dir = scratch("vertex_sample");
+    const fs::path in = dir / "problem.json", out = dir / "result.json";
+    const std::array<std::tuple<nlohmann::json, std::array<double, 2>, std::string>, 2> cases{
+      {{axisym::testing::stepped_ring(), {0.15, 0.1}, "singular"},
+       {axisym::testing::pressure_band(), {0.5, 0.25}, "traction_jump"}}};
+    for (const auto &[problem, vertex, kind] : cases)
+      {
+        nlohmann::json j = problem;
+        j["samples"] = {vertex, {vertex[0] + 0.01, vertex[1] + 0.01}};
+        std::ofstream(in) << j.dump();
+        const Outcome o = run(in.string() + " --refinements 0 --output " + out.string());
+        ASSERT_EQ(o.status, 0) << o.err;
+        const nlohmann::json r = nlohmann::json::parse(read(out));
+        const nlohmann::json &d = r.at("diagnostics");
+        EXPECT_EQ(d.at("status"), "warning") << kind;
+        ASSERT_EQ(d.at("samples_at_vertices").size(), 1u) << kind;
+        const nlohmann::json &s = d.at("samples_at_vertices")[0];
+        EXPECT_EQ(s.at("kind"), kind);
+        EXPECT_EQ(s.at("r").get<double>(), vertex[0]);
+        EXPECT_EQ(s.at("z").get<double>(), vertex[1]);
+        if (kind == "singular")
+          {
+            EXPECT_NEAR(s.at("exponent").get<double>(), 0.5444837, 1e-6);
+          }
+        EXPECT_NE(d.at("message").get<std::string>().find("the stress has no value there"), std::string::npos);
+        EXPECT_NE(o.err.find("fem_solve: warning:"), std::string::npos) << o.err;
+        // The samples are still written, both of them.
+        ASSERT_EQ(r.at("samples").size(), 2u);
+        if (kind == "singular")
+          {
+            // Why: one level finer, the vertex's value grows with the mesh's grading toward it
+            // (measured: sigma_zz -427, -1107, -4675, -13841 MPa at L = 0 to 3), while the
+            // sample 1 cm off holds (-2.086, -2.089, -2.088, -2.088 MPa).
+            const Outcome finer = run(in.string() + " --refinements 1 --output " + out.string());
+            ASSERT_EQ(finer.status, 0) << finer.err;
+            const nlohmann::json f = nlohmann::json::parse(read(out)).at("samples");
+            auto zz = [](const nlohmann::json &samples, const int k) {
+              return samples[k].at("sigma_zz").get<double>();
+            };
+            EXPECT_GT(std::abs(zz(f, 0)), 1.5 * std::abs(zz(r.at("samples"), 0)));
+            EXPECT_NEAR(zz(f, 1), zz(r.at("samples"), 1), 1e-2 * std::abs(zz(f, 1)));
+          }
+
+        j["samples"] = {{vertex[0] + 0.01, vertex[1] + 0.01}};
+        std::ofstream(in) << j.dump();
+        const Outcome off = run(in.string() + " --refinements 0 --output " + out.string());
+        ASSERT_EQ(off.status, 0) << off.err;
+        const nlohmann::json quiet = nlohmann::json::parse(read(out)).at("diagnostics");
+        EXPECT_EQ(quiet.at("status"), "ok") << kind;
+        EXPECT_FALSE(quiet.contains("samples_at_vertices"));
+      }
     fs::remove_all(dir);
   }
 } // namespace

@@ -13,6 +13,7 @@
 // Exit status: 0 success, 2 bad input (nothing written), 3 numerical failure.
 #include "problem/json_io.h"
 #include "problem/problem.h"
+#include "problem/sample_checks.h"
 #include "problem/wedge_modes.h"
 #include "rfm/allocator.h"
 #include "rfm/contact/contact.h"
@@ -180,55 +181,16 @@ namespace
                                         : fmt::format("the {:.2g} % a fixed degree is allowed", 50.0 * limit)));
   }
 
-  /// Samples at a vertex where the stress has no value (issue 24 item 6). At a singular
-  /// vertex (Re lambda < 1) the stress grows like rho^(Re lambda - 1) toward it; where a
-  /// traction jumps at a vertex it depends on the direction of approach. A global field
-  /// evaluated there gives a finite number all the same: the stepped shaft's re-entrant
-  /// shoulder corner (0.03, 0.1) read sigma_zz = 0 and sigma_rr = 0 at p = 12 (both omegas vanish
-  /// there), silently. Recorded as diagnostics.samples_at_vertices, with a warning. The
-  /// vertices are the problem's (singular_vertices, traction_jump_vertices), whatever columns
-  /// the discretization placed there.
-  void check_vertex_samples(const axisym::Problem &problem, const std::vector<rfm::SingularVertex> &singular,
-                            nlohmann::json &result)
+  /// Samples at a vertex where the stress has no value (issue 24 item 6;
+  /// problem/sample_checks.h, the same check as fem_solve's): diagnostics.samples_at_vertices,
+  /// with a warning.
+  void check_vertex_samples(const axisym::Problem &problem, nlohmann::json &result)
   {
-    const std::vector<axisym::OutlineEdge> &edges = problem.body->outline.edges();
-    std::vector<axisym::Point> jumps;
-    for (const std::size_t i : rfm::traction_jump_vertices(*problem.body, problem.material.poisson_ratio))
-      jumps.push_back(edges[(i + 1) % edges.size()].start);
-    const double tol = 1e-9 * problem.body->outline.size();
-    auto at = [tol](const std::array<double, 2> &s, const axisym::Point &v) {
-      return std::hypot(s[0] - v.r, s[1] - v.z) <= tol;
-    };
-    nlohmann::json list = nlohmann::json::array();
-    std::vector<std::string> said;
-    for (const std::array<double, 2> &s : problem.samples)
-      {
-        for (const rfm::SingularVertex &v : singular)
-          if (at(s, v.at))
-            {
-              double lowest = std::numeric_limits<double>::infinity();
-              for (const rfm::WedgeMode &m : v.modes)
-                lowest = std::min(lowest, m.lambda.real());
-              list.push_back({{"r", s[0]}, {"z", s[1]}, {"kind", "singular"}, {"exponent", lowest}});
-              said.push_back(fmt::format("({:.6g}, {:.6g}) m is a singular vertex (the stress grows like "
-                                         "rho^{:.4g} toward it)",
-                                         s[0], s[1], lowest - 1.0));
-            }
-        for (const axisym::Point &j : jumps)
-          if (at(s, j))
-            {
-              list.push_back({{"r", s[0]}, {"z", s[1]}, {"kind", "traction_jump"}});
-              said.push_back(fmt::format("({:.6g}, {:.6g}) m is a vertex where the traction jumps (the "
-                                         "stress there depends on the direction of approach)",
-                                         s[0], s[1]));
-            }
-      }
-    if (list.empty())
+    const std::vector<axisym::SampleAtVertex> at = axisym::samples_at_vertices(problem);
+    if (at.empty())
       return;
-    result["diagnostics"]["samples_at_vertices"] = list;
-    add_warning(result, fmt::format("the sample {}: the stress has no value there, and the one given is "
-                                    "not a limit of the method; sample at a distance from the vertex",
-                                    fmt::join(said, "; the sample ")));
+    result["diagnostics"]["samples_at_vertices"] = axisym::to_json(at);
+    add_warning(result, axisym::samples_at_vertices_warning(at));
   }
 
   // The fields at the problem's sample points (any model with evaluate(r, z)).
@@ -764,7 +726,7 @@ namespace
       add_ritz_bound(*model, phi, result);
     result["samples"] = fields_to_json(problem, *model);
     check_axis_samples(problem, phi, target_indicator, result);
-    check_vertex_samples(problem, vertices, result);
+    check_vertex_samples(problem, result);
     // A fixed degree is not a failure, but its doubt is said (issue 24 item 6): above 1e-5 the
     // indicator means about 0.3 % in stress (the Lame calibration of rfm.tolerance).
     if (zones.empty() && !target_indicator)

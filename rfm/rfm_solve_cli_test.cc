@@ -478,13 +478,17 @@ namespace
   {
     const fs::path dir = scratch("vertex_sample");
     const fs::path in = dir / "problem.json", out = dir / "result.json";
-    // The jump also without its field (rfm.vertex_max_exponent 0): the vertices are the problem's.
+    // The jump also without its field (rfm.vertex_max_exponent 0), and a shear traction's,
+    // which has none (a log term): the vertices are the problem's.
     nlohmann::json bare_band = axisym::testing::pressure_band();
     bare_band["rfm"]["vertex_max_exponent"] = 0;
-    const std::array<std::tuple<nlohmann::json, std::array<double, 2>, std::string>, 3> cases{
+    nlohmann::json shear_band = axisym::testing::pressure_band();
+    shear_band["boundary"]["bore_loaded"] = {{"traction", {0.0, 1.0e6}}};
+    const std::array<std::tuple<nlohmann::json, std::array<double, 2>, std::string>, 4> cases{
       {{axisym::testing::stepped_ring(), {0.15, 0.1}, "singular"},
        {axisym::testing::pressure_band(), {0.5, 0.25}, "traction_jump"},
-       {bare_band, {0.5, 0.25}, "traction_jump"}}};
+       {bare_band, {0.5, 0.25}, "traction_jump"},
+       {shear_band, {0.5, 0.25}, "traction_jump"}}};
     for (const auto &[problem, vertex, kind] : cases)
       for (const bool at_vertex : {true, false})
         {

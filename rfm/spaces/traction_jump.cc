@@ -167,13 +167,18 @@ namespace rfm
   std::vector<std::size_t> traction_jump_vertices(const axisym::Body &body, const double poisson_ratio)
   {
     const std::vector<axisym::OutlineEdge> &edges = body.outline.edges();
-    const double tol = 1e-9 * body.outline.size();
+    const std::vector<axisym::Point> jumps = axisym::traction_jump_vertices(body);
     std::vector<std::size_t> out;
     for (std::size_t i = 0; i < edges.size(); ++i)
       {
         const axisym::OutlineEdge &arriving = edges[i], &leaving = edges[(i + 1) % edges.size()];
+        // The vertex is the arriving edge's end, the very point the problem layer gives.
+        if (std::none_of(jumps.begin(), jumps.end(), [&](const axisym::Point &j) {
+              return j.r == arriving.end.r && j.z == arriving.end.z;
+            }))
+          continue;
         const auto on_arriving = face_load(body, arriving, 1.0), on_leaving = face_load(body, leaving, 0.0);
-        if (leaving.start.r > tol && on_arriving && on_leaving &&
+        if (on_arriving && on_leaving &&
             TractionJump::make(arriving, *on_arriving, leaving, *on_leaving, 1.0, poisson_ratio).has_value())
           out.push_back(i);
       }

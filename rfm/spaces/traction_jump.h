@@ -118,10 +118,11 @@ namespace rfm
   std::optional<TractionJump::FaceLoad> face_load(const axisym::Body &body, const axisym::OutlineEdge &e,
                                                   double t);
 
-  /// The outline's vertices off the axis where the prescribed traction jumps: for each, the
-  /// index i of the arriving edge (the vertex is edges[i + 1].start, cyclically), where the two
-  /// faces' loads (face_load) are met by no constant stress and TractionJump::make has the
-  /// field. Independent of the discretization (OutlineModel places the field at these
-  /// vertices where there is room; rfm_solve flags samples on them).
+  /// The outline's vertices off the axis where the prescribed traction jumps
+  /// (axisym::traction_jump_vertices: no constant stress meets the two faces' loads) and
+  /// TractionJump::make has the field: for each, the index i of the arriving edge (the vertex
+  /// is edges[i + 1].start, cyclically). Independent of the discretization (OutlineModel
+  /// places the field at these vertices where there is room). A shear traction ending on a
+  /// straight face jumps but has no field here (a log term).
   std::vector<std::size_t> traction_jump_vertices(const axisym::Body &body, double poisson_ratio);
 } // namespace rfm
