@@ -184,15 +184,17 @@ namespace fem
     /// pass adaptive_max_dofs, or after adaptive_max_cycles. A die's zone is carried over from
     /// cycle to cycle (its active-set loop starts from it).
     bool adaptive = false;
-    /// What the adaptive cycles refine for. `energy`: Kelly's estimate of the solution, the
-    /// stop rule above. `samples` (fem.refinement.goal, --adaptive-goal): the stresses at the
-    /// problem's samples, goal-oriented: the dual solution z of a(v, z) = J(v), with J the
-    /// mean over the cell around each sample of sum_c s_c sigma_c(v) (s_c the sign of the
-    /// current sigma_c there, over the largest sample stress; components below 1e-3 of it left
+    /// What the adaptive cycles refine for. `energy`: Kelly's estimate of the solution, the stop
+    /// rule above. `samples` (fem.refinement.goal, --adaptive-goal): the stresses at the problem's
+    /// samples that have a value (not those at a vertex where the stress has none,
+    /// axisym::samples_with_a_value, which the cycles would chase without end; with none left
+    /// check_supported rejects the problem), goal-oriented: the dual solution z of a(v, z) = J(v),
+    /// with J the mean over the cell around each sample of sum_c s_c sigma_c(v) (s_c the sign of
+    /// the current sigma_c there, over the largest sample stress; components below 1e-3 of it left
     /// out), solved with the factorized matrix; each cell's indicator is the product of the
     /// primal's and the dual's Kelly estimates (both times sqrt(r)). It stops when the sample
-    /// stresses changed by less than adaptive_tolerance of the largest since the mesh had
-    /// half the DoFs.
+    /// stresses changed by less than adaptive_tolerance of the largest since the mesh had half the
+    /// DoFs.
     enum class AdaptiveGoal
     {
       energy,

@@ -400,8 +400,9 @@ namespace fem::internal
     /// interior faces), times sqrt(r) of the cell's centre: the r-weighted energy's share.
     Vector<float> cell_estimates(const Vector<double> &u) const;
     /// FemOptions::AdaptiveGoal::samples: the dual solution for the sample stresses `now`
-    /// (the current ones; see FemOptions::adaptive_goal), with the last factorization.
-    Vector<double> dual_of_samples(const std::vector<FieldSample> &now);
+    /// (the current ones; see FemOptions::adaptive_goal) of those `aimed` at, with the last
+    /// factorization.
+    Vector<double> dual_of_samples(const std::vector<FieldSample> &now, const std::vector<bool> &aimed);
     /// sqrt(int |grad u|^2 r dr dz) of the solution: the estimate's scale.
     double gradient_norm() const;
     /// Bilateral: moves the boundary vertex nearest to each free end of a prescribed zone onto

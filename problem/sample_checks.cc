@@ -23,7 +23,9 @@ namespace axisym
     for (std::size_t i = 0; i < problem.samples.size(); ++i)
       {
         const std::array<double, 2> &s = problem.samples[i];
-        auto at = [&](const Point &v) { return std::hypot(s[0] - v.r, s[1] - v.z) <= tol; };
+        // A mirrored body's section is its half z >= 0: a sample below is the image's.
+        const double z = body.mirrored ? std::abs(s[1]) : s[1];
+        auto at = [&](const Point &v) { return std::hypot(s[0] - v.r, z - v.z) <= tol; };
         for (const SingularVertex &v : singular)
           if (at(v.at))
             {
@@ -36,6 +38,14 @@ namespace axisym
           if (at(j))
             out.push_back({i, {s[0], s[1]}, SampleAtVertex::Kind::traction_jump, 0.0});
       }
+    return out;
+  }
+
+  std::vector<bool> samples_with_a_value(const Problem &problem)
+  {
+    std::vector<bool> out(problem.samples.size(), true);
+    for (const SampleAtVertex &v : samples_at_vertices(problem))
+      out[v.sample] = false;
     return out;
   }
 

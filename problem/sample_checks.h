@@ -40,6 +40,11 @@ namespace axisym
   /// is listed twice.
   std::vector<SampleAtVertex> samples_at_vertices(const Problem &problem);
 
+  /// For each sample, whether it has a value to converge to: false for those
+  /// samples_at_vertices lists (what a goal-oriented refinement or a convergence check of
+  /// the samples leaves out).
+  std::vector<bool> samples_with_a_value(const Problem &problem);
+
   /// The result's diagnostics.samples_at_vertices: per entry r, z, kind ("singular" with its
   /// exponent, or "traction_jump").
   nlohmann::json to_json(const std::vector<SampleAtVertex> &at);

@@ -41,6 +41,7 @@ namespace axisym
     EXPECT_NE(why.find("(0.15, 0.1) m is a singular vertex (the stress grows like rho^-0.4555"), std::string::npos)
       << why;
     EXPECT_TRUE(samples_at_vertices_warning({}).empty());
+    EXPECT_EQ(samples_with_a_value(p), (std::vector<bool>{true, true, true, false}));
   }
 
   // Where a traction ends on a straight face: the pressure band, and a shear traction in its

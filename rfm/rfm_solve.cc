@@ -108,16 +108,14 @@ namespace
     if (samples.empty())
       return;
     const nlohmann::json before = fields_to_json(problem, lower);
-    std::vector<bool> at_vertex(samples.size(), false);
-    for (const axisym::SampleAtVertex &v : axisym::samples_at_vertices(problem))
-      at_vertex[v.sample] = true;
+    const std::vector<bool> with_a_value = axisym::samples_with_a_value(problem);
     const double limit = 2.0 * std::sqrt(fixed_degree_indicator_limit);
     const double floor = energy_stress(problem, phi);
     nlohmann::json list = nlohmann::json::array();
     std::vector<std::string> doubtful;
     for (std::size_t k = 0; k < samples.size(); ++k)
       {
-        if (at_vertex[k])
+        if (!with_a_value[k])
           continue;
         const nlohmann::json &now = samples[k], &then = before[k];
         double change = 0.0;
