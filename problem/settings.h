@@ -145,10 +145,10 @@ namespace axisym
     /// None by default: they restore exponential convergence where the rest of the section
     /// converges (a heated ring on a symmetry plane, indicator at p = 16 / 20: 1.3e-7 / 2.7e-8
     /// without the vertex's columns, 6.4e-8 / 1.2e-8 with the stress columns, 8.4e-9 /
-    /// 4.6e-10 with displacement columns of degree 4 too), but where another vertex limits
-    /// the section the mixed solution's displacement falls behind with them (issue 24's heated
-    /// hub at p = 16 / 20: 1.15e-4 / 7.2e-5 without, 1.06e-4 / 6.9e-5 with the stress columns,
-    /// 1.61e-4 / 1.11e-4 with both).
+    /// 4.6e-10 with displacement columns of degree 4 too), but where other vertices limit the
+    /// section they gain nothing (issue 24's heated hub at p = 16, session 66: indicator 1.01e-6
+    /// without, 1.05e-6 with displacement columns of degree 2, sigma_zz at the vertex -476.54 /
+    /// -476.75 MPa against the FEM's -472.64; before session 51's arc modes 1.06e-4 / 1.61e-4).
     int resonant_displacement_degree = -1;
     /// Where a vertex's mode columns live (rfm/spaces/vertex_enrichment.h:
     /// set_section_support): `section` (default) on the whole section at a re-entrant vertex
