@@ -95,14 +95,17 @@ namespace fem
       throw axisym::InputError("problem: no body (parser bug?)");
     // The goal-oriented cycles leave out the samples at a vertex where the stress has no
     // value (adaptive_cycles); with nothing left there is no goal.
-    const std::vector<bool> with_a_value = axisym::samples_with_a_value(problem);
     if (options.adaptive && options.adaptive_goal == FemOptions::AdaptiveGoal::samples &&
-        !problem.samples.empty() && std::count(with_a_value.begin(), with_a_value.end(), true) == 0)
-      throw axisym::InputError("fem.refinement.goal = \"samples\" (--adaptive-goal samples): every "
-                               "sample lies at a vertex where the stress has no value "
-                               "(problem/sample_checks.h), which the refinement would chase "
-                               "without end; give a sample away from the vertices, or refine "
-                               "for the energy");
+        !problem.samples.empty())
+      {
+        const std::vector<bool> with_a_value = axisym::samples_with_a_value(problem);
+        if (std::count(with_a_value.begin(), with_a_value.end(), true) == 0)
+          throw axisym::InputError("fem.refinement.goal = \"samples\" (--adaptive-goal samples): "
+                                   "every sample lies at a vertex where the stress has no value "
+                                   "(problem/sample_checks.h), which the refinement would chase "
+                                   "without end; give a sample away from the vertices, or refine "
+                                   "for the energy");
+      }
     if (Utilities::MPI::job_supports_mpi() && problem.contact.method == "fixed" &&
         !problem.body->die_parts().empty())
       throw axisym::InputError("contact.method = \"fixed\" under MPI: a prescribed zone moves "
