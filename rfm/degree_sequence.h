@@ -35,6 +35,9 @@ namespace rfm
   struct DegreeSequence
   {
     std::unique_ptr<Model> model; ///< the last degree tried
+    /// The degree before it (p - 2; null after a single step): the samples' check of the
+    /// tolerance path compares with it (rfm_solve).
+    std::unique_ptr<Model> previous;
     std::vector<DegreeStep> steps;
     bool reached = false;
     std::string message;
@@ -63,6 +66,7 @@ namespace rfm
       {
         DiscretizationOptions o = options;
         o.degree = p;
+        out.previous = std::move(out.model);
         out.model = make(o);
         if (!out.model->ok())
           {

@@ -39,6 +39,10 @@ TEST(DegreeSequence, ReachesTheTolerance)
   const auto s = run({{2, 1e-3}, {4, 1e-5}, {6, 1e-7}, {8, 1e-9}}, 1e-8);
   EXPECT_TRUE(s.reached);
   EXPECT_EQ(s.steps.back().degree, 8);
+  // The model of the degree before the last is kept (the samples' check compares with it).
+  ASSERT_TRUE(s.previous);
+  EXPECT_EQ(s.previous->indicator, 1e-7);
+  EXPECT_EQ(s.model->indicator, 1e-9);
 }
 
 TEST(DegreeSequence, AFloorAfterConvergenceStops)
