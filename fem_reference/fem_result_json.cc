@@ -113,6 +113,9 @@ namespace fem
           {
             j["diagnostics"]["status"] = "warning";
             j["diagnostics"]["message"] = axisym::samples_at_vertices_warning(at);
+            // As rfm_solve's diagnostics.warnings: the check's key and its message.
+            j["diagnostics"]["warnings"] = {{{"check", "samples_at_vertices"},
+                                             {"message", j["diagnostics"]["message"]}}};
           }
       }
     if (r.stress_l2_error)

@@ -313,6 +313,7 @@ namespace
         const nlohmann::json r = nlohmann::json::parse(read(out));
         const nlohmann::json &d = r.at("diagnostics");
         EXPECT_EQ(d.at("status"), "warning") << kind;
+        EXPECT_EQ(d.at("warnings")[0].at("check"), "samples_at_vertices") << kind;
         ASSERT_EQ(d.at("samples_at_vertices").size(), 1u) << kind;
         const nlohmann::json &s = d.at("samples_at_vertices")[0];
         EXPECT_EQ(s.at("kind"), kind);

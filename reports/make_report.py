@@ -1918,6 +1918,56 @@ def fem_scaling_section(sc, out_dir):
 
 
 
+def defaults_section(d):
+    """README command (1)'s `defaults` step (verification/defaults.py): every problem file through
+    rfm_solve and fem_solve without flags."""
+    md = ["## 11. What a user gets without flags (`defaults`)", ""]
+    md.append("Every problem file of `verification/problems` through `rfm_solve FILE` and `fem_solve FILE` with no "
+              "option but `--output` (`verification/defaults.py`, `reports/data/defaults.json`). The RFM's "
+              "defaults: the tolerance 1e-8 on the indicator (a problem file's `rfm.tolerance` or `rfm.degree` "
+              "where it gives one; p = 8 for a die); the FEM's: the file's `fem` settings. Exit 3 is a "
+              "numerical failure said as such (its reason in the status column); a run past the report's "
+              f"limit of {d.get('timeout_s', 120):.0f} s is stopped and shown so; status `warning` is an "
+              "answer in doubt, with the checks that raised it (`diagnostics.warnings`, README 'Doubt'): a "
+              "solver that answers without a warning claims its accuracy. 'samples' is the largest difference "
+              "of a stress component between the two solvers' samples over the largest |stress| of the FEM's "
+              "(samples at vertices left out), where both answered. Times are wall times of the whole "
+              "command, one thread, beside another driver.")
+    md.append("")
+    md.append("| problem | RFM exit | p | indicator | RFM status (checks) | RFM [s] | FEM exit | DoFs | FEM status "
+              "(checks) | FEM [s] | samples |")
+    md.append("|---|---|---|---|---|---|---|---|---|---|---|")
+    counts = {"rfm_ok": 0, "rfm_warning": 0, "rfm_failed": 0, "rfm_stopped": 0}
+
+    def status_cell(r):
+        if r.get("exit") is None:
+            return f"stopped after {r['wall_s']:.0f} s (the report's limit)"
+        if r.get("exit") == 3:
+            message = r.get("message", "")
+            return f"failed: {message[:160]}{'...' if len(message) > 160 else ''}"
+        status = r.get("status") or "-"
+        return f"{status} ({', '.join(r['checks'])})" if r.get("checks") else status
+
+    for name, c in d["cases"].items():
+        rfm, fem = c["rfm"], c["fem"]
+        key = ("rfm_stopped" if rfm["exit"] is None else "rfm_failed" if rfm["exit"] != 0
+               else "rfm_warning" if rfm.get("status") == "warning" else "rfm_ok")
+        counts[key] += 1
+        policy = rfm.get("degree_policy")
+        p = "-" if "degree" not in rfm else f"{rfm['degree']}{' (tol.)' if policy == 'tolerance' else ''}"
+        ind = "-" if rfm.get("indicator") is None else f"{rfm['indicator']:.1e}"
+        diff = c.get("samples_rfm_vs_fem")
+        md.append(f"| `{name}` | {'-' if rfm['exit'] is None else rfm['exit']} | {p} | {ind} | {status_cell(rfm)} | {rfm['wall_s']:.1f} | "
+                  f"{'-' if fem['exit'] is None else fem['exit']} | {fem.get('dofs', '-')} | {status_cell(fem)} | {fem['wall_s']:.1f} | "
+                  f"{'-' if diff is None else f'{diff:.1e}'} |")
+    md.append("")
+    md.append(f"The RFM answers {counts['rfm_ok']} of the {len(d['cases'])} files without a warning, "
+              f"{counts['rfm_warning']} with one, fails on {counts['rfm_failed']} (exit 3, the reason said), and "
+              f"runs past the report's limit of {d.get('timeout_s', 120):.0f} s on {counts['rfm_stopped']}.")
+    md.append("")
+    return md
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("--data", required=True)
@@ -2004,6 +2054,9 @@ def main():
     scaling = load(args.data, "fem_scaling.json")
     if scaling:
         md += fem_scaling_section(scaling, args.out)
+    defaults = load(args.data, "defaults.json")
+    if defaults:
+        md += defaults_section(defaults)
 
     tmp = os.path.join(args.out, "report.md.tmp")
     with open(tmp, "w") as f:

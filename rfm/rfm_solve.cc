@@ -53,14 +53,17 @@ namespace
   }
   /// Above this indicator a solve at a fixed degree warns (status "warning", exit 0).
   constexpr double fixed_degree_indicator_limit = 1e-5;
-  /// Marks the result as in doubt with `why` (after any warning already there) and says so.
-  void add_warning(nlohmann::json &result, const std::string &why)
+  /// Marks the result as in doubt with `why` (after any warning already there) and says so;
+  /// diagnostics.warnings lists each with the `check` that raised it (a short key, for
+  /// drivers and reports: README, "Doubt").
+  void add_warning(nlohmann::json &result, const std::string &check, const std::string &why)
   {
     nlohmann::json &d = result["diagnostics"];
     if (d.value("status", "") == "warning")
       d["message"] = d["message"].get<std::string>() + "; " + why;
     else
       d["status"] = "warning", d["message"] = why;
+    d["warnings"].push_back({{"check", check}, {"message", why}});
     fmt::print(stderr, "rfm_solve: warning: {}\n", why);
   }
 
@@ -133,14 +136,15 @@ namespace
       }
     result["diagnostics"]["check_at_lower_degree"]["samples"] = list;
     if (!doubtful.empty())
-      add_warning(result, fmt::format("from p = {} to the fixed degree p = {} the sample{} moved by more "
-                                      "than {:.2g} % of {} stress: {}; the indicator weighs the whole "
-                                      "section and does not see one point's value, and {} not settled "
-                                      "within the {:.2g} % a fixed degree is allowed: raise rfm.degree, "
-                                      "or compare with fem_solve",
-                                      p - 2, p, doubtful.size() > 1 ? "s" : "", 100.0 * limit,
-                                      doubtful.size() > 1 ? "their" : "its", fmt::join(doubtful, ", "),
-                                      doubtful.size() > 1 ? "they are" : "it is", 50.0 * limit));
+      add_warning(result, "sample_moved",
+                  fmt::format("from p = {} to the fixed degree p = {} the sample{} moved by more "
+                              "than {:.2g} % of {} stress: {}; the indicator weighs the whole "
+                              "section and does not see one point's value, and {} not settled "
+                              "within the {:.2g} % a fixed degree is allowed: raise rfm.degree, "
+                              "or compare with fem_solve",
+                              p - 2, p, doubtful.size() > 1 ? "s" : "", 100.0 * limit,
+                              doubtful.size() > 1 ? "their" : "its", fmt::join(doubtful, ", "),
+                              doubtful.size() > 1 ? "they are" : "it is", 50.0 * limit));
   }
 
   /// The samples where the tolerance path stops (issue 24 item 6). The tolerance t is met by
@@ -202,15 +206,16 @@ namespace
       }
     check["samples"] = list;
     if (!doubtful.empty())
-      add_warning(result, fmt::format("the indicator met the tolerance {:g} at p = {}, but from p = {} the "
-                                      "sample{} moved so that, at the rate the indicator falls ({:.2g} per "
-                                      "two degrees in stress), {} still off by more than {:.2g} % of {} "
-                                      "stress: {}; the tolerance promises about {:.2g} %: raise rfm.degree "
-                                      "above {}, tighten rfm.tolerance, or compare with fem_solve",
-                                      tolerance, p, p - 2, doubtful.size() > 1 ? "s" : "", rate,
-                                      doubtful.size() > 1 ? "they are" : "it is", 100.0 * limit,
-                                      doubtful.size() > 1 ? "their" : "its", fmt::join(doubtful, ", "),
-                                      50.0 * limit, p));
+      add_warning(result, "samples_unsettled",
+                  fmt::format("the indicator met the tolerance {:g} at p = {}, but from p = {} the "
+                              "sample{} moved so that, at the rate the indicator falls ({:.2g} per "
+                              "two degrees in stress), {} still off by more than {:.2g} % of {} "
+                              "stress: {}; the tolerance promises about {:.2g} %: raise rfm.degree "
+                              "above {}, tighten rfm.tolerance, or compare with fem_solve",
+                              tolerance, p, p - 2, doubtful.size() > 1 ? "s" : "", rate,
+                              doubtful.size() > 1 ? "they are" : "it is", 100.0 * limit,
+                              doubtful.size() > 1 ? "their" : "its", fmt::join(doubtful, ", "),
+                              50.0 * limit, p));
   }
 
   /// Below this indicator a fixed degree has met the default tolerance: no check at p - 2.
@@ -228,7 +233,7 @@ namespace
                           const rfm::Functionals &phi, const int p, nlohmann::json &result)
   {
     if (phi.indicator() > fixed_degree_indicator_limit)
-      add_warning(result, fixed_degree_warning(phi.indicator(), p));
+      add_warning(result, "indicator", fixed_degree_warning(phi.indicator(), p));
     if (!(phi.indicator() > fixed_degree_check_floor) || p < 4)
       return;
     rfm::DiscretizationOptions o = problem.rfm;
@@ -238,9 +243,10 @@ namespace
     const rfm::OutlineModel lower(problem, o);
     if (!lower.ok())
       {
-        add_warning(result, fmt::format("the check at p = {} failed ({}): the fixed degree's "
-                                        "convergence is not known",
-                                        p - 2, lower.summary().message));
+        add_warning(result, "check_failed",
+                    fmt::format("the check at p = {} failed ({}): the fixed degree's "
+                                "convergence is not known",
+                                p - 2, lower.summary().message));
         return;
       }
     const double before = lower.functionals().indicator();
@@ -249,20 +255,22 @@ namespace
       {"degree", p - 2}, {"indicator", before}, {"dropped_directions", {d_lower[0], d_lower[1]}}};
     check_sample_changes(problem, lower, phi, p, result);
     if (phi.indicator() > before)
-      add_warning(result, fmt::format("the indicator grows from {:.3g} at p = {} to {:.3g} at the "
-                                      "fixed degree p = {}: rounding or an unresolved singularity "
-                                      "wins; the answer is in doubt",
-                                      before, p - 2, phi.indicator(), p));
+      add_warning(result, "indicator_grows",
+                  fmt::format("the indicator grows from {:.3g} at p = {} to {:.3g} at the "
+                              "fixed degree p = {}: rounding or an unresolved singularity "
+                              "wins; the answer is in doubt",
+                              before, p - 2, phi.indicator(), p));
     // More dropped directions alone are no doubt while the indicator still falls (the clamped
     // cylinder at p = 12: 4 more than at p = 10, the indicator 2.6 times smaller, Phi_R 2.3e-8
     // from the FEM's limit); with a stalling indicator they say why it stalls.
     const Eigen::Index more = d[0] + d[1] - d_lower[0] - d_lower[1];
     if (more > 0 && phi.indicator() > 0.5 * before)
-      add_warning(result, fmt::format("the orthonormalization drops {} more dependent directions at "
-                                      "p = {} than at p = {} ({} and {} of the stresses, {} and {} of "
-                                      "the displacements): the basis loses its independence in "
-                                      "rounding; the answer is in doubt",
-                                      more, p, p - 2, d[0], d_lower[0], d[1], d_lower[1]));
+      add_warning(result, "dropped_directions",
+                  fmt::format("the orthonormalization drops {} more dependent directions at "
+                              "p = {} than at p = {} ({} and {} of the stresses, {} and {} of "
+                              "the displacements): the basis loses its independence in "
+                              "rounding; the answer is in doubt",
+                              more, p, p - 2, d[0], d_lower[0], d[1], d_lower[1]));
   }
 
   /// The samples on the axis (issue 24 items 5 and 6). There a regular field has sigma_rr =
@@ -309,7 +317,7 @@ namespace
       return;
     result["diagnostics"]["axis_samples"] = list;
     if (!doubtful.empty())
-      add_warning(result,
+      add_warning(result, "axis_samples",
                   fmt::format("on the axis sigma_rr = sigma_tt, but they differ by {} (limit {:.2g} %): at "
                               "least half of that is the error of sigma_rr or sigma_tt there, more than "
                               "{}, and the indicator does not see it (the functionals weigh with r); "
@@ -329,7 +337,7 @@ namespace
     if (at.empty())
       return;
     result["diagnostics"]["samples_at_vertices"] = axisym::to_json(at);
-    add_warning(result, axisym::samples_at_vertices_warning(at));
+    add_warning(result, "samples_at_vertices", axisym::samples_at_vertices_warning(at));
   }
 
   // The fields at the problem's sample points (any model with evaluate(r, z)).
@@ -873,7 +881,7 @@ namespace
     if (zones.empty() && !target_indicator)
       check_fixed_degree(problem, *model, phi, p, result);
     if (!vertex_warning.empty())
-      add_warning(result, vertex_warning);
+      add_warning(result, "vertex_without_columns", vertex_warning);
     if (!zones.empty())
       {
         result["contact"] = outline_die_to_json(problem, *model, zones[0], phi);
@@ -944,7 +952,7 @@ namespace
             // Phi_C (the stresses') 0.24 %, with P 1.7e-5 from the FEM's.
             const double off_l = std::abs(phi.lagrange / phi.reissner - 1),
                          off_c = std::abs(phi.castigliano / phi.reissner - 1);
-            add_warning(result, fmt::format(
+            add_warning(result, "contact_zone_unresolved", fmt::format(
               "the indicator |Phi_L - Phi_C| / |Phi_R| is {:.3g} at p = {} (Phi_L {:.2g} and "
               "Phi_C {:.2g} from Phi_R): the {} near the contact zone is not resolved (a zone "
               "small against the section); raise rfm.degree or rfm.local_degree, or compare "
@@ -961,9 +969,10 @@ namespace
         });
         if (model->n_zone_edges() == 0 && free_zone != zones.end())
           {
-            add_warning(result, "the zone ends inside part " + free_zone->part +
-                                  " and rfm.edge_modes = 0: the edge's singular field is missing and P(c) "
-                                  "is in doubt (the paper's die at c = 0.45a-0.6a: 0.2-0.7 % off at p = 8-16)");
+            add_warning(result, "zone_edge_without_modes",
+                        "the zone ends inside part " + free_zone->part +
+                          " and rfm.edge_modes = 0: the edge's singular field is missing and P(c) "
+                          "is in doubt (the paper's die at c = 0.45a-0.6a: 0.2-0.7 % off at p = 8-16)");
           }
         for (const nlohmann::json &die : result["dies"])
           fmt::print(stderr, "rfm_solve: die on {}: c = {:.6g} m, P = {:.6g} N (trace {:.6g} N)\n",

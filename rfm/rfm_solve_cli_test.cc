@@ -600,6 +600,12 @@ namespace
             EXPECT_EQ(d.at("status"), "warning");
             EXPECT_NE(d.at("message").get<std::string>().find("(0, 0.15) m about"), std::string::npos)
               << d.at("message");
+            // Listed with its check's key (diagnostics.warnings).
+            bool listed = false;
+            for (const nlohmann::json &w : d.at("warnings"))
+              listed = listed || (w.at("check") == "samples_unsettled" &&
+                                  w.at("message").get<std::string>().find("(0, 0.15) m about") != std::string::npos);
+            EXPECT_TRUE(listed) << d.at("warnings");
           }
         else
           {
@@ -610,6 +616,7 @@ namespace
                 EXPECT_LT(error[i], limit) << i;
               }
             EXPECT_EQ(d.at("status"), "ok") << d.at("message");
+            EXPECT_FALSE(d.contains("warnings"));
           }
       }
   }
