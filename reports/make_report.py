@@ -2000,7 +2000,7 @@ def main():
     cmp = load(args.data, "rfm_vs_fem.json")
     for d in (lame, die, cmp, load(args.data, "bodies_of_revolution.json"),
               load(args.data, "body_loads.json"), load(args.data, "dies_on_parts.json"),
-              load(args.data, "corners.json")):
+              load(args.data, "corners.json"), load(args.data, "defaults.json")):
         if d:
             threads = f" on {d['threads']} thread{'s' if d['threads'] != 1 else ''}" if "threads" in d else ""
             md.append(f"* driver `{d['driver']}` in mode `{d['mode']}`{threads}; the problem files it read are "
@@ -2008,7 +2008,8 @@ def main():
     counts = sorted({d["threads"] for d in (lame, die, cmp, load(args.data, "bodies_of_revolution.json"),
                                             load(args.data, "body_loads.json"),
                                             load(args.data, "dies_on_parts.json"),
-                                            load(args.data, "corners.json")) if d and "threads" in d})
+                                            load(args.data, "corners.json"),
+                                            load(args.data, "defaults.json")) if d and "threads" in d})
     if len(counts) == 1:
         md.append(f"* README command (1) runs the drivers two at a time, one per core, each on "
                   f"{threads_text(counts[0])} (`reports/CMakeLists.txt`): the wall times in this report were "
