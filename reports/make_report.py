@@ -1928,7 +1928,7 @@ def defaults_section(d):
               "where it gives one; p = 8 for a die); the FEM's: the file's `fem` settings. Exit 3 is a "
               "numerical failure said as such (its reason in the status column); a run past the report's "
               f"limit of {d.get('timeout_s', 120):.0f} s is stopped and shown so; status `warning` is an "
-              "answer in doubt, with the checks that raised it (`diagnostics.warnings`, README 'Doubt'): a "
+              "answer in doubt, with the checks that raised it (`diagnostics.warnings`, listed in the README's 'Running one solver on one problem file'): a "
               "solver that answers without a warning claims its accuracy. 'samples' is the largest difference "
               "of a stress component between the two solvers' samples over the largest |stress| of the FEM's "
               "(samples at vertices left out), where both answered. Times are wall times of the whole "

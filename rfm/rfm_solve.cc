@@ -55,7 +55,7 @@ namespace
   constexpr double fixed_degree_indicator_limit = 1e-5;
   /// Marks the result as in doubt with `why` (after any warning already there) and says so;
   /// diagnostics.warnings lists each with the `check` that raised it (a short key, for
-  /// drivers and reports: README, "Doubt").
+  /// drivers and reports; README, 'Running one solver on one problem file', lists them).
   void add_warning(nlohmann::json &result, const std::string &check, const std::string &why)
   {
     nlohmann::json &d = result["diagnostics"];
