@@ -96,6 +96,36 @@ namespace
   template <typename Model>
   nlohmann::json fields_to_json(const axisym::Problem &problem, const Model &model);
 
+  /// One sample's change since p - 2: its largest stress component's, over its scale.
+  struct SampleChange
+  {
+    std::size_t index; ///< in result["samples"]
+    double change, scale, relative;
+  };
+  /// The changes of the samples with a value (samples at vertices left out) from the model
+  /// `lower` to the samples in `result`.
+  std::vector<SampleChange> sample_changes(const axisym::Problem &problem, const rfm::OutlineModel &lower,
+                                           const rfm::Functionals &phi, const nlohmann::json &result)
+  {
+    const nlohmann::json &samples = result.at("samples");
+    const nlohmann::json before = fields_to_json(problem, lower);
+    const std::vector<bool> with_a_value = axisym::samples_with_a_value(problem);
+    const double floor = energy_stress(problem, phi);
+    std::vector<SampleChange> out;
+    for (std::size_t k = 0; k < samples.size(); ++k)
+      {
+        if (!with_a_value[k])
+          continue;
+        const nlohmann::json &now = samples[k], &then = before[k];
+        double change = 0.0;
+        for (const char *c : {"sigma_rr", "sigma_zz", "sigma_tt", "sigma_rz"})
+          change = std::max(change, std::abs(now.at(c).get<double>() - then.at(c).get<double>()));
+        const double scale = sample_scale(now, floor);
+        out.push_back({k, change, scale, change / scale});
+      }
+    return out;
+  }
+
   /// The samples' change from p - 2 at a fixed degree (issue 24 item 6). The indicator weighs
   /// the whole section, and a single point can move while it falls: the filleted groove's
   /// sigma_zz(0, 0) was 13.4 % and 1.6 % off the FEM's at p = 14 and 22 with indicators of
@@ -113,26 +143,17 @@ namespace
     const nlohmann::json &samples = result["samples"];
     if (samples.empty())
       return;
-    const nlohmann::json before = fields_to_json(problem, lower);
-    const std::vector<bool> with_a_value = axisym::samples_with_a_value(problem);
     const double limit = 2.0 * std::sqrt(fixed_degree_indicator_limit);
-    const double floor = energy_stress(problem, phi);
     nlohmann::json list = nlohmann::json::array();
     std::vector<std::string> doubtful;
-    for (std::size_t k = 0; k < samples.size(); ++k)
+    for (const SampleChange &c : sample_changes(problem, lower, phi, result))
       {
-        if (!with_a_value[k])
-          continue;
-        const nlohmann::json &now = samples[k], &then = before[k];
-        double change = 0.0;
-        for (const char *c : {"sigma_rr", "sigma_zz", "sigma_tt", "sigma_rz"})
-          change = std::max(change, std::abs(now.at(c).get<double>() - then.at(c).get<double>()));
-        const double scale = sample_scale(now, floor), relative = change / scale;
-        list.push_back({{"r", now.at("r")}, {"z", now.at("z")}, {"change", change}, {"scale", scale},
-                        {"relative", relative}, {"limit", limit}});
-        if (relative > limit)
+        const nlohmann::json &now = samples[c.index];
+        list.push_back({{"r", now.at("r")}, {"z", now.at("z")}, {"change", c.change}, {"scale", c.scale},
+                        {"relative", c.relative}, {"limit", limit}});
+        if (c.relative > limit)
           doubtful.push_back(fmt::format("({:.6g}, {:.6g}) m by {:.2g} %", now.at("r").get<double>(),
-                                         now.at("z").get<double>(), 100.0 * relative));
+                                         now.at("z").get<double>(), 100.0 * c.relative));
       }
     result["diagnostics"]["check_at_lower_degree"]["samples"] = list;
     if (!doubtful.empty())
@@ -182,27 +203,18 @@ namespace
              {"rate", rate}};
     if (samples.empty())
       return;
-    const nlohmann::json then = fields_to_json(problem, lower);
-    const std::vector<bool> with_a_value = axisym::samples_with_a_value(problem);
-    const double floor = energy_stress(problem, phi);
     nlohmann::json list = nlohmann::json::array();
     std::vector<std::string> doubtful;
-    for (std::size_t k = 0; k < samples.size(); ++k)
+    for (const SampleChange &c : sample_changes(problem, lower, phi, result))
       {
-        if (!with_a_value[k])
-          continue;
-        const nlohmann::json &now = samples[k];
-        double change = 0.0;
-        for (const char *c : {"sigma_rr", "sigma_zz", "sigma_tt", "sigma_rz"})
-          change = std::max(change, std::abs(now.at(c).get<double>() - then[k].at(c).get<double>()));
-        const double scale = sample_scale(now, floor), relative = change / scale;
-        const double estimate = factor * relative;
-        list.push_back({{"r", now.at("r")}, {"z", now.at("z")}, {"change", change}, {"scale", scale},
-                        {"relative", relative}, {"estimate", estimate}, {"limit", limit}});
+        const nlohmann::json &now = samples[c.index];
+        const double estimate = factor * c.relative;
+        list.push_back({{"r", now.at("r")}, {"z", now.at("z")}, {"change", c.change}, {"scale", c.scale},
+                        {"relative", c.relative}, {"estimate", estimate}, {"limit", limit}});
         if (estimate > limit)
           doubtful.push_back(fmt::format("({:.6g}, {:.6g}) m about {:.2g} % (moved {:.2g} %)",
                                          now.at("r").get<double>(), now.at("z").get<double>(),
-                                         100.0 * estimate, 100.0 * relative));
+                                         100.0 * estimate, 100.0 * c.relative));
       }
     check["samples"] = list;
     if (!doubtful.empty())
