@@ -352,6 +352,91 @@ namespace
     add_warning(result, "samples_at_vertices", axisym::samples_at_vertices_warning(at));
   }
 
+  /// Samples on a die's contact zone (issue 24 item 6). There the sample's stresses are the
+  /// stress space's traces, and its normal stress is a worse estimate of the contact pressure
+  /// than the consistent reactions (rfm::consistent_die_pressure; README, 'contact.pressure').
+  /// Measured on die_unilateral.json at the default p = 8, sample (0.2, 0): sigma_rr -0.8784 MPa
+  /// (trace), -0.9152 MPa (consistent), the FEM's L4 -0.9153 MPa. Each such sample gets
+  /// `contact_pressure` (the consistent p [Pa], positive pushing on the body) and is listed in
+  /// diagnostics.contact_samples; it warns (`sample_on_contact_zone`) when its trace and the
+  /// consistent pressure differ by more than the limit of the axis check, over the sample's
+  /// scale. Not where the consistent form does not apply (rfm::consistent_pressure_applies:
+  /// the trace is then the best estimate there is) nor at a sharp edge (infinite there). A
+  /// sample at a zone's end (within 1e-3 of the zone's length; a mirrored body's below z = 0
+  /// at its image; not the die's centre on the axis or a symmetry edge) warns
+  /// (`samples_at_zone_ends`): the stress is not smooth there (measured on die_bilateral.json
+  /// at (0.2, 0.2), where the zone meets the free end face: sigma_rr 1.818, 1.856, 1.872 MPa
+  /// at p = 8, 12, 16, the FEM's 1.893, 1.895, 1.896, 1.896 at L = 2-5).
+  void check_contact_samples(const axisym::Problem &problem, const rfm::OutlineModel &model,
+                             const std::vector<rfm::DieZone> &zones, const rfm::Functionals &phi,
+                             const std::optional<double> tolerance, nlohmann::json &result)
+  {
+    const axisym::Body &body = *problem.body;
+    const double limit = 2.0 * std::sqrt(tolerance.value_or(fixed_degree_indicator_limit));
+    const double floor = energy_stress(problem, phi);
+    const double tol = 1e-9 * body.outline.size();
+    nlohmann::json list = nlohmann::json::array();
+    std::vector<std::string> doubtful, at_ends;
+    for (nlohmann::json &sample : result["samples"])
+      {
+        const double r = sample.at("r").get<double>(), z = sample.at("z").get<double>();
+        const axisym::Point x{r, body.mirrored ? std::abs(z) : z};
+        for (const rfm::DieZone &zone : zones)
+          {
+            const axisym::DieFrame f = axisym::die_frame(body, zone.part);
+            const double s = f.coordinate(x);
+            const double off = (x.r - f.center.r) * f.normal.r + (x.z - f.center.z) * f.normal.z;
+            const double end_band = 1e-3 * (zone.s_hi - zone.s_lo);
+            if (std::abs(off) > tol || s < zone.s_lo - end_band || s > zone.s_hi + end_band)
+              continue;
+            // The zone's ends but the die's centre at its part's end (the axis, a symmetry edge).
+            if ((f.runs_down() && std::abs(s - zone.s_lo) <= end_band) ||
+                (f.runs_up() && std::abs(s - zone.s_hi) <= end_band))
+              at_ends.push_back(fmt::format("({:.6g}, {:.6g}) m on part {}", r, z, zone.part));
+            const double p = rfm::consistent_die_pressure(model, problem, zone, {s},
+                                                          rfm::default_pressure_moments)[0];
+            if (!std::isfinite(p))
+              continue;
+            const double trace = -(sample.at("sigma_rr").get<double>() * f.normal.r * f.normal.r +
+                                   2.0 * sample.at("sigma_rz").get<double>() * f.normal.r * f.normal.z +
+                                   sample.at("sigma_zz").get<double>() * f.normal.z * f.normal.z);
+            const double scale = sample_scale(sample, floor);
+            const double relative = std::abs(trace - p) / scale;
+            sample["contact_pressure"] = p;
+            list.push_back({{"r", r},
+                            {"z", z},
+                            {"part", zone.part},
+                            {"s", s},
+                            {"contact_pressure", p},
+                            {"pressure_trace", trace},
+                            {"scale", scale},
+                            {"relative", relative},
+                            {"limit", limit}});
+            if (relative > limit)
+              doubtful.push_back(fmt::format("at ({:.6g}, {:.6g}) m its trace {:.6g} Pa against {:.6g} Pa, "
+                                             "{:.2g} % of its stress",
+                                             r, z, trace, p, 100.0 * relative));
+            break;
+          }
+      }
+    if (!list.empty())
+      result["diagnostics"]["contact_samples"] = list;
+    if (!doubtful.empty())
+      add_warning(result, "sample_on_contact_zone",
+                  fmt::format("samples on a die's contact zone: their stresses are the stress space's "
+                              "traces, and the normal stress differs from the consistent contact "
+                              "pressure (the more accurate estimate) {} (limit {:.2g} %): their "
+                              "stresses are in doubt; each sample's contact_pressure holds the "
+                              "consistent value",
+                              fmt::join(doubtful, "; "), 100.0 * limit));
+    if (!at_ends.empty())
+      add_warning(result, "samples_at_zone_ends",
+                  fmt::format("samples at the end of a die's contact zone, {}: the stress is not "
+                              "smooth there and its value converges slowly; move the sample off "
+                              "the end",
+                              fmt::join(at_ends, ", ")));
+  }
+
   // The fields at the problem's sample points (any model with evaluate(r, z)).
   template <typename Model>
   nlohmann::json fields_to_json(const axisym::Problem &problem, const Model &model)
@@ -492,8 +577,9 @@ namespace
     if (has_up && has_down)
       c["zone"] = {zone.s_lo, zone.s_hi};
     // The pressure at 101 points of the zone: p the consistent reactions
-    // (rfm::consistent_die_pressure; null at a sharp edge, where it is infinite), p_trace the
-    // trace -sigma_nn.
+    // (rfm::consistent_die_pressure; null at a sharp edge, where it is infinite) where they
+    // apply (rfm::consistent_pressure_applies), the trace otherwise; p_trace the trace
+    // -sigma_nn.
     const int n = 101;
     Eigen::VectorXd r(n), z(n);
     std::vector<double> s(n);
@@ -506,6 +592,7 @@ namespace
     const rfm::FieldValues v = m.evaluate(r, z);
     const std::vector<double> consistent =
       rfm::consistent_die_pressure(m, problem, zone, s, rfm::default_pressure_moments);
+    const bool consistent_applies = rfm::consistent_pressure_applies(f, zone);
     nlohmann::json pressure = nlohmann::json::array();
     for (int k = 0; k < n; ++k)
       {
@@ -514,7 +601,8 @@ namespace
                                 v.sigma(k, rfm::zz) * f.normal.z * f.normal.z);
         pressure.push_back({{"s", s[k]}, {"r", r[k]}, {"z", z[k]},
                             {"p", std::isfinite(consistent[k]) ? nlohmann::json(consistent[k])
-                                                               : nlohmann::json(nullptr)},
+                                  : consistent_applies         ? nlohmann::json(nullptr)
+                                                               : nlohmann::json(trace)},
                             {"p_trace", trace}});
       }
     c["pressure"] = pressure;
@@ -886,6 +974,8 @@ namespace
     result["samples"] = fields_to_json(problem, *model);
     check_axis_samples(problem, phi, target_indicator, result);
     check_vertex_samples(problem, result);
+    if (!zones.empty())
+      check_contact_samples(problem, *model, zones, phi, target_indicator, result);
     if (zones.empty() && sequence && sequence->previous)
       check_tolerance_samples(problem, *sequence->previous, phi, p, *target_indicator, result);
     // A fixed degree is not a failure, but its doubt is said (issue 24 item 6): above 1e-5 the
@@ -1199,6 +1289,8 @@ int main(int argc, char **argv)
       if (problem.die && problem.contact.curve_points > 0)
         result["contact"]["curve"] = force_curve(problem);
       result["samples"] = fields_to_json(problem, model);
+      if (problem.die)
+        check_contact_samples(problem, model, model.zones(), phi, target_indicator, result);
       if (!problem.die && !target_indicator)
         check_fixed_degree(problem, model, phi, p, result);
       if (!problem.die && to_tolerance && to_tolerance->previous)

@@ -844,6 +844,66 @@ namespace
     EXPECT_LT(std::abs(r.at("contact").at("edge_intensity").get<double>()), 1e3); // the root of K
   }
 
+  // Samples on a die's zone (issue 24 item 6): the stress space's trace against the
+  // consistent reactions. The references are the FEM's (fem_solve, Q2 graded meshes), an
+  // independent solver: sigma_rr = -822870 Pa at (0.2, 0.05) for the paper's die by its
+  // search (L = 4, die_paper_outline.json), -0.9153 MPa at (0.2, 0) of the same die on the
+  // hollow-cylinder form by `iterate` (L = 4, die_unilateral.json), and for the bilateral zone
+  // over the whole face -0.8044 MPa at (0.2, 0) (L = 3, 4 and 5 agree to 1e-4 MPa).
+  TEST(RfmSolveCli, SampleOnAContactZoneWarns)
+  {
+    const fs::path dir = scratch("contact_samples");
+    const fs::path in = dir / "problem.json", out = dir / "result.json";
+    nlohmann::json j = axisym::testing::paper_die_outline();
+    j["samples"] = {{0.2, 0.05}, {0.15, 0.1}};
+    std::ofstream(in) << j.dump();
+    Outcome o = run(in.string() + " --output " + out.string());
+    ASSERT_EQ(o.status, 0) << o.err;
+    nlohmann::json r = nlohmann::json::parse(std::ifstream(out));
+    // Measured when written: the trace 831958 Pa, 1.1 % off; the consistent 822955 Pa.
+    const double fem = 822870.0;
+    const nlohmann::json &on = r.at("samples")[0];
+    EXPECT_NEAR(on.at("contact_pressure").get<double>(), fem, 1e-3 * fem);
+    EXPECT_GT(std::abs(-on.at("sigma_rr").get<double>() - fem), 5e-3 * fem);
+    EXPECT_FALSE(r.at("samples")[1].contains("contact_pressure"));
+    ASSERT_EQ(r.at("diagnostics").at("contact_samples").size(), 1u);
+    EXPECT_EQ(r.at("diagnostics").at("status"), "warning");
+    EXPECT_EQ(r.at("diagnostics").at("warnings")[0].at("check"), "sample_on_contact_zone");
+
+    // The bilateral zone over the whole face: the consistent form (a square-root fall at the
+    // zone's end) does not apply, contact.pressure's p is the trace, and the sample where the
+    // zone meets the free end face warns.
+    j["contact"] = {{"method", "fixed"}};
+    j["samples"] = {{0.2, 0.0}, {0.2, 0.2}};
+    std::ofstream(in) << j.dump();
+    o = run(in.string() + " --output " + out.string());
+    ASSERT_EQ(o.status, 0) << o.err;
+    r = nlohmann::json::parse(std::ifstream(out));
+    const nlohmann::json &p0 = r.at("contact").at("pressure")[0];
+    EXPECT_EQ(p0.at("p").get<double>(), p0.at("p_trace").get<double>());
+    EXPECT_NEAR(p0.at("p").get<double>(), 0.8044e6, 1e-2 * 0.8044e6);
+    EXPECT_FALSE(r.at("diagnostics").contains("contact_samples"));
+    ASSERT_EQ(r.at("diagnostics").at("warnings").size(), 1u);
+    EXPECT_EQ(r.at("diagnostics").at("warnings")[0].at("check"), "samples_at_zone_ends");
+    EXPECT_NE(o.err.find("(0.2, 0.2)"), std::string::npos) << o.err;
+
+    // The hollow-cylinder form (its own branch of rfm_solve) gets the same check.
+    const nlohmann::json legacy = {
+      {"geometry", {{"inner_radius", 0.1}, {"outer_radius", 0.2}, {"length", 0.4}}},
+      {"material", {{"youngs_modulus", 2.1e11}, {"poisson_ratio", 0.3}}},
+      {"die", {{"indentation", 1.0e-6}, {"profile", "parabolic"}}},
+      {"contact", {{"method", "iterate"}}},
+      {"samples", {{0.2, 0.0}}}};
+    std::ofstream(in) << legacy.dump();
+    o = run(in.string() + " --output " + out.string());
+    ASSERT_EQ(o.status, 0) << o.err;
+    r = nlohmann::json::parse(std::ifstream(out));
+    const double fem_centre = 0.9153e6;
+    EXPECT_NEAR(r.at("samples")[0].at("contact_pressure").get<double>(), fem_centre, 2e-3 * fem_centre);
+    EXPECT_GT(std::abs(-r.at("samples")[0].at("sigma_rr").get<double>() - fem_centre), 2e-2 * fem_centre);
+    EXPECT_EQ(r.at("diagnostics").at("warnings")[0].at("check"), "sample_on_contact_zone");
+  }
+
   // The paper's iterations on the outline path (outline_contact.h): the same zone, the
   // record of every solve with its conditions, the bracket of c where they hold; not for a
   // zone with two free ends. (Its own test: the sanitizers' run stays short.)

@@ -175,7 +175,18 @@ namespace rfm
   /// so the pressure carries P exactly, and bumps of the zone next to it beyond) and
   /// G_kj = int_zone w X_j phi_k r ds. Precondition: model.ok() solved on `zone`,
   /// n_moments >= 1.
+  /// n_moments >= 1. NaN at every s where the form does not apply to the zone
+  /// (consistent_pressure_applies).
   std::vector<double> consistent_die_pressure(const OutlineModel &model, const axisym::Problem &problem,
                                               const DieZone &zone, const std::vector<double> &s,
                                               int n_moments);
+
+  /// Whether consistent_die_pressure's form applies to the zone: each of its ends is a free
+  /// end (DieFrame::free_low_end, free_high_end: the pressure falls as the square root of the
+  /// distance there, which the form builds in) or the die's centre at its part's end (on the
+  /// axis or a symmetry edge). A zone that runs to its part's end, such as a bilateral zone
+  /// over the whole face, has a pressure that does not fall there: measured on
+  /// die_bilateral.json (c = a) at p = 8, the form gave 0.735 MPa at the centre and 0 at the
+  /// zone's end, the trace 0.807 and 1.818 MPa in tension, the FEM's L5 0.804 and 1.896 MPa.
+  bool consistent_pressure_applies(const axisym::DieFrame &frame, const DieZone &zone);
 } // namespace rfm

@@ -14,6 +14,12 @@
 
 namespace rfm
 {
+  bool consistent_pressure_applies(const axisym::DieFrame &frame, const DieZone &zone)
+  {
+    return (!frame.runs_down() || frame.free_low_end(zone.s_lo)) &&
+           (!frame.runs_up() || frame.free_high_end(zone.s_hi));
+  }
+
   std::vector<double> consistent_die_pressure(const OutlineModel &model, const axisym::Problem &problem,
                                               const DieZone &zone, const std::vector<double> &s,
                                               const int n_moments)
@@ -21,6 +27,8 @@ namespace rfm
     if (n_moments < 1)
       throw std::invalid_argument("consistent_die_pressure: n_moments must be >= 1");
     const axisym::DieFrame frame = axisym::die_frame(*problem.body, zone.part);
+    if (!consistent_pressure_applies(frame, zone))
+      return std::vector<double>(s.size(), std::numeric_limits<double>::quiet_NaN());
     const bool sharp = problem.body->conditions.at(zone.part).die.profile.sharp_edge();
     const bool two_ends = frame.runs_up() && frame.runs_down();
     // The zone's coordinate x(s): one free end x = |s| / h, two x = (s - mid) / h.
