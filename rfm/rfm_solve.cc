@@ -653,17 +653,31 @@ namespace
                    problem.rfm.degree, zones.size(), fmt::join(problem.body->die_parts(), ", "),
                    search_zones ? "every free end where its edge intensity K vanishes"
                                 : "bilateral zones as given");
-        several = search_zones ? rfm::solve_outline_dies(problem, problem.rfm)
-                               : rfm::solve_outline_dies_on_zones(problem, problem.rfm, zones);
-        for (const rfm::OutlineDiesStep &step : several->history)
+        // Each trial as it is solved (the searches take minutes on fine zones).
+        auto clock = std::chrono::steady_clock::now();
+        auto print_step = [&clock](const rfm::OutlineDiesStep &step) {
+          const auto now = std::chrono::steady_clock::now();
+          std::vector<std::string> z;
+          for (std::size_t d = 0; d < step.zones.size(); ++d)
+            z.push_back(fmt::format("{} [{:.6g}, {:.6g}] m P = {:.6g} N delta = {:.6g} m",
+                                    step.zones[d].part, step.zones[d].s_lo, step.zones[d].s_hi,
+                                    step.forces[d], step.zones[d].indentation));
+          fmt::print(stderr, "rfm_solve:   {}; K = {:.5g} Pa m^1/2 ({}, {:.1f} s)\n", fmt::join(z, "; "),
+                     fmt::join(step.edge_intensities, ", "), step.phase,
+                     std::chrono::duration<double>(now - clock).count());
+          clock = now;
+        };
+        if (search_zones)
           {
-            std::vector<std::string> z;
-            for (std::size_t d = 0; d < step.zones.size(); ++d)
-              z.push_back(fmt::format("{} [{:.6g}, {:.6g}] m P = {:.6g} N delta = {:.6g} m",
-                                      step.zones[d].part, step.zones[d].s_lo, step.zones[d].s_hi,
-                                      step.forces[d], step.zones[d].indentation));
-            fmt::print(stderr, "rfm_solve:   {}; K = {:.5g} Pa m^1/2 ({})\n", fmt::join(z, "; "),
-                       fmt::join(step.edge_intensities, ", "), step.phase);
+            rfm::OutlineContactOptions options;
+            options.on_dies_step = print_step;
+            several = rfm::solve_outline_dies(problem, problem.rfm, options);
+          }
+        else
+          {
+            several = rfm::solve_outline_dies_on_zones(problem, problem.rfm, zones);
+            for (const rfm::OutlineDiesStep &step : several->history)
+              print_step(step);
           }
         if (!several->success || !several->model)
           {
@@ -681,14 +695,18 @@ namespace
         fmt::print(stderr, "rfm_solve: outline section, degree p = {}, die on {}: the zone's end "
                            "where the edge intensity K vanishes\n",
                    problem.rfm.degree, zones[0].part);
-        search = rfm::solve_outline_contact(problem, problem.rfm);
-        for (const rfm::OutlineContactStep &step : search->history)
+        // Each trial as it is solved: a ring die's search takes minutes (about 100 s a solve).
+        rfm::OutlineContactOptions options;
+        options.on_step = [clock = std::chrono::steady_clock::now()](const rfm::OutlineContactStep &step) mutable {
+          const auto now = std::chrono::steady_clock::now();
           fmt::print(stderr,
                      "rfm_solve:   zone [{:.6g}, {:.6g}] m: K = {:.5g} Pa m^1/2, P = {:.6g} N, "
-                     "delta = {:.6g} m ({})\n",
-                     step.zone[0], step.zone[1],
-                     fmt::join(step.edge_intensities, ", "), step.force, step.indentation,
-                     step.phase);
+                     "delta = {:.6g} m ({}, {:.1f} s)\n",
+                     step.zone[0], step.zone[1], fmt::join(step.edge_intensities, ", "), step.force,
+                     step.indentation, step.phase, std::chrono::duration<double>(now - clock).count());
+          clock = now;
+        };
+        search = rfm::solve_outline_contact(problem, problem.rfm, options);
         if (!search->success || !search->model)
           {
             nlohmann::json failed = {{"solver", "rfm"}, {"problem", problem.source},

@@ -37,6 +37,7 @@ namespace rfm
 
     OutlineContactResult result;
     ZoneSolver solver(problem, discretization, part, result);
+    solver.on_step(options.on_step);
     try
       {
         if (discretization.edge_modes == 0)

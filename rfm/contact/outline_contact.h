@@ -50,6 +50,9 @@
 
 namespace rfm
 {
+  struct OutlineContactStep;
+  struct OutlineDiesStep;
+
   struct OutlineContactOptions
   {
     /// Relative to c (the zone's half-width): the search stops when the zone's ends move less.
@@ -61,6 +64,11 @@ namespace rfm
     /// Search passes with the local boxes rebuilt about the zone found, until it is within
     /// 10 % of the zone the boxes were built from (at most 3; 1: the first estimate's boxes).
     int local_passes = 3;
+    /// Called after every trial solve of one die's search (solve_outline_contact) or of
+    /// several dies' (solve_outline_dies), in order: rfm_solve prints each as it comes (a
+    /// ring die's search at the defaults takes minutes, about 100 s a solve).
+    std::function<void(const OutlineContactStep &)> on_step;
+    std::function<void(const OutlineDiesStep &)> on_dies_step;
   };
 
   /// One solve at a trial zone.

@@ -15,13 +15,20 @@ namespace rfm
 
   // The search: K changes sign across the bracket, the Illinois steps close it, and the end
   // found is where K vanishes (|K| small against the bracket's), near the finest FEM's c =
-  // 0.1038561 m (Q2, L = 5; measured 2.8e-4 from it at p = 8).
+  // 0.1038561 m (Q2, L = 5; measured 2.8e-4 from it at p = 8). Every trial is also handed
+  // to options.on_step as it is solved, in order (rfm_solve's progress lines).
   TEST(OutlineContact, FindsTheRootOfTheEdgeIntensity)
   {
     const axisym::Problem p = axisym::parse_problem(paper_die_outline());
-    const OutlineContactResult r = solve_outline_contact(p, p.rfm);
+    OutlineContactOptions options;
+    std::vector<std::array<double, 2>> seen;
+    options.on_step = [&seen](const OutlineContactStep &s) { seen.push_back(s.zone); };
+    const OutlineContactResult r = solve_outline_contact(p, p.rfm, options);
     ASSERT_TRUE(r.success) << r.message;
     ASSERT_GE(r.history.size(), 3u);
+    ASSERT_EQ(seen.size(), r.history.size());
+    for (std::size_t i = 0; i < seen.size(); ++i)
+      EXPECT_EQ(seen[i], r.history[i].zone) << i;
     double k_max = 0;
     for (const OutlineContactStep &s : r.history)
       k_max = std::max(k_max, std::abs(s.edge_intensity));
@@ -198,6 +205,23 @@ namespace rfm
   // from them, the functionals, P and K (measured: stresses 5.9e-13 of their largest, u
   // 2.6e-13, Phi_R 3.8e-15, P 1.5e-11, K 5.4e-15 relative). And the
   // refusal of a model with another zone.
+  // The consistent form's square-root fall belongs at free ends: not where a zone runs to its
+  // part's end (a bilateral zone over the whole face), whatever the die's centre.
+  TEST(ConsistentDiePressure, AppliesWhereEveryEndIsFreeOrTheCentre)
+  {
+    const axisym::Problem one = axisym::parse_problem(paper_die_outline());
+    const axisym::DieFrame f = axisym::die_frame(*one.body, "outer"); // the centre at z = 0
+    EXPECT_TRUE(consistent_pressure_applies(f, {"outer", 0.0, 0.1, 0.0}));
+    EXPECT_FALSE(consistent_pressure_applies(f, {"outer", 0.0, 0.2, 0.0}));
+    auto two = paper_die_outline();
+    two["boundary"]["outer"]["die"]["center"] = {0.2, 0.1};
+    const axisym::Problem mid = axisym::parse_problem(two);
+    const axisym::DieFrame g = axisym::die_frame(*mid.body, "outer");
+    EXPECT_TRUE(consistent_pressure_applies(g, {"outer", -0.05, 0.05, 0.0}));
+    EXPECT_FALSE(consistent_pressure_applies(g, {"outer", -0.1, 0.05, 0.0}));
+    EXPECT_FALSE(consistent_pressure_applies(g, {"outer", -0.05, 0.1, 0.0}));
+  }
+
   TEST(OutlineModelIndentations, CombineAsTheSolveAtTheCombinedDelta)
   {
     auto j = axisym::testing::punched_cylinder();
@@ -438,8 +462,14 @@ namespace rfm
 #endif
     keep_freed_matrices_in_heap();
     const axisym::Problem p = axisym::parse_problem(axisym::testing::cylinder_between_two_dies());
-    const OutlineDiesResult r = solve_outline_dies(p, p.rfm);
+    OutlineContactOptions options;
+    std::vector<std::string> phases;
+    options.on_dies_step = [&phases](const OutlineDiesStep &s) { phases.push_back(s.phase); };
+    const OutlineDiesResult r = solve_outline_dies(p, p.rfm, options);
     ASSERT_TRUE(r.success) << r.message;
+    ASSERT_EQ(phases.size(), r.history.size());
+    for (std::size_t i = 0; i < phases.size(); ++i)
+      EXPECT_EQ(phases[i], r.history[i].phase) << i;
     ASSERT_EQ(r.zones.size(), 2u);
     EXPECT_EQ(r.zones[0].part, "bottom");
     EXPECT_EQ(r.zones[0].s_lo, 0.0);

@@ -50,6 +50,7 @@ namespace rfm
     const std::vector<DieInfo> dies = die_infos(problem);
     const std::size_t n = dies.size();
     DiesSolver solver(problem, discretization, dies, result);
+    solver.on_step(options.on_dies_step);
     // The unknowns: every free end of every zone but a sharp punch's, in the model's order of
     // zone ends (zone order, low end first), and which die each belongs to.
     struct End

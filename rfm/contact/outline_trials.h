@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -76,6 +77,8 @@ namespace rfm::outline_trials
                                  options_);
       }
       bool has_local_boxes() const { return local_ && !local_->empty(); }
+      /// Called with every step as it is recorded.
+      void on_step(std::function<void(const OutlineDiesStep &)> f) { on_step_ = std::move(f); }
 
       OutlineDiesStep solve(const std::vector<std::array<double, 2>> &z, const std::string &phase)
       {
@@ -168,6 +171,8 @@ namespace rfm::outline_trials
         step.zones = zones(z, delta);
         result_.zones = step.zones;
         result_.history.push_back(step);
+        if (on_step_)
+          on_step_(step);
         return step;
       }
 
@@ -220,6 +225,7 @@ namespace rfm::outline_trials
       std::vector<DieInfo> dies_;
       OutlineDiesResult &result_;
       std::optional<LocalBasis> local_;
+      std::function<void(const OutlineDiesStep &)> on_step_;
     };
 
     /// The bilateral solves of one problem's die (DiesSolver with one die): a zone [s_lo,
@@ -236,6 +242,8 @@ namespace rfm::outline_trials
       /// The local boxes every later solve uses (those of `estimate`).
       void fix_local_basis(const DieZone &estimate) { dies_.fix_local_basis({{estimate.s_lo, estimate.s_hi}}); }
       bool has_local_boxes() const { return dies_.has_local_boxes(); }
+      /// Called with every step as it is recorded.
+      void on_step(std::function<void(const OutlineContactStep &)> f) { on_step_ = std::move(f); }
 
       OutlineContactStep solve(const double s_lo, const double s_hi, const std::string &phase)
       {
@@ -258,6 +266,8 @@ namespace rfm::outline_trials
         result_.model = std::move(solves_.model);
         result_.zone = d.zones[0];
         result_.history.push_back(step);
+        if (on_step_)
+          on_step_(step);
         return step;
       }
 
@@ -283,6 +293,7 @@ namespace rfm::outline_trials
       OutlineContactResult &result_;
       OutlineDiesResult solves_;
       DiesSolver dies_;
+      std::function<void(const OutlineContactStep &)> on_step_;
     };
 
     /// The distance from the centre where the die's surface reaches the undeformed part
