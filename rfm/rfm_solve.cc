@@ -33,6 +33,7 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <unistd.h>
 
 namespace
@@ -67,12 +68,13 @@ namespace
     fmt::print(stderr, "rfm_solve: warning: {}\n", why);
   }
 
-  std::string fixed_degree_warning(const double indicator, const int p)
+  /// `die`: a die problem, which takes no tolerance.
+  std::string fixed_degree_warning(const double indicator, const int p, const bool die = false)
   {
     return fmt::format("the indicator |Phi_L - Phi_C| / |Phi_R| is {:.3g} at the fixed degree p = {}, "
                        "above {:g} (about 0.3 % in stress): the answer is in doubt; raise "
-                       "rfm.degree, or give rfm.tolerance",
-                       indicator, p, fixed_degree_indicator_limit);
+                       "rfm.degree{}",
+                       indicator, p, fixed_degree_indicator_limit, die ? "" : ", or give rfm.tolerance");
   }
 
   /// The stress that stores |Phi_R| uniaxially over the section, sqrt(2 E |Phi_R| /
@@ -96,13 +98,46 @@ namespace
   template <typename Model>
   nlohmann::json fields_to_json(const axisym::Problem &problem, const Model &model);
 
+  /// Where a sample lies on a die's zone: the zone, its part's frame, the distance s along the
+  /// part, and whether it is at one of the zone's ends (within 1e-3 of the zone's length; not
+  /// the die's centre on the axis or a symmetry edge). A mirrored body's samples below z = 0
+  /// are taken at their image.
+  struct OnZone
+  {
+    const rfm::DieZone *zone;
+    axisym::DieFrame frame;
+    double s;
+    bool at_end;
+  };
+  std::optional<OnZone> on_zone(const axisym::Problem &problem, const std::vector<rfm::DieZone> &zones,
+                                const double r, const double z)
+  {
+    const axisym::Body &body = *problem.body;
+    const double tol = 1e-9 * body.outline.size();
+    const axisym::Point x{r, body.mirrored ? std::abs(z) : z};
+    for (const rfm::DieZone &zone : zones)
+      {
+        const axisym::DieFrame f = axisym::die_frame(body, zone.part);
+        const double s = f.coordinate(x);
+        const double off = (x.r - f.center.r) * f.normal.r + (x.z - f.center.z) * f.normal.z;
+        const double band = 1e-3 * (zone.s_hi - zone.s_lo);
+        if (std::abs(off) > tol || s < zone.s_lo - band || s > zone.s_hi + band)
+          continue;
+        const bool at_end = (f.runs_down() && std::abs(s - zone.s_lo) <= band) ||
+                            (f.runs_up() && std::abs(s - zone.s_hi) <= band);
+        return OnZone{&zone, f, s, at_end};
+      }
+    return std::nullopt;
+  }
+
   /// One sample's change since p - 2: its largest stress component's, over its scale.
   struct SampleChange
   {
     std::size_t index; ///< in result["samples"]
     double change, scale, relative;
   };
-  /// The changes of the samples with a value (samples at vertices left out) from the model
+  /// The changes of the samples with a value (samples at vertices and at a die zone's ends left
+  /// out) from the model
   /// `lower` to the samples in `result`.
   std::vector<SampleChange> sample_changes(const axisym::Problem &problem, const rfm::OutlineModel &lower,
                                            const rfm::Functionals &phi, const nlohmann::json &result)
@@ -114,9 +149,12 @@ namespace
     std::vector<SampleChange> out;
     for (std::size_t k = 0; k < samples.size(); ++k)
       {
+        const nlohmann::json &now = samples[k], &then = before[k];
         if (!with_a_value[k])
           continue;
-        const nlohmann::json &now = samples[k], &then = before[k];
+        if (const auto on = on_zone(problem, lower.zones(), now.at("r").get<double>(), now.at("z").get<double>());
+            on && on->at_end)
+          continue;
         double change = 0.0;
         for (const char *c : {"sigma_rr", "sigma_zz", "sigma_tt", "sigma_rz"})
           change = std::max(change, std::abs(now.at(c).get<double>() - then.at(c).get<double>()));
@@ -246,7 +284,7 @@ namespace
                           const std::vector<rfm::DieZone> &zones = {})
   {
     if (phi.indicator() > fixed_degree_indicator_limit)
-      add_warning(result, "indicator", fixed_degree_warning(phi.indicator(), p));
+      add_warning(result, "indicator", fixed_degree_warning(phi.indicator(), p, !zones.empty()));
     if (!(phi.indicator() > fixed_degree_check_floor) || p < 4)
       return;
     rfm::DiscretizationOptions o = problem.rfm;
@@ -372,53 +410,44 @@ namespace
                              const std::vector<rfm::DieZone> &zones, const rfm::Functionals &phi,
                              const std::optional<double> tolerance, nlohmann::json &result)
   {
-    const axisym::Body &body = *problem.body;
     const double limit = 2.0 * std::sqrt(tolerance.value_or(fixed_degree_indicator_limit));
     const double floor = energy_stress(problem, phi);
-    const double tol = 1e-9 * body.outline.size();
     nlohmann::json list = nlohmann::json::array();
     std::vector<std::string> doubtful, at_ends;
     for (nlohmann::json &sample : result["samples"])
       {
         const double r = sample.at("r").get<double>(), z = sample.at("z").get<double>();
-        const axisym::Point x{r, body.mirrored ? std::abs(z) : z};
-        for (const rfm::DieZone &zone : zones)
-          {
-            const axisym::DieFrame f = axisym::die_frame(body, zone.part);
-            const double s = f.coordinate(x);
-            const double off = (x.r - f.center.r) * f.normal.r + (x.z - f.center.z) * f.normal.z;
-            const double end_band = 1e-3 * (zone.s_hi - zone.s_lo);
-            if (std::abs(off) > tol || s < zone.s_lo - end_band || s > zone.s_hi + end_band)
-              continue;
-            // The zone's ends but the die's centre at its part's end (the axis, a symmetry edge).
-            if ((f.runs_down() && std::abs(s - zone.s_lo) <= end_band) ||
-                (f.runs_up() && std::abs(s - zone.s_hi) <= end_band))
-              at_ends.push_back(fmt::format("({:.6g}, {:.6g}) m on part {}", r, z, zone.part));
-            const double p = rfm::consistent_die_pressure(model, problem, zone, {s},
-                                                          rfm::default_pressure_moments)[0];
-            if (!std::isfinite(p))
-              continue;
-            const double trace = -(sample.at("sigma_rr").get<double>() * f.normal.r * f.normal.r +
-                                   2.0 * sample.at("sigma_rz").get<double>() * f.normal.r * f.normal.z +
-                                   sample.at("sigma_zz").get<double>() * f.normal.z * f.normal.z);
-            const double scale = sample_scale(sample, floor);
-            const double relative = std::abs(trace - p) / scale;
-            sample["contact_pressure"] = p;
-            list.push_back({{"r", r},
-                            {"z", z},
-                            {"part", zone.part},
-                            {"s", s},
-                            {"contact_pressure", p},
-                            {"pressure_trace", trace},
-                            {"scale", scale},
-                            {"relative", relative},
-                            {"limit", limit}});
-            if (relative > limit)
-              doubtful.push_back(fmt::format("at ({:.6g}, {:.6g}) m its trace {:.6g} Pa against {:.6g} Pa, "
-                                             "{:.2g} % of its stress",
-                                             r, z, trace, p, 100.0 * relative));
-            break;
-          }
+        const std::optional<OnZone> on = on_zone(problem, zones, r, z);
+        if (!on)
+          continue;
+        const rfm::DieZone &zone = *on->zone;
+        const axisym::DieFrame &f = on->frame;
+        const double s = on->s;
+        if (on->at_end)
+          at_ends.push_back(fmt::format("({:.6g}, {:.6g}) m on part {}", r, z, zone.part));
+        const double p = rfm::consistent_die_pressure(model, problem, zone, {s},
+                                                      rfm::default_pressure_moments)[0];
+        if (!std::isfinite(p))
+          continue;
+        const double trace = -(sample.at("sigma_rr").get<double>() * f.normal.r * f.normal.r +
+                               2.0 * sample.at("sigma_rz").get<double>() * f.normal.r * f.normal.z +
+                               sample.at("sigma_zz").get<double>() * f.normal.z * f.normal.z);
+        const double scale = sample_scale(sample, floor);
+        const double relative = std::abs(trace - p) / scale;
+        sample["contact_pressure"] = p;
+        list.push_back({{"r", r},
+                        {"z", z},
+                        {"part", zone.part},
+                        {"s", s},
+                        {"contact_pressure", p},
+                        {"pressure_trace", trace},
+                        {"scale", scale},
+                        {"relative", relative},
+                        {"limit", limit}});
+        if (relative > limit)
+          doubtful.push_back(fmt::format("at ({:.6g}, {:.6g}) m its trace {:.6g} Pa against {:.6g} Pa, "
+                                         "{:.2g} % of its stress",
+                                         r, z, trace, p, 100.0 * relative));
       }
     if (!list.empty())
       result["diagnostics"]["contact_samples"] = list;
