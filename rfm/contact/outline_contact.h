@@ -182,7 +182,6 @@ namespace rfm
   /// of OutlineModel::die_moments for test fields phi_k (the .cc file: die_force's for k = 0,
   /// so the pressure carries P exactly, and bumps of the zone next to it beyond) and
   /// G_kj = int_zone w X_j phi_k r ds. Precondition: model.ok() solved on `zone`,
-  /// n_moments >= 1.
   /// n_moments >= 1. NaN at every s where the form does not apply to the zone
   /// (consistent_pressure_applies).
   std::vector<double> consistent_die_pressure(const OutlineModel &model, const axisym::Problem &problem,

@@ -200,11 +200,6 @@ namespace rfm
       }
   }
 
-  // combine_indentations: the models at delta = 0 and 1 um on Hertz's zone, combined with
-  // t = 2.5, against the model solved at 2.5 um: fields at points inside the boxes and far
-  // from them, the functionals, P and K (measured: stresses 5.9e-13 of their largest, u
-  // 2.6e-13, Phi_R 3.8e-15, P 1.5e-11, K 5.4e-15 relative). And the
-  // refusal of a model with another zone.
   // The consistent form's square-root fall belongs at free ends: not where a zone runs to its
   // part's end (a bilateral zone over the whole face), whatever the die's centre.
   TEST(ConsistentDiePressure, AppliesWhereEveryEndIsFreeOrTheCentre)
@@ -222,6 +217,11 @@ namespace rfm
     EXPECT_FALSE(consistent_pressure_applies(g, {"outer", -0.05, 0.1, 0.0}));
   }
 
+  // combine_indentations: the models at delta = 0 and 1 um on Hertz's zone, combined with
+  // t = 2.5, against the model solved at 2.5 um: fields at points inside the boxes and far
+  // from them, the functionals, P and K (measured: stresses 5.9e-13 of their largest, u
+  // 2.6e-13, Phi_R 3.8e-15, P 1.5e-11, K 5.4e-15 relative). And the
+  // refusal of a model with another zone.
   TEST(OutlineModelIndentations, CombineAsTheSolveAtTheCombinedDelta)
   {
     auto j = axisym::testing::punched_cylinder();
