@@ -68,6 +68,13 @@ namespace
     fmt::print(stderr, "rfm_solve: warning: {}\n", why);
   }
 
+  /// The limit of every sample check, over the sample's scale: 2 sqrt(t), t the tolerance
+  /// (which promises about sqrt(t) in stress) or fixed_degree_indicator_limit at a fixed degree.
+  double sample_limit(const std::optional<double> tolerance)
+  {
+    return 2.0 * std::sqrt(tolerance.value_or(fixed_degree_indicator_limit));
+  }
+
   /// `die`: a die problem, which takes no tolerance.
   std::string fixed_degree_warning(const double indicator, const int p, const bool die = false)
   {
@@ -181,7 +188,7 @@ namespace
     const nlohmann::json &samples = result["samples"];
     if (samples.empty())
       return;
-    const double limit = 2.0 * std::sqrt(fixed_degree_indicator_limit);
+    const double limit = sample_limit(std::nullopt);
     nlohmann::json list = nlohmann::json::array();
     std::vector<std::string> doubtful;
     for (const SampleChange &c : sample_changes(problem, lower, phi, result))
@@ -233,7 +240,7 @@ namespace
     const auto d_lower = lower.n_dropped_directions();
     const double rate = before > 0.0 ? std::sqrt(phi.indicator() / before) : 1.0;
     const double factor = rate < 1.0 ? rate / (1.0 - rate) : 1.0;
-    const double limit = 2.0 * std::sqrt(tolerance);
+    const double limit = sample_limit(tolerance);
     nlohmann::json &check = result["diagnostics"]["check_at_lower_degree"];
     check = {{"degree", p - 2},
              {"indicator", before},
@@ -342,7 +349,7 @@ namespace
   void check_axis_samples(const axisym::Problem &problem, const rfm::Functionals &phi,
                           const std::optional<double> tolerance, nlohmann::json &result)
   {
-    const double limit = 2.0 * std::sqrt(tolerance.value_or(fixed_degree_indicator_limit));
+    const double limit = sample_limit(tolerance);
     const axisym::Outline &outline = problem.body->outline;
     const double floor = energy_stress(problem, phi);
     nlohmann::json list = nlohmann::json::array();
@@ -410,23 +417,43 @@ namespace
                              const std::vector<rfm::DieZone> &zones, const rfm::Functionals &phi,
                              const std::optional<double> tolerance, nlohmann::json &result)
   {
-    const double limit = 2.0 * std::sqrt(tolerance.value_or(fixed_degree_indicator_limit));
+    const double limit = sample_limit(tolerance);
     const double floor = energy_stress(problem, phi);
+    nlohmann::json &samples = result["samples"];
+    // Where each sample lies, and the consistent pressure there: one call per zone (each
+    // takes the zone's moments from the model).
+    std::vector<std::optional<OnZone>> where;
+    for (const nlohmann::json &sample : samples)
+      where.push_back(on_zone(problem, zones, sample.at("r").get<double>(), sample.at("z").get<double>()));
+    std::vector<double> pressure(where.size(), std::numeric_limits<double>::quiet_NaN());
+    for (const rfm::DieZone &zone : zones)
+      {
+        std::vector<std::size_t> at;
+        std::vector<double> s;
+        for (std::size_t k = 0; k < where.size(); ++k)
+          if (where[k] && where[k]->zone == &zone)
+            at.push_back(k), s.push_back(where[k]->s);
+        if (at.empty())
+          continue;
+        const std::vector<double> p = rfm::consistent_die_pressure(model, problem, zone, s,
+                                                                   rfm::default_pressure_moments);
+        for (std::size_t i = 0; i < at.size(); ++i)
+          pressure[at[i]] = p[i];
+      }
     nlohmann::json list = nlohmann::json::array();
     std::vector<std::string> doubtful, at_ends;
-    for (nlohmann::json &sample : result["samples"])
+    for (std::size_t k = 0; k < where.size(); ++k)
       {
-        const double r = sample.at("r").get<double>(), z = sample.at("z").get<double>();
-        const std::optional<OnZone> on = on_zone(problem, zones, r, z);
-        if (!on)
+        if (!where[k])
           continue;
-        const rfm::DieZone &zone = *on->zone;
-        const axisym::DieFrame &f = on->frame;
-        const double s = on->s;
-        if (on->at_end)
+        nlohmann::json &sample = samples[k];
+        const double r = sample.at("r").get<double>(), z = sample.at("z").get<double>();
+        const rfm::DieZone &zone = *where[k]->zone;
+        const axisym::DieFrame &f = where[k]->frame;
+        const double s = where[k]->s;
+        if (where[k]->at_end)
           at_ends.push_back(fmt::format("({:.6g}, {:.6g}) m on part {}", r, z, zone.part));
-        const double p = rfm::consistent_die_pressure(model, problem, zone, {s},
-                                                      rfm::default_pressure_moments)[0];
+        const double p = pressure[k];
         if (!std::isfinite(p))
           continue;
         const double trace = -(sample.at("sigma_rr").get<double>() * f.normal.r * f.normal.r +
