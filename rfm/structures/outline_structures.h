@@ -25,7 +25,10 @@
 // 3. Structures. The S edges are of two kinds. A lone straight edge along z (normal +-e_r; a
 //    chain of one) prescribes sigma_rr and sigma_rz only, one along r (normal +-e_z) sigma_zz
 //    and sigma_rz: the other normal stress is free there, as in the structures of the paper's
-//    rectangle. Every other S edge (arcs, inclined lines, the edges of a smooth chain of
+//    rectangle. So do the edges of a straight chain, a line along r or z split into parts
+//    with different tractions (a pressure on part of a bore): the line is one edge for the
+//    structures, its chain's omega that of the segment from the first start to the last end
+//    (not the conjunction below). Every other S edge (arcs, inclined lines, the edges of a smooth chain of
 //    several) prescribes the whole traction, and its tangential normal stress is left free by
 //    boundary columns B_e (the set G). With omega_T = prod over the smooth chains C of S edges
 //    of omega_C, omega_rr (omega_zz) the same product without the lone edges along r (along
@@ -130,6 +133,10 @@ namespace rfm
     /// `even_in_r`: the even forms of the header's axis parity (lines along r or z only).
     EdgeOmega(const axisym::Outline &outline, int edge, bool one_sided = false,
               bool even_in_r = false);
+    /// The same for a segment of the outline that is not one of its edges (the line on
+    /// which a straight chain of edges lies, from its first start to its last end).
+    EdgeOmega(const axisym::Outline &outline, const axisym::OutlineEdge &edge, bool one_sided,
+              bool even_in_r);
 
     RValue operator()(double r, double z) const;
     /// The carrier function f (line or circle), normalized, positive on the body's side.
@@ -316,6 +323,9 @@ namespace rfm
     /// Per chain: the kind of its edge if it is a lone edge along r or z, else general (a
     /// lone edge's chain omega does not enter the omega of the component it leaves free).
     std::vector<StressEdge> chain_kind_;
+    /// Per chain: the index into line_chain_omegas_ of a straight chain's omega, or -1.
+    std::vector<int> chain_line_;
+    std::vector<EdgeOmega> line_chain_omegas_;
     std::vector<int> boundary_slot_;      ///< per S edge: its block of boundary columns, or -1
     /// Per outline edge: the even ends of an arc with boundary columns (bit 0 its start, bit 1
     /// its end), and the largest angle from the even end over the section (with one even end
