@@ -2054,9 +2054,9 @@ namespace rfm
             if (!(h[k] > 0.0))
               continue; // the vertex itself: no direction
             out.sigma.row(i) += chi[k] * (s.row(k) - s0.row(k));
-            // The hoop stress of the field's own displacement (Hooke's, as the modes have it):
-            // with nu (S_rr + S_zz) alone the hoop strain u_r / r of its rho ln rho term was
-            // left to the polynomial P_tt.
+            // The wedge field's hoop stress with its own displacement is Hooke's (as the modes'
+            // is): with nu (S_rr + S_zz) alone the hoop strain u_r / r of its rho ln rho term
+            // was left to the polynomial P_tt.
             out.sigma(i, tt) += material_.youngs_modulus * u(k, 0) / rin[k];
             out.u.row(i) += u.row(k);
             out.strain(i, rr) += du[0](k, 0);

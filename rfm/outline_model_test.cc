@@ -946,12 +946,13 @@ namespace rfm
   }
 
   // Near a traction jump the hoop stress obeys Hooke's law, sigma_tt = nu (sigma_rr + sigma_zz)
-  // + E u_r / r, as the exact field does: the particular stress's hoop component includes
-  // that of the field's own displacement (its rho ln rho term's hoop strain). With
-  // nu (S_rr + S_zz) alone the polynomial P_tt had to carry E u_r / r: on the pressure band at
-  // p = 12, 5 mm from the jump, the residual reached 1.5e-2 of the pressure (5.2e-3 with the
-  // term); 1 cm from it the hoop stress was up to 1.1e-2 and 5.9e-3 of the pressure off the
-  // FEM's (Q2, L = 4) at p = 16 and 24, against 4.4e-4 at p = 24 with the term.
+  // + E u_r / r, as the exact field does: the wedge field's hoop component includes that of
+  // its own displacement (its rho ln rho term's hoop strain). With nu (S_rr + S_zz) alone the
+  // polynomial P_tt had to carry E u_r / r: on the pressure band at p = 12, 5 mm from the
+  // jump, the residual reached 1.5e-2 of the pressure (5.2e-3 with the term, 7.3e-3 with it
+  // but without the straight chain's omega of outline_structures.h); 1 cm from it the hoop
+  // stress was up to 1.1e-2 and 5.9e-3 of the pressure off the FEM's (Q2, L = 4) at p = 16
+  // and 24, against 4.4e-4 at p = 24 with the term.
   TEST(OutlineModel, HoopStressNearATractionJumpIsHookes)
   {
     const axisym::Problem problem = axisym::parse_problem(axisym::testing::pressure_band());
@@ -971,7 +972,7 @@ namespace rfm
     for (int k = 0; k < 6; ++k)
       largest = std::max(largest, std::abs(f.sigma(k, tt) - nu * (f.sigma(k, rr) + f.sigma(k, zz)) -
                                            e * f.u(k, 0) / r[k]));
-    EXPECT_LT(largest, 8e-3 * 1e7);
+    EXPECT_LT(largest, 6.5e-3 * 1e7);
   }
 
   // The same problem given in other units of length is the same discretization: issue 24's

@@ -33,11 +33,11 @@
 // is 7e-4 of max |sigma| off at p = 20 against 2e-4 elsewhere); a C-infinity cutoff
 // (exp(-1/x) blend) was steeper inside and worse everywhere (Phi_R 1.5e-5 against 3.5e-6).
 // The largest room helps most: the band's indicator at p = 20 is 1.8e-5 with the whole room,
-// 7.9e-5 with half of it and 7.9e-4 with a quarter. The hoop component of S is nu (S_rr + S_zz), as in plane
-// strain; the model adds Hooke's hoop stress of the field's own displacement, E u_r / r
-// (OutlineModel::jump_fields; the rho ln rho term's hoop strain, which P_tt could carry only
-// algebraically). Its products are integrated on near_rule, a polar rule about v that follows curved
-// faces (for each radius the angles between the faces).
+// 7.9e-5 with half of it and 7.9e-4 with a quarter. The hoop component of S is
+// nu (S_rr + S_zz), as in plane strain; the model adds Hooke's hoop stress of the field's own
+// displacement, E u_r / r (OutlineModel::jump_fields; the rho ln rho term's hoop strain, which
+// P_tt could carry only algebraically). Its products are integrated on near_rule, a polar rule
+// about v that follows curved faces (for each radius the angles between the faces).
 #pragma once
 
 #include "problem/outline.h"

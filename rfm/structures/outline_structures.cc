@@ -514,21 +514,20 @@ namespace rfm
               members.push_back(stress_edges_[i]);
           const OutlineEdge &first = edges[members.front()];
           const axisym::Point n = first.outward_normal_at(0.5), tau = first.tangent_at(0.5);
-          const bool along = std::abs(std::abs(n.r) - 1.0) < 1e-12 || std::abs(std::abs(n.z) - 1.0) < 1e-12;
-          bool straight = along;
+          bool straight =
+            std::abs(std::abs(n.r) - 1.0) < 1e-12 || std::abs(std::abs(n.z) - 1.0) < 1e-12;
           double s_lo = std::numeric_limits<double>::infinity(), s_hi = -s_lo;
           axisym::Point lo = first.start, hi = first.end;
           for (const int e : members)
             {
+              // A die part's free sub-edges are joined across their zone (above): not a line.
               const OutlineEdge &edge = edges[e];
-              const std::string &part = edge.part;
-              const bool die_part = zone_of_edge_[e] >= 0 ||
-                                    (part.size() > 5 && part.compare(part.size() - 5, 5, "#free") == 0);
               const axisym::Point m = edge.outward_normal_at(0.5);
-              straight = straight && !die_part && edge.kind == OutlineEdge::Kind::line &&
-                         std::hypot(m.r - n.r, m.z - n.z) < 1e-12 &&
-                         std::abs(dot(minus(edge.start, first.start), n)) < 1e-12 * body_.outline.size() &&
-                         std::abs(dot(minus(edge.end, first.start), n)) < 1e-12 * body_.outline.size();
+              const double off = 1e-9 * body_.outline.size();
+              straight = straight && !is_free_sub_edge(e) && edge.kind == OutlineEdge::Kind::line &&
+                         std::hypot(m.r - n.r, m.z - n.z) < 1e-9 &&
+                         std::abs(dot(minus(edge.start, first.start), n)) < off &&
+                         std::abs(dot(minus(edge.end, first.start), n)) < off;
               for (const axisym::Point x : {edge.start, edge.end})
                 {
                   const double s = dot(minus(x, first.start), tau);
@@ -553,7 +552,8 @@ namespace rfm
           const OutlineEdge &edge = edges[stress_edges_[i]];
           const axisym::Point n = edge.outward_normal_at(0.5);
           // A lone line, or the free sub-edges of a die part (on one line).
-          const bool lone = chain_size[stress_chain_[i]] == 1 || chain_line_[stress_chain_[i]] >= 0 ||
+          const bool lone = chain_size[stress_chain_[i]] == 1 ||
+                            chain_line_[stress_chain_[i]] >= 0 ||
                             std::find(same_part_free.begin(), same_part_free.end(),
                                       static_cast<int>(i)) != same_part_free.end();
           if (edge.kind == OutlineEdge::Kind::line && lone)

@@ -28,9 +28,9 @@
 //    rectangle. So do the edges of a straight chain, a line along r or z split into parts
 //    with different tractions (a pressure on part of a bore): the line is one edge for the
 //    structures, its chain's omega that of the segment from the first start to the last end
-//    (not the conjunction below). Every other S edge (arcs, inclined lines, the edges of a smooth chain of
-//    several) prescribes the whole traction, and its tangential normal stress is left free by
-//    boundary columns B_e (the set G). With omega_T = prod over the smooth chains C of S edges
+//    (not the conjunction below). Every other S edge (arcs, inclined lines, the edges of a
+//    smooth chain of several) prescribes the whole traction, and its tangential normal
+//    stress is left free by boundary columns B_e (the set G). With omega_T = prod over the smooth chains C of S edges
 //    of omega_C, omega_rr (omega_zz) the same product without the lone edges along r (along
 //    z), omega_Y = prod_{e in Y} omega_e and the transfinite weights
 //    W_e = prod_{f != e} omega_f / sum_g prod_{h != g} omega_h over S (W_e = 1 on e, 0 on the
@@ -94,11 +94,14 @@
 // Lines along r (z = c) and trimming in z are even already. axis_parity_obstacle() says what
 // rules it out: arcs and inclined lines (cones and tori: not done), a die, a traction with
 // a shear component (a constant sigma_rz blended up to the axis is not odd), a prescribed u_r
-// other than 0.
+// other than 0. With the parity every S edge is a line along r or z, and a chain of several
+// is a straight chain (section 3), so there are no boundary columns: the even edge coordinate
+// serves EdgeOmega::edge_coordinate alone.
 //
 // A smooth chain is a run of S edges that follow one another with a continuous tangent
 // (a circle split into two arcs, an arc running into a tangent line); a lone S edge is a
-// chain of one. omega_C is the R0 conjunction of its edges' omegas, x + y - sqrt(x^2 + y^2):
+// chain of one. omega_C is the R0 conjunction of its edges' omegas, x + y - sqrt(x^2 + y^2)
+// (but for a straight chain: its line's omega, section 3):
 // zero on each edge with unit normal derivative, also at the join, where the stress does not
 // vanish. The product of the edges' omegas vanishes to second order at the join and leaves
 // the polynomial part unable to carry the field there (measured on the heated ring, two
@@ -271,9 +274,10 @@ namespace rfm
 
   private:
     /// How an S edge prescribes the stress: a lone straight edge along z (normal +-e_r)
-    /// prescribes sigma_rr and sigma_rz only, one along r (normal +-e_z) sigma_zz and sigma_rz;
-    /// every other edge (arcs, inclined lines, edges of a smooth chain of several) the whole
-    /// traction, its tangential normal stress left to its boundary columns.
+    /// prescribes sigma_rr and sigma_rz only, one along r (normal +-e_z) sigma_zz and sigma_rz,
+    /// and so do the edges of a straight chain; every other edge (arcs, inclined lines, edges
+    /// of any other smooth chain of several) the whole traction, its tangential normal stress
+    /// left to its boundary columns.
     enum class StressEdge
     {
       general,
@@ -316,7 +320,7 @@ namespace rfm
     /// another with a continuous tangent form one chain, whose factor in omega_T is the R0
     /// conjunction of their omegas (normalized on every edge, nonzero gradient at the join),
     /// not their product (which vanishes to second order at the join, where the stress does
-    /// not).
+    /// not); a straight chain's factor is its line's omega (chain_line_).
     std::vector<int> stress_chain_;
     int n_stress_chains_ = 0;
     std::vector<StressEdge> stress_kind_; ///< per S edge (index into stress_edges_)
