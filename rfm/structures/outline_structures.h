@@ -30,9 +30,9 @@
 //    structures, its chain's omega that of the segment from the first start to the last end
 //    (not the conjunction below). Every other S edge (arcs, inclined lines, the edges of a
 //    smooth chain of several) prescribes the whole traction, and its tangential normal
-//    stress is left free by boundary columns B_e (the set G). With omega_T = prod over the smooth chains C of S edges
-//    of omega_C, omega_rr (omega_zz) the same product without the lone edges along r (along
-//    z), omega_Y = prod_{e in Y} omega_e and the transfinite weights
+//    stress is left free by boundary columns B_e (the set G). With omega_T = prod over the
+//    smooth chains C of S edges of omega_C, omega_rr (omega_zz) the same product without the
+//    lone edges along r (along z), omega_Y = prod_{e in Y} omega_e and the transfinite weights
 //    W_e = prod_{f != e} omega_f / sum_g prod_{h != g} omega_h over S (W_e = 1 on e, 0 on the
 //    other S edges):
 //
