@@ -844,12 +844,13 @@ namespace rfm
         chain_omega.assign(n_stress_chains_, -1.0);
         for (Eigen::Index e = 0; e < n_s; ++e)
           {
-            double &c = chain_omega[stress_chain_[e]];
-            c = c < 0.0 ? w[e] : c + w[e] - std::hypot(c, w[e]);
+            const int chain = stress_chain_[e];
+            double &c = chain_omega[chain];
+            if (chain_line_[chain] >= 0) // a straight chain: its line's omega, once
+              c = c < 0.0 ? line_chain_omegas_[chain_line_[chain]](rk, zk).value : c;
+            else
+              c = c < 0.0 ? w[e] : c + w[e] - std::hypot(c, w[e]);
           }
-        for (int c = 0; c < n_stress_chains_; ++c)
-          if (chain_line_[c] >= 0)
-            chain_omega[c] = line_chain_omegas_[chain_line_[c]](rk, zk).value;
         double omega_t = 1.0;
         for (const double c : chain_omega)
           omega_t *= c;
