@@ -17,7 +17,8 @@ namespace rfm
                                                  const FaceLoad &on_arriving,
                                                  const axisym::OutlineEdge &leaving,
                                                  const FaceLoad &on_leaving, const double cutoff_radius,
-                                                 const double poisson_ratio, std::string *why)
+                                                 const double poisson_ratio, const bool hoop_shadow,
+                                                 std::string *why)
   {
     auto fail = [why](const char *reason) -> std::optional<TractionJump> {
       if (why)
@@ -74,7 +75,56 @@ namespace rfm
     if ((m * x - rhs).norm() > 1e-9 * scale || x.cwiseAbs().maxCoeff() > 1e4 * scale)
       return fail("the wedge has no stress field of degree 0 for these tractions (a log term)");
     j.coefficients_ = {x[0], x[1], x[2], x[3]};
+    if (hoop_shadow && j.frame_.vertex().r > 0.0 && x[3] != 0.0)
+      j.make_shadow();
     return j;
+  }
+
+  void TractionJump::make_shadow()
+  {
+    const double r_v = frame_.vertex().r, alpha = 0.5 * frame_.angle(), nu = poisson_ratio_;
+    const WedgeCollocation c(alpha, nu, axisym::WedgeFace::free, axisym::WedgeFace::free, 40);
+    const int n = c.size(), N = n - 1;
+    const double a = c.a(), kappa = 3.0 - 4.0 * nu;
+    // The D term for D / mu = 1: u / rho = U_0 + ln rho U_1 (polar), U_0 = ((kappa - 1) theta / 2,
+    // (kappa + 1) ln rho_0 / 2), U_1 = (0, -(kappa + 1) / 2); h = u_r / r_v = rho (H_0 + ln rho H_1).
+    Eigen::VectorXd h0(n), h1(n), c_rho(n), c_th(n);
+    for (int j = 0; j < n; ++j)
+      {
+        const double theta = c.angle(j) + alpha, phi = frame_.leaving_direction() + theta;
+        const double cs = std::cos(phi), sn = std::sin(phi);
+        const double u0_p = 0.5 * (kappa - 1.0) * theta, u0_q = 0.5 * (kappa + 1.0) * std::log(cutoff_radius_);
+        const double u1_q = -0.5 * (kappa + 1.0);
+        h0[j] = (u0_p * cs - u0_q * sn) / r_v;
+        h1[j] = -u1_q * sn / r_v;
+        // The stresses over mu, 2 theta, 2 theta, -1; the equilibrium's (sigma_rr - sigma_tt,
+        // sigma_rz) / r_v in polar components, sigma_tt = nu (sigma_rr + sigma_zz).
+        const double s_pp = 2.0 * theta, s_qq = 2.0 * theta, s_pq = -1.0;
+        const double s_xx = s_pp * cs * cs + s_qq * sn * sn - 2.0 * s_pq * cs * sn;
+        const double s_xy = (s_pp - s_qq) * cs * sn + s_pq * (cs * cs - sn * sn);
+        const double cx = s_xx - nu * (s_pp + s_qq), cy = s_xy;
+        c_rho[j] = (cx * cs + cy * sn) / r_v;
+        c_th[j] = (-cx * sn + cy * cs) / r_v;
+      }
+    const Eigen::VectorXd dh0 = c.derivative() * h0, dh1 = c.derivative() * h1;
+    // b = a grad h + c: level 0 a (H_0 + H_1, H_0') + c, level 1 a (H_1, H_1'); the free faces'
+    // rows: S_thth + a H = 0, S_rhoth = 0.
+    Eigen::VectorXd rhs0 = Eigen::VectorXd::Zero(2 * n), rhs1 = Eigen::VectorXd::Zero(2 * n);
+    for (int j = 1; j < N; ++j)
+      {
+        rhs0[j] = -(a * (h0[j] + h1[j]) + c_rho[j]);
+        rhs0[n + j] = -(a * dh0[j] + c_th[j]);
+        rhs1[j] = -a * h1[j];
+        rhs1[n + j] = -a * dh1[j];
+      }
+    for (const int j : {0, N})
+      {
+        rhs0[j] = -a * h0[j];
+        rhs1[j] = -a * h1[j];
+      }
+    shadow_ = LogSeriesShadow(c, 2.0, {rhs0, rhs1}, {h0, h1});
+    // The collocation's self-check (8e-12 and 2e-11 on the pressure band and issue 24's hub).
+    has_shadow_ = shadow_.residual() < 1e-8;
   }
 
   std::array<double, 3> TractionJump::wedge_stress(const double theta) const
@@ -107,8 +157,14 @@ namespace rfm
             continue;
           }
         const auto [theta, a] = frame_.mapped_angle(r[k], z[k], 1e-14 * cutoff_radius_);
-        const double u_p = (kappa - 1.0) * d_ * theta * rho / (2.0 * mu);
-        const double u_q = -(kappa + 1.0) * d_ * rho * std::log(rho / cutoff_radius_) / (2.0 * mu);
+        double u_p = (kappa - 1.0) * d_ * theta * rho / (2.0 * mu);
+        double u_q = -(kappa + 1.0) * d_ * rho * std::log(rho / cutoff_radius_) / (2.0 * mu);
+        if (has_shadow_)
+          {
+            const LogSeriesShadow::Values v = shadow_.evaluate(rho, theta - 0.5 * frame_.angle());
+            u_p += d_ / mu * v.u[0];
+            u_q += d_ / mu * v.u[1];
+          }
         // Polar to (r, z) at the mapped angle, then turned by a.
         const double phi = frame_.leaving_direction() + theta + a;
         u(k, 0) = u_p * std::cos(phi) - u_q * std::sin(phi);
@@ -124,7 +180,18 @@ namespace rfm
     for (Eigen::Index k = 0; k < r.size(); ++k)
       {
         const auto [theta, a] = frame_.mapped_angle(r[k], z[k], 1e-14 * cutoff_radius_);
-        const std::array<double, 3> w = wedge_stress(theta);
+        std::array<double, 3> w = wedge_stress(theta);
+        const double rho = std::hypot(r[k] - frame_.vertex().r, z[k] - frame_.vertex().z);
+        if (has_shadow_ && rho > 1e-14 * cutoff_radius_)
+          {
+            const LogSeriesShadow::Values v = shadow_.evaluate(rho, theta - 0.5 * frame_.angle());
+            const double d_ = coefficients_[3], phi = frame_.leaving_direction() + theta;
+            const double cs = std::cos(phi), sn = std::sin(phi);
+            const double s_pp = d_ * v.s[0], s_qq = d_ * v.s[1], s_pq = d_ * v.s[2];
+            w[0] += s_pp * cs * cs + s_qq * sn * sn - 2.0 * s_pq * cs * sn;
+            w[1] += s_pp * sn * sn + s_qq * cs * cs + 2.0 * s_pq * cs * sn;
+            w[2] += (s_pp - s_qq) * cs * sn + s_pq * (cs * cs - sn * sn);
+          }
         // Q(a) S Q(a)^T.
         const double c = std::cos(a), sn = std::sin(a);
         const double xx = w[0], yy = w[1], xy = w[2];
@@ -179,7 +246,7 @@ namespace rfm
           continue;
         const auto on_arriving = face_load(body, arriving, 1.0), on_leaving = face_load(body, leaving, 0.0);
         if (on_arriving && on_leaving &&
-            TractionJump::make(arriving, *on_arriving, leaving, *on_leaving, 1.0, poisson_ratio).has_value())
+            TractionJump::make(arriving, *on_arriving, leaving, *on_leaving, 1.0, poisson_ratio, false).has_value())
           out.push_back(i);
       }
     return out;

@@ -47,9 +47,80 @@
 #include <Eigen/Core>
 
 #include <complex>
+#include <vector>
 
 namespace rfm
 {
+  /// Chebyshev collocation of the plane-strain wedge |theta| <= alpha for a displacement
+  /// rho^m (P, Q)(theta) in polar components, shear modulus 1: rows j = 1 .. n - 2 and
+  /// n + j the two ODEs above (without the forcing), rows 0 / n and N / n + N (N = n - 1) the
+  /// conditions of the face at theta = +alpha / -alpha (free: S_thth, S_rhoth; clamped: P, Q;
+  /// symmetry: Q, S_rhoth). The points are theta_j = alpha cos(pi j / N).
+  class WedgeCollocation
+  {
+  public:
+    WedgeCollocation() = default;
+    WedgeCollocation(double half_angle, double poisson_ratio, axisym::WedgeFace minus,
+                     axisym::WedgeFace plus, int n_points);
+
+    int size() const { return static_cast<int>(x_.size()); }
+    double half_angle() const { return alpha_; }
+    /// a = lambda_L / mu = 2 nu / (1 - 2 nu).
+    double a() const { return a_; }
+    double angle(const int j) const { return alpha_ * x_[j]; }
+    /// The face at point j (0: the plus face, n - 1: the minus face).
+    axisym::WedgeFace face(int j) const { return j == 0 ? plus_ : minus_; }
+    /// d / dtheta at the points.
+    const Eigen::MatrixXd &derivative() const { return d_; }
+    /// The 2n x 2n matrix L(m) (quadratic in m).
+    Eigen::MatrixXcd system(std::complex<double> m) const;
+    /// The barycentric weights w with f(theta) = w . f at the points.
+    Eigen::RowVectorXd interpolation(double theta) const;
+
+  private:
+    double alpha_ = 0.0, a_ = 0.0;
+    axisym::WedgeFace minus_ = axisym::WedgeFace::free, plus_ = axisym::WedgeFace::free;
+    Eigen::VectorXd x_, weights_;
+    Eigen::MatrixXd d_;
+  };
+
+  /// A field u = rho^m sum_k ln^k(rho) / k! (P_k, Q_k)(theta), k = 0 .. K, forced by terms of
+  /// the same form (issue 24 item 4: the hoop shadow of a traction jump's field, whose
+  /// displacement has a rho ln rho term, at a wedge where m may itself be an exponent). Since
+  /// rho^m ln^k / k! is the k-th m-derivative of rho^m over k!, the operator's level k of
+  /// L[u] is L(m) V_k + L'(m) V_(k+1) + L''(m) / 2 V_(k+2), V_k = (P_k, Q_k). The levels are
+  /// solved as one block system with two levels more than the forcing has (at a resonant m,
+  /// an exponent of the wedge, the field needs one more power of the log; two allow a Jordan
+  /// chain), by least squares of least norm: the top levels are unique, since a homogeneous
+  /// field rho^m Phi of the wedge changes V_0 alone (and it is the polynomials' to carry).
+  /// Real fields only.
+  class LogSeriesShadow
+  {
+  public:
+    LogSeriesShadow() = default;
+    /// `rhs[k]` (2n): the right-hand side of level k in the collocation's rows (minus the
+    /// body force's level inside, the faces' data on their rows); `hoop[k]` (n): the level
+    /// H_k of the term a h I in the stresses, h = rho^(m - 1) sum_k ln^k / k! H_k.
+    LogSeriesShadow(const WedgeCollocation &collocation, double m, const std::vector<Eigen::VectorXd> &rhs,
+                    const std::vector<Eigen::VectorXd> &hoop);
+
+    /// Polar values at (rho, theta), shear modulus 1: the displacement (rho, theta) and the
+    /// stresses (rho rho, theta theta, rho theta), the term a h I included.
+    struct Values
+    {
+      double u[2], s[3];
+    };
+    Values evaluate(double rho, double theta) const;
+    /// The block system's largest residual over its right-hand side's (a self-check).
+    double residual() const { return residual_; }
+    int levels() const { return static_cast<int>(p_.size()); }
+
+  private:
+    WedgeCollocation collocation_;
+    double m_ = 0.0, a_ = 0.0, residual_ = 0.0;
+    std::vector<Eigen::VectorXd> p_, q_, dp_, dq_, h_;
+  };
+
   class WedgeShadow
   {
   public:
@@ -87,7 +158,7 @@ namespace rfm
     bool valid_ = false;
     double alpha_ = 0.0, a_ = 0.0;
     std::complex<double> m_;
-    Eigen::VectorXd x_, weights_;           ///< Chebyshev-Lobatto points on [-1, 1], barycentric
+    WedgeCollocation collocation_;
     Eigen::VectorXcd p_, q_, dp_, dq_, h_;  ///< P, Q, P', Q' (d / dtheta) and H / r_v at the points
     Eigen::MatrixXcd l_;                    ///< L over rho^lambda at the points (rho rho, theta theta, rho theta)
     double residual_ = 0.0;
