@@ -139,7 +139,8 @@ namespace rfm
     residual_ = (big * x - b).cwiseAbs().maxCoeff() / std::max(b.cwiseAbs().maxCoeff(), 1e-300);
     // The levels up to the last one that is not zero.
     int used = K;
-    while (used > 1 && x.segment((used - 1) * s, s).cwiseAbs().maxCoeff() <= 1e-12 * x.cwiseAbs().maxCoeff())
+    while (used > std::max<int>(1, static_cast<int>(hoop.size())) &&
+           x.segment((used - 1) * s, s).cwiseAbs().maxCoeff() <= 1e-12 * x.cwiseAbs().maxCoeff())
       --used;
     const Eigen::MatrixXd &d = collocation.derivative();
     for (int k = 0; k < used; ++k)
@@ -150,9 +151,6 @@ namespace rfm
         dq_.push_back(d * q_.back());
         h_.push_back(k < static_cast<int>(hoop.size()) ? hoop[k] : Eigen::VectorXd::Zero(n));
       }
-    for (int k = used; k < static_cast<int>(hoop.size()); ++k)
-      if (hoop[k].cwiseAbs().maxCoeff() > 0.0)
-        throw std::logic_error("LogSeriesShadow: a hoop level above the field's");
   }
 
   LogSeriesShadow::Values LogSeriesShadow::evaluate(const double rho, const double theta) const

@@ -128,4 +128,64 @@ namespace rfm
     v.with_shadow = true;
     EXPECT_LT(v.residual(r, z, h), 3.0 * rho / v.r_v * plain);
   }
+
+  // LogSeriesShadow at a resonance: the half plane y > 0 (free faces at theta = +-pi / 2 about
+  // the normal) with the normal stress |x| on its boundary. 2 is an exponent of the half
+  // plane and |x| is no polynomial's trace, so the field is rho^2 (V_0 + ln rho V_1). Checked
+  // by central differences of its displacement alone: plane-strain Hooke's law gives the
+  // stresses evaluate() reports, they are in equilibrium, and they meet the boundary's data.
+  TEST(LogSeriesShadow, HalfPlaneWithANonSmoothLoadTakesTheLogLevel)
+  {
+    const double nu = 0.3;
+    const WedgeCollocation c(0.5 * pi, nu, axisym::WedgeFace::free, axisym::WedgeFace::free, 40);
+    const int n = c.size(), N = n - 1;
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(2 * n);
+    rhs[0] = rhs[N] = 1.0; // S_thth = rho on both faces, no shear
+    const LogSeriesShadow shadow(c, 2.0, {rhs}, {});
+    EXPECT_LT(shadow.residual(), 1e-10);
+    EXPECT_EQ(shadow.levels(), 2);
+    const double a = c.a();
+    // The bisector along +y: theta measured from it, positive toward -x.
+    auto u = [&](const double x, const double y) {
+      const double rho = std::hypot(x, y), phi = std::atan2(y, x), theta = phi - 0.5 * pi;
+      const LogSeriesShadow::Values v = shadow.evaluate(rho, theta);
+      return std::array<double, 2>{v.u[0] * std::cos(phi) - v.u[1] * std::sin(phi),
+                                   v.u[0] * std::sin(phi) + v.u[1] * std::cos(phi)};
+    };
+    auto stress = [&](const double x, const double y, const double h) {
+      const auto xp = u(x + h, y), xm = u(x - h, y), yp = u(x, y + h), ym = u(x, y - h);
+      const double e_xx = (xp[0] - xm[0]) / (2 * h), e_yy = (yp[1] - ym[1]) / (2 * h);
+      const double g = (yp[0] - ym[0] + xp[1] - xm[1]) / (2 * h);
+      return std::array<double, 3>{a * (e_xx + e_yy) + 2 * e_xx, a * (e_xx + e_yy) + 2 * e_yy, g};
+    };
+    for (const double rho : {0.3, 0.01})
+      for (const double angle : {0.2, 1.3, 2.7})
+        {
+          const double x = rho * std::cos(angle), y = rho * std::sin(angle), h = 1e-4 * rho;
+          const auto s = stress(x, y, h);
+          // evaluate()'s stresses, turned from polar.
+          const LogSeriesShadow::Values v = shadow.evaluate(rho, angle - 0.5 * pi);
+          const double cs = std::cos(angle), sn = std::sin(angle);
+          const double s_xx = v.s[0] * cs * cs + v.s[1] * sn * sn - 2 * v.s[2] * cs * sn;
+          const double s_yy = v.s[0] * sn * sn + v.s[1] * cs * cs + 2 * v.s[2] * cs * sn;
+          const double s_xy = (v.s[0] - v.s[1]) * cs * sn + v.s[2] * (cs * cs - sn * sn);
+          EXPECT_NEAR(s[0], s_xx, 1e-6 * rho);
+          EXPECT_NEAR(s[1], s_yy, 1e-6 * rho);
+          EXPECT_NEAR(s[2], s_xy, 1e-6 * rho);
+          // Equilibrium: of order rho^0 each term, to the differences' accuracy.
+          const double hh = 1e-3 * rho;
+          const auto sxp = stress(x + hh, y, h), sxm = stress(x - hh, y, h), syp = stress(x, y + hh, h),
+                     sym = stress(x, y - hh, h);
+          EXPECT_LT(std::abs((sxp[0] - sxm[0] + syp[2] - sym[2]) / (2 * hh)), 1e-4);
+          EXPECT_LT(std::abs((sxp[2] - sxm[2] + syp[1] - sym[1]) / (2 * hh)), 1e-4);
+        }
+    // The boundary: sigma_yy = |x|, sigma_xy = 0 (just inside, 1e-4 |x| off).
+    for (const double x : {-0.2, -0.01, 0.05, 0.4})
+      {
+        const double y = 1e-4 * std::abs(x);
+        const auto s = stress(x, y, 1e-5 * std::abs(x));
+        EXPECT_NEAR(s[1], std::abs(x), 1e-3 * std::abs(x)) << "x " << x;
+        EXPECT_LT(std::abs(s[2]), 1e-3 * std::abs(x)) << "x " << x;
+      }
+  }
 } // namespace rfm
