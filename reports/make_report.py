@@ -1780,7 +1780,11 @@ def traction_jump_rows(corners, out_dir):
           "quarter of the distance, 0.136 m, and the stresses near it stalled at 1-2 % of the largest "
           "with p); inside the rough disc the polynomials' products are taken on the disc's rule "
           "too, blended with the section's by a partition of unity (`rfm::blend_disc_rules`). The "
-          "pressure band's straight jump is a half plane, not rough.", ""]
+          "pressure band's straight jump is a half plane, not rough. Off the axis the field carries its hoop "
+          "shadow too (session 70): the correction rho^2 (V_0 + ln rho V_1) that the body of revolution's "
+          "hoop terms add to the plane field, free on both faces (`LogSeriesShadow`, "
+          "`rfm/spaces/wedge_shadow.h`; at 180 degrees 2 is an exponent of the half plane, and the log "
+          "level carries it). Without it the band's indicator at p = 16 was 4.3e-5 and the hub's 7.6e-7.", ""]
     fig, axes = plt.subplots(1, len(cases), figsize=(5 * len(cases), 4), squeeze=False)
     for (key, title), ax in zip(cases, axes[0]):
         c = corners[key]
