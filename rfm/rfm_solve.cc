@@ -1012,12 +1012,19 @@ namespace
             const double degrees = j.angle() * 180.0 / 3.14159265358979323846;
             fmt::print(stderr,
                        "rfm_solve: traction jump at ({:.6g}, {:.6g}) m (interior angle {:.1f} degrees): "
-                       "the loaded wedge's stress added within {:.4g} m\n",
-                       j.vertex().r, j.vertex().z, degrees, j.cutoff_radius());
+                       "the loaded wedge's stress added within {:.4g} m{}\n",
+                       j.vertex().r, j.vertex().z, degrees, j.cutoff_radius(),
+                       j.has_hoop_shadow() ? ", with its hoop shadow" : "");
+            // The hoop shadow (traction_jump.h): the powers of ln rho it takes and the
+            // collocation's self-check; null where there is none (on the axis).
+            nlohmann::json shadow = nullptr;
+            if (j.has_hoop_shadow())
+              shadow = {{"log_levels", j.hoop_shadow().levels()}, {"residual", j.hoop_shadow().residual()}};
             list.push_back({{"r", j.vertex().r},
                             {"z", j.vertex().z},
                             {"angle_degrees", degrees},
-                            {"cutoff_radius", j.cutoff_radius()}});
+                            {"cutoff_radius", j.cutoff_radius()},
+                            {"hoop_shadow", shadow}});
           }
         result["diagnostics"]["traction_jumps"] = list;
       }

@@ -345,6 +345,11 @@ namespace
     EXPECT_GT(rough[0].at("enrichment").at("columns").get<int>(), 0);
     EXPECT_EQ(rough[0].at("enrichment").at("cutoff_radius").get<double>(),
               r.at("diagnostics").at("traction_jumps")[0].at("cutoff_radius").get<double>());
+    // The jump's hoop shadow: rho^2 (V_0 + ln rho V_1), its collocation solved to rounding.
+    const nlohmann::json &shadow = r.at("diagnostics").at("traction_jumps")[0].at("hoop_shadow");
+    ASSERT_FALSE(shadow.is_null());
+    EXPECT_EQ(shadow.at("log_levels").get<int>(), 2);
+    EXPECT_LT(shadow.at("residual").get<double>(), 1e-10);
     // The 186-degree vertex between the outer arc and the taper has an arc face: its
     // intensity is given too (vertex_intensity.h), one K for lambda = 0.937.
     int curved = 0;

@@ -96,6 +96,10 @@ namespace rfm
     double cutoff_radius() const { return cutoff_radius_; }
     /// The interior angle beta [rad].
     double angle() const { return frame_.angle(); }
+    /// Whether stress() and displacement() carry the hoop shadow (make's hoop_shadow, v off the
+    /// axis, and the collocation's self-check passed), and the shadow itself.
+    bool has_hoop_shadow() const { return has_shadow_; }
+    const LogSeriesShadow &hoop_shadow() const { return shadow_; }
 
     /// S at points, n x 4 in StressComponent order (rr, zz, tt, rz) [Pa], without the cutoff.
     /// At the vertex itself (no direction) the value on the bisector.
