@@ -1462,6 +1462,25 @@ namespace rfm
     return n;
   }
 
+  std::vector<OutlineModel::LogAmplitude> OutlineModel::resonant_log_amplitudes() const
+  {
+    std::vector<LogAmplitude> out;
+    if (resonances_.empty())
+      return out;
+    // The resonant vertices' columns come last among the enrichment columns, the tail of q_s.
+    Eigen::Index at = q_s_.size();
+    for (const ResonantVertex &v : resonances_)
+      at -= v.n_columns();
+    const double alpha = material_.thermal_expansion.value_or(0.0);
+    const std::array<double, 2> gradient{loads_.temperature[1], loads_.temperature[2]};
+    for (const ResonantVertex &v : resonances_)
+      {
+        out.push_back({v.amplitude_of(q_s_[at]), v.theory_amplitude(alpha, gradient)});
+        at += v.n_columns();
+      }
+    return out;
+  }
+
   Eigen::Index OutlineModel::n_vertex_columns() const
   {
     Eigen::Index n = 0;

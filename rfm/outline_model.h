@@ -295,6 +295,16 @@ namespace rfm
     /// edge; clear of the other enrichments' and jumps' supports), after the vertex
     /// enrichments' columns, on their own polar rules.
     const std::vector<ResonantVertex> &resonant_vertices() const { return resonances_; }
+    /// At each resonant vertex (in resonant_vertices()' order): the amplitude a [Pa/m] of the
+    /// stress's rho ln rho term in the solved field (its first column's coefficient: no other
+    /// column has that term) and the one the local problem gives
+    /// (ResonantVertex::theory_amplitude). A check of the field near the vertex against an
+    /// independent asymptotic result. Precondition: ok().
+    struct LogAmplitude
+    {
+      double solution, theory;
+    };
+    std::vector<LogAmplitude> resonant_log_amplitudes() const;
     /// The vertex enrichments' and the resonant vertices' columns.
     Eigen::Index n_vertex_columns() const;
     /// The edge intensity K = sqrt(2 pi) a_1 [Pa m^1/2] at zone end i by the interaction

@@ -515,6 +515,45 @@ namespace rfm
     EXPECT_GT(std::abs(without.evaluate(r, z).sigma(0, zz) / fem_sample - 1.0), 1e-2);
   }
 
+  // The amplitude a of the stress's rho ln rho term at a resonant vertex against the local
+  // problem's, a = 2 E alpha g / (pi (1 - nu)) with g the temperature gradient across the
+  // symmetry line into the body (2.2918e8 Pa/m here). The same ring mirrored (the symmetry on
+  // its top, the line arriving at its vertices, g = -100 K/m) gives the mirrored amplitudes.
+  // Measured at p = 12: 2.187e8 and 2.290e8 Pa/m at (1.2, 0) and (0.8, 0), ratios 0.954 and
+  // 0.999 (0.94 at p = 16 and 20). On issue 24's heated hub the ratios are 0.47 to 7 and even
+  // negative (rfm_solve warns there: rfm_solve_cli_test).
+  TEST(OutlineModel, ResonantVertexLogAmplitudeIsTheLocalProblems)
+  {
+    const double young = 2.1e11, nu = 0.3, alpha = 1.2e-5, pi = 3.14159265358979323846;
+    const double expected = 2.0 * young * alpha * 100.0 / (pi * (1.0 - nu));
+    for (const bool top : {false, true})
+      {
+        axisym::Problem problem = heated_ring_axial_gradient();
+        if (top)
+          {
+            nlohmann::json j = nlohmann::json::parse(R"({
+              "geometry": {"outline": [{"start": [0.8, 0.0]}, {"line_to": [1.2, 0.0], "part": "mid"},
+                {"line_to": [1.2, 0.4], "part": "outer"}, {"line_to": [0.8, 0.4], "part": "top"},
+                {"line_to": [0.8, 0.0], "part": "bore"}]},
+              "boundary": {"top": {"symmetry": true}},
+              "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3, "thermal_expansion": 1.2e-5},
+              "loading": {"temperature": {"field": [0.0, 0.0, 100.0]}}})");
+            problem = axisym::parse_problem(j);
+          }
+        DiscretizationOptions o = problem.rfm;
+        o.degree = 12;
+        const OutlineModel model(problem, o);
+        ASSERT_TRUE(model.ok()) << model.summary().message;
+        const std::vector<OutlineModel::LogAmplitude> a = model.resonant_log_amplitudes();
+        ASSERT_EQ(a.size(), 2u);
+        for (const OutlineModel::LogAmplitude &v : a)
+          {
+            EXPECT_NEAR(v.theory, top ? -expected : expected, 1e-9 * expected);
+            EXPECT_NEAR(v.solution / v.theory, 1.0, 0.1);
+          }
+      }
+  }
+
   namespace
   {
     // The stepped ring moved to r = 10 m (plane strain, no hoop terms) under an end traction

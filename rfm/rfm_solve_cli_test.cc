@@ -375,6 +375,66 @@ namespace
               r.at("discretization").at("vertex_columns").get<int>());
   }
 
+  // At a resonant vertex the stress's rho ln rho term has the amplitude a = 2 E alpha g /
+  // (pi (1 - nu)) of the local problem (g the temperature gradient across the symmetry line
+  // into the body). Issue 24's hub under T = 100 r + 100 z K has four (z = 0 meets both arcs,
+  // z = 1.6 the neck and the bore; g = 100 and -100 K/m): at p = 8 the solved amplitudes
+  // are -0.13, 0.88, -1.4 and 6.8 times those (2.5 times at (0.8, 0) at p = 16), and
+  // rfm_solve warns. The heated ring of verification/problems/heated_ring_axial_gradient.json
+  // at p = 12 (ratios 0.95 and 1.00) does not.
+  TEST(RfmSolveCli, ResonantVertexWithAnOffLogAmplitudeWarns)
+  {
+    const fs::path dir = scratch("resonant_amplitude");
+    const fs::path in = dir / "problem.json", out = dir / "result.json";
+    nlohmann::json problem = axisym::testing::tapered_hub();
+    problem["boundary"].erase("inner_arc");
+    problem["material"]["thermal_expansion"] = 1.2e-5;
+    problem["loading"] = {{"temperature", {{"field", {0.0, 100.0, 100.0}}}}};
+    std::ofstream(in) << problem;
+    const Outcome o = run(in.string() + " --degree 8 --output " + out.string());
+    EXPECT_EQ(o.status, 0) << o.err;
+    const nlohmann::json r = nlohmann::json::parse(std::ifstream(out));
+    const double expected = 2.0 * 2.1e11 * 1.2e-5 * 100.0 / (3.14159265358979323846 * 0.7);
+    const nlohmann::json &list = r.at("diagnostics").at("resonant_vertices");
+    ASSERT_EQ(list.size(), 4u);
+    int off = 0;
+    for (const nlohmann::json &v : list)
+      {
+        const nlohmann::json &a = v.at("log_amplitude");
+        const bool on_top = v.at("z").get<double>() > 1.0;
+        EXPECT_NEAR(a.at("theory").get<double>(), on_top ? -expected : expected, 1e-9 * expected);
+        EXPECT_NEAR(a.at("ratio").get<double>(), a.at("solution").get<double>() / a.at("theory").get<double>(), 1e-12);
+        off += std::abs(a.at("ratio").get<double>() - 1.0) > 0.5;
+      }
+    EXPECT_GE(off, 1);
+    EXPECT_EQ(r.at("diagnostics").at("status"), "warning");
+    bool warned = false;
+    for (const nlohmann::json &w : r.at("diagnostics").at("warnings"))
+      warned |= w.at("check") == "resonant_log_amplitude";
+    EXPECT_TRUE(warned);
+    EXPECT_NE(o.err.find("rho ln rho term"), std::string::npos) << o.err;
+
+    const nlohmann::json ring = nlohmann::json::parse(R"({
+      "geometry": {"outline": [{"start": [0.8, 0.0]}, {"line_to": [1.2, 0.0], "part": "mid"},
+        {"line_to": [1.2, 0.4], "part": "outer"}, {"line_to": [0.8, 0.4], "part": "top"},
+        {"line_to": [0.8, 0.0], "part": "bore"}]},
+      "boundary": {"mid": {"symmetry": true}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3, "thermal_expansion": 1.2e-5},
+      "loading": {"temperature": {"field": [0.0, 0.0, 100.0]}}})");
+    std::ofstream(in) << ring;
+    const Outcome ok = run(in.string() + " --degree 12 --output " + out.string());
+    EXPECT_EQ(ok.status, 0) << ok.err;
+    const nlohmann::json rr = nlohmann::json::parse(std::ifstream(out));
+    ASSERT_EQ(rr.at("diagnostics").at("resonant_vertices").size(), 2u);
+    for (const nlohmann::json &v : rr.at("diagnostics").at("resonant_vertices"))
+      EXPECT_NEAR(v.at("log_amplitude").at("ratio").get<double>(), 1.0, 0.1);
+    if (rr.at("diagnostics").contains("warnings"))
+      {
+        for (const nlohmann::json &w : rr.at("diagnostics").at("warnings"))
+          EXPECT_NE(w.at("check"), "resonant_log_amplitude");
+      }
+  }
+
   // --ritz-bound (rfm.ritz_bound) adds the displacement space's own bound: on Lame's sphere
   // (a = 0.1, b = 0.2 m, 10 MPa inside only) at p = 6 both Phi_L's lie above the closed form's
   // Phi = -p u(a) a^2 / 2 = -4/21 J/rad (u(a) = p a^3 ((1 - 2 nu) a + (1 + nu) b^3 / (2 a^2))
