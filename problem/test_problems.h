@@ -95,6 +95,20 @@ namespace axisym::testing
       "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3}})");
   }
 
+  /// The ring [0.8, 1.2] x [0, 0.4] m on its symmetry plane z = 0 under T = 100 z K, steel
+  /// (verification/problems/heated_ring_axial_gradient.json without its samples): two
+  /// resonant vertices, (0.8, 0) and (1.2, 0). Parts: mid, outer, top, bore.
+  inline nlohmann::json heated_ring_axial_gradient()
+  {
+    return nlohmann::json::parse(R"({
+      "geometry": {"outline": [{"start": [0.8, 0.0]}, {"line_to": [1.2, 0.0], "part": "mid"},
+        {"line_to": [1.2, 0.4], "part": "outer"}, {"line_to": [0.8, 0.4], "part": "top"},
+        {"line_to": [0.8, 0.0], "part": "bore"}]},
+      "boundary": {"mid": {"symmetry": true}},
+      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3, "thermal_expansion": 1.2e-5},
+      "loading": {"temperature": {"field": [0.0, 0.0, 100.0]}}})");
+  }
+
   /// A solid shaft, radius 0.05 m, half-length 0.15 m (mid-plane symmetry), with a
   /// quarter-circle groove of radius 0.01 m at the mid-plane meeting the surface at 90
   /// degrees (a sharp lip), pulled by 10 MPa on its end (verification/problems/

@@ -414,13 +414,7 @@ namespace
     EXPECT_TRUE(warned);
     EXPECT_NE(o.err.find("rho ln rho term"), std::string::npos) << o.err;
 
-    const nlohmann::json ring = nlohmann::json::parse(R"({
-      "geometry": {"outline": [{"start": [0.8, 0.0]}, {"line_to": [1.2, 0.0], "part": "mid"},
-        {"line_to": [1.2, 0.4], "part": "outer"}, {"line_to": [0.8, 0.4], "part": "top"},
-        {"line_to": [0.8, 0.0], "part": "bore"}]},
-      "boundary": {"mid": {"symmetry": true}},
-      "material": {"youngs_modulus": 2.1e11, "poisson_ratio": 0.3, "thermal_expansion": 1.2e-5},
-      "loading": {"temperature": {"field": [0.0, 0.0, 100.0]}}})");
+    const nlohmann::json ring = axisym::testing::heated_ring_axial_gradient();
     std::ofstream(in) << ring;
     const Outcome ok = run(in.string() + " --degree 12 --output " + out.string());
     EXPECT_EQ(ok.status, 0) << ok.err;
