@@ -105,10 +105,7 @@ namespace rfm
         const double xm = rho / rho_0 * std::cos(psi), ym = rho / rho_0 * std::sin(psi);
         const FrameField fm = frame_field(xm, ym, nu);
         const std::array<double, 3> w = to_meridian(fm.s[0] - 0.5 * pi * ym, fm.s[1], fm.s[2]);
-        const double c = std::cos(a), sn = std::sin(a);
-        const double s_rr = c * c * w[0] - 2 * c * sn * w[2] + sn * sn * w[1];
-        const double s_zz = sn * sn * w[0] + 2 * c * sn * w[2] + c * c * w[1];
-        const double s_rz = c * sn * (w[0] - w[1]) + (c * c - sn * sn) * w[2];
+        const auto [s_rr, s_zz, s_rz] = turned_tensor(w[0], w[1], w[2], std::cos(a), std::sin(a));
         const double s_tt = nu * (s_rr + s_zz) + e_over_rv * u[0];
         // g = chi xi^i eta^j and its gradient.
         const double chi_r = rho > 0.0 ? chi.derivative * dr / rho : 0.0;

@@ -100,9 +100,8 @@ namespace rfm
         // The stresses over mu, 2 theta, 2 theta, -1; the equilibrium's (sigma_rr - sigma_tt,
         // sigma_rz) / r_v in polar components, sigma_tt = nu (sigma_rr + sigma_zz).
         const double s_pp = 2.0 * theta, s_qq = 2.0 * theta, s_pq = -1.0;
-        const double s_xx = s_pp * cs * cs + s_qq * sn * sn - 2.0 * s_pq * cs * sn;
-        const double s_xy = (s_pp - s_qq) * cs * sn + s_pq * (cs * cs - sn * sn);
-        const double cx = s_xx - nu * (s_pp + s_qq), cy = s_xy;
+        const std::array<double, 3> s = turned_tensor(s_pp, s_qq, s_pq, cs, sn);
+        const double cx = s[0] - nu * (s_pp + s_qq), cy = s[2];
         c_rho[j] = (cx * cs + cy * sn) / r_v;
         c_th[j] = (-cx * sn + cy * cs) / r_v;
       }
@@ -135,10 +134,7 @@ namespace rfm
     const double s_qq = 2 * a + 2 * b * c2 + 2 * c * s2 + 2 * d * theta;
     const double s_pq = 2 * b * s2 - 2 * c * c2 - d;
     const double gamma = frame_.leaving_direction();
-    const double cs = std::cos(gamma + theta), sn = std::sin(gamma + theta);
-    return {s_pp * cs * cs + s_qq * sn * sn - 2.0 * s_pq * cs * sn,
-            s_pp * sn * sn + s_qq * cs * cs + 2.0 * s_pq * cs * sn,
-            (s_pp - s_qq) * cs * sn + s_pq * (cs * cs - sn * sn)};
+    return turned_tensor(s_pp, s_qq, s_pq, std::cos(gamma + theta), std::sin(gamma + theta));
   }
 
   Eigen::MatrixXd TractionJump::displacement(const Eigen::Ref<const Eigen::VectorXd> &r,
@@ -186,18 +182,13 @@ namespace rfm
           {
             const LogSeriesShadow::Values v = shadow_.evaluate(rho, theta - 0.5 * frame_.angle());
             const double d_ = coefficients_[3], phi = frame_.leaving_direction() + theta;
-            const double cs = std::cos(phi), sn = std::sin(phi);
-            const double s_pp = d_ * v.s[0], s_qq = d_ * v.s[1], s_pq = d_ * v.s[2];
-            w[0] += s_pp * cs * cs + s_qq * sn * sn - 2.0 * s_pq * cs * sn;
-            w[1] += s_pp * sn * sn + s_qq * cs * cs + 2.0 * s_pq * cs * sn;
-            w[2] += (s_pp - s_qq) * cs * sn + s_pq * (cs * cs - sn * sn);
+            const std::array<double, 3> t =
+              turned_tensor(d_ * v.s[0], d_ * v.s[1], d_ * v.s[2], std::cos(phi), std::sin(phi));
+            for (int i = 0; i < 3; ++i)
+              w[i] += t[i];
           }
         // Q(a) S Q(a)^T.
-        const double c = std::cos(a), sn = std::sin(a);
-        const double xx = w[0], yy = w[1], xy = w[2];
-        const double s_rr = c * c * xx - 2 * c * sn * xy + sn * sn * yy;
-        const double s_zz = sn * sn * xx + 2 * c * sn * xy + c * c * yy;
-        const double s_rz = c * sn * (xx - yy) + (c * c - sn * sn) * xy;
+        const auto [s_rr, s_zz, s_rz] = turned_tensor(w[0], w[1], w[2], std::cos(a), std::sin(a));
         s(k, rr) = s_rr, s(k, zz) = s_zz, s(k, rz) = s_rz;
         s(k, tt) = poisson_ratio_ * (s_rr + s_zz);
       }

@@ -202,10 +202,8 @@ namespace rfm
         // Meridian stresses turned by the rotation Q(turn): Q S Q^T (sigma_tt, nu times the
         // trace, stays).
         auto turned = [c_turn, s_turn](const double (&w)[4], double (&out)[4]) {
-          const double c = c_turn, sn = s_turn, w_rr = w[rr], w_zz = w[zz], w_rz = w[rz];
-          out[rr] = c * c * w_rr - 2.0 * c * sn * w_rz + sn * sn * w_zz;
-          out[zz] = sn * sn * w_rr + 2.0 * c * sn * w_rz + c * c * w_zz;
-          out[rz] = c * sn * (w_rr - w_zz) + (c * c - sn * sn) * w_rz;
+          const std::array<double, 3> t = turned_tensor(w[rr], w[zz], w[rz], c_turn, s_turn);
+          out[rr] = t[0], out[zz] = t[1], out[rz] = t[2];
           out[tt] = w[tt];
         };
         std::size_t f = 0;
@@ -262,11 +260,9 @@ namespace rfm
                     sh.u[0] = us.u[0];
                     sh.u[1] = us.u[1];
                     // The strains (polar, engineering shear) in meridian components.
-                    const double c = std::cos(phi), sn = std::sin(phi);
-                    const double e_pp = take(sv.e[0]), e_qq = take(sv.e[1]), g_pq = take(sv.e[2]);
-                    sh.e[0] = (e_pp * c * c + e_qq * sn * sn - g_pq * sn * c) / mu;
-                    sh.e[1] = (e_pp * sn * sn + e_qq * c * c + g_pq * sn * c) / mu;
-                    sh.e[2] = (2.0 * (e_pp - e_qq) * sn * c + g_pq * (c * c - sn * sn)) / mu;
+                    const std::array<double, 3> t = turned_tensor(
+                      take(sv.e[0]), take(sv.e[1]), 0.5 * take(sv.e[2]), std::cos(phi), std::sin(phi));
+                    sh.e[0] = t[0] / mu, sh.e[1] = t[1] / mu, sh.e[2] = 2.0 * t[2] / mu;
                   }
               }
           }

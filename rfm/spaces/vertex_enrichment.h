@@ -113,9 +113,8 @@ namespace rfm
     const double u_p = take(v.u_r), u_q = take(v.u_t);
     const double c = std::cos(phi), s = std::sin(phi);
     MeridianWedgeField f;
-    f.s[rr] = s_pp * c * c + s_qq * s * s - 2.0 * s_pq * c * s;
-    f.s[zz] = s_pp * s * s + s_qq * c * c + 2.0 * s_pq * c * s;
-    f.s[rz] = (s_pp - s_qq) * c * s + s_pq * (c * c - s * s);
+    const std::array<double, 3> t = turned_tensor(s_pp, s_qq, s_pq, c, s);
+    f.s[rr] = t[0], f.s[zz] = t[1], f.s[rz] = t[2];
     f.s[tt] = nu * (f.s[rr] + f.s[zz]);
     f.u[0] = (u_p * c - u_q * s) / mu;
     f.u[1] = (u_p * s + u_q * c) / mu;

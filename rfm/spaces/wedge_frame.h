@@ -33,6 +33,19 @@ namespace rfm
     double radius;
   };
 
+  /// The components (xx, yy, xy) along the fixed axes of a symmetric plane tensor whose
+  /// components along the axes turned by phi from them are (a11, a22, a12), with c = cos phi
+  /// and s = sin phi: Q S Q^T, Q the rotation by phi. Polar components (rho rho, theta theta,
+  /// rho theta) at the polar angle phi give Cartesian ones; the turn Q(a) of the mapped angle
+  /// below is the same operation. A strain with engineering shear g takes a12 = g / 2 and
+  /// gives twice the third component. T: double or std::complex<double>.
+  template <typename T>
+  std::array<T, 3> turned_tensor(const T &a11, const T &a22, const T &a12, const double c, const double s)
+  {
+    return {a11 * c * c + a22 * s * s - 2.0 * a12 * c * s, a11 * s * s + a22 * c * c + 2.0 * a12 * c * s,
+            (a11 - a22) * c * s + a12 * (c * c - s * s)};
+  }
+
   class WedgeFrame
   {
   public:

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 
 namespace
 {
@@ -70,5 +71,36 @@ namespace
     EXPECT_GT(k_plain, 100 * k_broken);
     // A rim whose disc holds the vertex is not another vertex's disc.
     EXPECT_THROW(frame.near_rule(1.0, 12, 12, 8, {Circle{{1.0, 0.5}, 0.8}}), std::invalid_argument);
+  }
+
+  TEST(TurnedTensor, IsTheRotationOfTheTensor)
+  {
+    // A uniaxial stress sigma along e_1 = (cos phi, sin phi) is sigma e_1 e_1 in the fixed axes;
+    // turning back by -phi gives the components along (e_1, e_2) again; trace and determinant
+    // stay; complex components turn their real and imaginary parts alike.
+    for (const double phi : {0.0, 0.3, 1.2, pi / 2, 2.5, -0.7})
+      {
+        const double c = std::cos(phi), s = std::sin(phi);
+        const std::array<double, 3> u = rfm::turned_tensor(2.0, 0.0, 0.0, c, s);
+        EXPECT_NEAR(u[0], 2.0 * c * c, 1e-15);
+        EXPECT_NEAR(u[1], 2.0 * s * s, 1e-15);
+        EXPECT_NEAR(u[2], 2.0 * c * s, 1e-15);
+        const double a11 = 3.0, a22 = -1.5, a12 = 0.8;
+        const std::array<double, 3> t = rfm::turned_tensor(a11, a22, a12, c, s);
+        EXPECT_NEAR(t[0] + t[1], a11 + a22, 1e-14);
+        EXPECT_NEAR(t[0] * t[1] - t[2] * t[2], a11 * a22 - a12 * a12, 1e-14);
+        const std::array<double, 3> back = rfm::turned_tensor(t[0], t[1], t[2], c, -s);
+        EXPECT_NEAR(back[0], a11, 1e-14);
+        EXPECT_NEAR(back[1], a22, 1e-14);
+        EXPECT_NEAR(back[2], a12, 1e-14);
+        using cd = std::complex<double>;
+        const std::array<cd, 3> z = rfm::turned_tensor(cd(a11, 1.0), cd(a22, -2.0), cd(a12, 0.5), c, s);
+        const std::array<double, 3> im = rfm::turned_tensor(1.0, -2.0, 0.5, c, s);
+        for (int i = 0; i < 3; ++i)
+          {
+            EXPECT_NEAR(z[i].real(), t[i], 1e-14);
+            EXPECT_NEAR(z[i].imag(), im[i], 1e-14);
+          }
+      }
   }
 } // namespace

@@ -187,8 +187,7 @@ namespace rfm
   WedgeShadow::WedgeShadow(const axisym::Wedge &wedge, const axisym::WedgeMode &mode,
                            const double bisector, const double r_v, const double poisson_ratio,
                            const WedgeFrame *frame, const int n_points)
-    : alpha_(wedge.half_angle())
-    , a_(2.0 * poisson_ratio / (1.0 - 2.0 * poisson_ratio))
+    : a_(2.0 * poisson_ratio / (1.0 - 2.0 * poisson_ratio))
     , m_(mode.lambda + 1.0)
   {
     if (n_points < 8)
@@ -200,7 +199,8 @@ namespace rfm
       if (std::abs(other.lambda - m_) < resonance_distance ||
           std::abs(std::conj(other.lambda) - m_) < resonance_distance)
         return;
-    collocation_ = WedgeCollocation(alpha_, poisson_ratio, wedge.face_minus(), wedge.face_plus(), n_points);
+    collocation_ =
+      WedgeCollocation(wedge.half_angle(), poisson_ratio, wedge.face_minus(), wedge.face_plus(), n_points);
     const WedgeCollocation &collocation = collocation_;
     const int n = n_points, N = n - 1;
     using cd = std::complex<double>;
@@ -215,9 +215,8 @@ namespace rfm
         const double c = std::cos(phi), s = std::sin(phi);
         const axisym::WedgeFieldValues v = wedge.evaluate(mode, 1.0, theta);
         h_[j] = (v.u_r * c - v.u_t * s) / r_v;
-        const cd s_xx = v.s_rr * c * c + v.s_tt * s * s - 2.0 * v.s_rt * c * s;
-        const cd s_xy = (v.s_rr - v.s_tt) * c * s + v.s_rt * (c * c - s * s);
-        const cd cx = s_xx - nu * (v.s_rr + v.s_tt), cy = s_xy;
+        const std::array<cd, 3> t = turned_tensor(v.s_rr, v.s_tt, v.s_rt, c, s);
+        const cd cx = t[0] - nu * (v.s_rr + v.s_tt), cy = t[2];
         c_rho[j] = (cx * c + cy * s) / r_v;
         c_th[j] = (-cx * s + cy * c) / r_v;
         f_rr[j] = v.s_rr, f_tt[j] = v.s_tt, f_rt[j] = v.s_rt;

@@ -156,7 +156,7 @@ namespace rfm
 
   private:
     bool valid_ = false;
-    double alpha_ = 0.0, a_ = 0.0;
+    double a_ = 0.0;
     std::complex<double> m_;
     WedgeCollocation collocation_;
     Eigen::VectorXcd p_, q_, dp_, dq_, h_;  ///< P, Q, P', Q' (d / dtheta) and H / r_v at the points
