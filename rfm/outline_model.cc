@@ -672,6 +672,11 @@ namespace rfm
     };
     // Stresses: all columns at once (R11 couples the components and the boundary columns
     // through C, and a boundary column can come close to the polynomial ones inside).
+    // The directions kept just above the cut carry little energy but can carry a value at a
+    // vertex: on issue 24's heated hub at p = 16 (145 of 1831 directions dropped)
+    // rfm.extra_gauss_points 10 instead of 4 moved sigma_zz at (0.8, 0) by 0.31 % of it
+    // (Phi_R by 1.4e-7); with the cut at 1e-10 by 0.001 % (Phi_R by 1.4e-7 still), but the
+    // indicator rose from 1.01e-6 to 1.47e-6 and the sample stayed 0.9 % off the FEM's.
     const Eigen::MatrixXd s_map = orthonormal(-sys.r11);
     n_dropped_[0] = std::exchange(dropped, 0);
     // Displacements per component, on the polynomials of degree <= p - k_r in r and
@@ -2020,6 +2025,15 @@ namespace rfm
             room = std::min(room, 0.25 * e->radius());
         if (!(room > tol))
           continue;
+        // No smooth local columns here (the vertices' chi q T and chi q V, vertex_enrichment.h,
+        // tried on the same disc, without modes): on the heated hub they took the indicator
+        // at p = 12, 14, 16, 18, 20 from 1.04e-5, 2.2e-6, 1.0e-6, 6.3e-7, 5.2e-7 to 4.9e-6,
+        // 1.2e-6, 6.7e-7, 4.6e-7, 4.5e-7 (stresses of degree p / 2 in [4, 8], displacements
+        // 4) at 2.3 to 3.2 times the time, and left sigma_zz at (0.8, 0) as unsteady (from the
+        // graded FEM's: +0.20, -0.46, -0.83, +0.86, -0.47 % without, -0.67, -1.33, +0.05,
+        // +0.37, -0.16 % with). That sample's error is not the vertex's alone: along z = 0
+        // sigma_zz is off by up to 1.9 MPa (0.4 % of the vertex's) from 1 mm to 0.2 m away at
+        // p = 14 to 20 (2.2 to 4.1 MPa at the vertex), with signs that change with p.
         resonances_.emplace_back(*arriving, *leaving, leaving->part == site.symmetry_part,
                                  options.vertex_cutoff * room, material_, degree, displacement_degree);
       }
