@@ -1476,11 +1476,10 @@ namespace rfm
     Eigen::Index at = q_s_.size();
     for (const ResonantVertex &v : resonances_)
       at -= v.n_columns();
-    const double alpha = material_.thermal_expansion.value_or(0.0);
     const std::array<double, 2> gradient{loads_.temperature[1], loads_.temperature[2]};
     for (const ResonantVertex &v : resonances_)
       {
-        out.push_back({v.amplitude_of(q_s_[at]), v.theory_amplitude(alpha, gradient)});
+        out.push_back({v.amplitude_of(q_s_[at]), v.theory_amplitude(gradient)});
         at += v.n_columns();
       }
     return out;

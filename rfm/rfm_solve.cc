@@ -422,17 +422,18 @@ namespace
     std::string off;
     for (std::size_t i = 0; i < a.size() && i < list.size(); ++i)
       {
-        const double ratio = a[i].theory != 0.0 ? a[i].solution / a[i].theory : 0.0;
+        const bool known = a[i].theory != 0.0;
+        const double ratio = known ? a[i].solution / a[i].theory : 0.0;
         list[i]["log_amplitude"] = {{"solution", a[i].solution},
                                     {"theory", a[i].theory},
-                                    {"ratio", a[i].theory != 0.0 ? nlohmann::json(ratio) : nlohmann::json(nullptr)},
+                                    {"ratio", known ? nlohmann::json(ratio) : nlohmann::json(nullptr)},
                                     {"units", "Pa/m"}};
         const rfm::ResonantVertex &v = model.resonant_vertices()[i];
         fmt::print(stderr,
                    "rfm_solve: resonant vertex at ({:.6g}, {:.6g}) m: the stress's rho ln rho term has the "
                    "amplitude {:.4g} Pa/m, the local problem's {:.4g} Pa/m\n",
                    v.vertex().r, v.vertex().z, a[i].solution, a[i].theory);
-        if (a[i].theory != 0.0 && std::abs(ratio - 1.0) > resonant_amplitude_limit)
+        if (known && std::abs(ratio - 1.0) > resonant_amplitude_limit)
           off += fmt::format("{}({:.6g}, {:.6g}) m {:.2f} times it", off.empty() ? "" : ", ", v.vertex().r,
                              v.vertex().z, ratio);
       }

@@ -41,11 +41,11 @@ namespace rfm
     ey_ = symmetry_leaves ? arrive : leave;
   }
 
-  double ResonantVertex::theory_amplitude(const double thermal_expansion,
-                                          const std::array<double, 2> &temperature_gradient) const
+  double ResonantVertex::theory_amplitude(const std::array<double, 2> &temperature_gradient) const
   {
     const double g = temperature_gradient[0] * ey_[0] + temperature_gradient[1] * ey_[1];
-    return 2.0 * material_.youngs_modulus * thermal_expansion * g / (pi * (1.0 - material_.poisson_ratio));
+    return 2.0 * material_.youngs_modulus * material_.thermal_expansion.value_or(0.0) * g /
+           (pi * (1.0 - material_.poisson_ratio));
   }
 
   ResonantVertex::FrameField ResonantVertex::frame_field(const double x, const double y, const double nu)

@@ -84,12 +84,13 @@ namespace rfm
 
     /// The amplitude a [Pa/m] of the log field that the local problem gives (the header's
     /// half plane, its load (pi / 2) a |y| cancelling the mirrored free-space stress
-    /// -E alpha g |y| / (1 - nu)): a = 2 E alpha g / (pi (1 - nu)), with g = grad T . e_y the
-    /// temperature gradient [K/m] across the symmetry line into the body. Along the line the
+    /// -E alpha g |y| / (1 - nu)): a = 2 E alpha g / (pi (1 - nu)), with alpha the material's
+    /// thermal expansion (0 if it has none) and g = grad T . e_y the temperature gradient
+    /// [K/m] across the symmetry line into the body. Along the line the
     /// stress then has the term -2 a x ln x in sigma_yy (x the distance from v), whose
     /// coefficient no polynomial changes. Plane strain holds at that order: the hoop strain's
     /// part of the field is of order rho^2 ln rho / r_v.
-    double theory_amplitude(double thermal_expansion, const std::array<double, 2> &temperature_gradient) const;
+    double theory_amplitude(const std::array<double, 2> &temperature_gradient) const;
     /// The amplitude [Pa/m] of the same term in a field whose coefficient of the first column
     /// (degree 0) is q: the column is the field at the offsets over rho_0, so a = q / rho_0.
     double amplitude_of(double first_column_coefficient) const
