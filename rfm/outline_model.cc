@@ -519,6 +519,11 @@ namespace rfm
                 q.weights[k] *= own / sum;
               }
           }
+      for (const Pull &p : pulls)
+        if (p.section)
+          near_covers_section_ = true;
+        else
+          near_discs_.push_back({p.at, p.radius});
       near_.r.resize(total), near_.z.resize(total), near_.weights.resize(total);
       Eigen::Index at = 0;
       for (const Quadrature2D &q : rules)
@@ -2280,6 +2285,83 @@ namespace rfm
     out.castigliano = -complementary - thermal + kinematic;
     out.reissner = mixed - complementary - work;
     return out;
+  }
+
+  Eigen::VectorXd OutlineModel::constitutive_error_density(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                                           const Eigen::Ref<const Eigen::VectorXd> &z,
+                                                           const FieldValues &f) const
+  {
+    const Eigen::Matrix4d c = material_.compliance(), dmat = material_.stiffness();
+    Eigen::VectorXd density(r.size());
+    for (Eigen::Index k = 0; k < r.size(); ++k)
+      {
+        const double th = axisym::thermal_strain(loads_, material_, r[k], z[k]);
+        const Eigen::Vector4d d =
+          c * f.sigma.row(k).transpose() - (f.strain.row(k).transpose() - Eigen::Vector4d(th, th, th, 0.0));
+        density[k] = 0.5 * d.dot(dmat * d);
+      }
+    return density;
+  }
+
+  OutlineModel::ErrorMap OutlineModel::constitutive_error_map(const int n_r, const int n_z) const
+  {
+    if (n_r < 1 || n_z < 1)
+      throw std::invalid_argument("OutlineModel::constitutive_error_map: n_r and n_z must be >= 1");
+    ErrorMap map;
+    map.box = structures_.body().outline.bounding_box();
+    map.cells.setZero(n_r, n_z);
+    const axisym::BoundingBox &b = map.box;
+    auto bin = [&](const double r, const double z, const double value) {
+      const int i = std::clamp(static_cast<int>(std::floor((r - b.r_min) / (b.r_max - b.r_min) * n_r)), 0, n_r - 1);
+      const int j = std::clamp(static_cast<int>(std::floor((z - b.z_min) / (b.z_max - b.z_min) * n_z)), 0, n_z - 1);
+      map.cells(i, j) += value;
+    };
+    const Eigen::VectorXd mu = quadrature_.weights.cwiseProduct(quadrature_.r);
+    if (!has_near_fields())
+      {
+        const Eigen::VectorXd density = constitutive_error_density(
+          quadrature_.r, quadrature_.z, evaluate_parts(quadrature_.r, quadrature_.z, false));
+        for (Eigen::Index k = 0; k < quadrature_.n_points(); ++k)
+          bin(quadrature_.r[k], quadrature_.z[k], mu[k] * density[k]);
+        map.total = mu.dot(density);
+        return map;
+      }
+    // The total as functionals_at: the polynomial part on the section's rule, what the
+    // enrichment adds on the near-edge rules (full minus polynomial part there). That
+    // difference is no density of its own: the polynomial part alone is far off inside a
+    // disc, and the two rules' small difference on it is not. So the cells take the whole
+    // field's density d times psi on the near rules and times 1 - psi on the section's, with
+    // psi = 1 - prod S(rho_i^2 / rho_0,i^2) over the discs (the partition step of the near
+    // rules: psi is 1 at each centre, where the section's rule does not resolve d, 0 beyond
+    // every rim, where the near rules end, and smooth between).
+    auto psi = [&](const double r, const double z) {
+      if (near_covers_section_)
+        return 1.0;
+      double outside = 1.0;
+      for (const VertexEnrichment::Circle &c : near_discs_)
+        {
+          const double t = std::hypot(r - c.centre.r, z - c.centre.z) / c.radius;
+          outside *= disc_partition_step(t * t);
+        }
+      return 1.0 - outside;
+    };
+    // (Where a rule covers the section, psi = 1 and the section's rule takes no share.)
+    const Eigen::VectorXd d_section =
+      near_covers_section_
+        ? Eigen::VectorXd::Zero(quadrature_.n_points())
+        : constitutive_error_density(quadrature_.r, quadrature_.z, evaluate(quadrature_.r, quadrature_.z));
+    FieldValues polynomial;
+    const FieldValues full = evaluate_parts(near_.r, near_.z, true, nullptr, &polynomial);
+    const Eigen::VectorXd d_near = constitutive_error_density(near_.r, near_.z, full);
+    const Eigen::VectorXd near_mu = near_.weights.cwiseProduct(near_.r);
+    map.total = mu.dot(constitutive_error_density(quadrature_.r, quadrature_.z,
+                                                  evaluate_parts(quadrature_.r, quadrature_.z, false))) +
+                near_mu.dot(d_near - constitutive_error_density(near_.r, near_.z, polynomial));
+    for (Eigen::Index k = 0; k < quadrature_.n_points(); ++k)
+      bin(quadrature_.r[k], quadrature_.z[k], mu[k] * (1.0 - psi(quadrature_.r[k], quadrature_.z[k])) * d_section[k]);
+    for (Eigen::Index k = 0; k < near_.n_points(); ++k)
+      bin(near_.r[k], near_.z[k], near_mu[k] * psi(near_.r[k], near_.z[k]) * d_near[k]);
+    return map;
   }
 
   Eigen::VectorXd OutlineModel::columns_traction_work() const

@@ -1482,3 +1482,65 @@ namespace rfm
     EXPECT_NEAR(a.castigliano / b.castigliano, 1.0, 1e-5);
   }
 } // namespace rfm
+
+namespace rfm
+{
+  // The constitutive-relation error E = 1/2 int d . D d r dr dz, d = C s_h - (e(u_h) - e_th)
+  // (OutlineModel::constitutive_error_map), is Phi_L - Phi_C where u_h has no fixed part:
+  // an identity of the mixed solution, computed apart from the functionals (one density at
+  // every point against three integrals and the boundary terms). The stepped ring (pressure,
+  // a re-entrant vertex whose modes cover the section) and the heated ring (a temperature
+  // field, the thermal strain in d; two resonant vertices with their own discs).
+  TEST(OutlineModel, ConstitutiveErrorIsTheGapWithoutAFixedDisplacement)
+  {
+#if defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "two solves at p = 8 with near rules: the Release run checks it";
+#endif
+    for (const nlohmann::json &j : {axisym::testing::stepped_ring(), axisym::testing::heated_ring_axial_gradient()})
+      {
+        const axisym::Problem problem = axisym::parse_problem(j);
+        DiscretizationOptions o = problem.rfm;
+        o.degree = 8;
+        const OutlineModel m(problem, o);
+        ASSERT_TRUE(m.ok()) << m.summary().message;
+        const Functionals f = m.functionals();
+        const OutlineModel::ErrorMap map = m.constitutive_error_map(8, 8);
+        EXPECT_GT(map.total, 0.0);
+        EXPECT_NEAR((f.lagrange - f.castigliano) / map.total, 1.0, 1e-6);
+        // The map's cells (the whole field on the near rules and beyond them the section's,
+        // blended) add up to the total (the polynomial part on the section's rule).
+        EXPECT_NEAR(map.cells.sum() / map.total, 1.0, 1e-2);
+        EXPECT_GE(map.cells.minCoeff(), 0.0);
+      }
+  }
+
+  // Without its vertex columns the stepped ring's error lies at the re-entrant vertex
+  // (0.15, 0.1): the four cells about it (8 x 4 cells of its box, 0.0125 m in r by 0.05 m
+  // in z, meet there) hold the largest one and most of the map. With them they hold far less.
+  TEST(OutlineModel, ConstitutiveErrorMapFindsAVertexWithoutItsColumns)
+  {
+#if defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "two solves at p = 8 with near rules: the Release run checks it";
+#endif
+    const axisym::Problem problem = axisym::parse_problem(axisym::testing::stepped_ring());
+    DiscretizationOptions o = problem.rfm;
+    o.degree = 8;
+    auto at_vertex = [](const OutlineModel::ErrorMap &map) {
+      const double four = map.cells.block(3, 1, 2, 2).sum();
+      Eigen::Index i = 0, j = 0;
+      map.cells.maxCoeff(&i, &j);
+      return std::make_tuple(four / map.cells.sum(), i >= 3 && i <= 4 && j >= 1 && j <= 2);
+    };
+    o.vertex_max_exponent = 0.0;
+    const OutlineModel without(problem, o);
+    ASSERT_TRUE(without.ok()) << without.summary().message;
+    const auto [share_without, largest_there] = at_vertex(without.constitutive_error_map(8, 4));
+    EXPECT_TRUE(largest_there);
+    EXPECT_GT(share_without, 0.5);
+    o.vertex_max_exponent = problem.rfm.vertex_max_exponent;
+    const OutlineModel with(problem, o);
+    ASSERT_TRUE(with.ok()) << with.summary().message;
+    const double share_with = std::get<0>(at_vertex(with.constitutive_error_map(8, 4)));
+    EXPECT_LT(share_with, 0.5 * share_without);
+  }
+} // namespace rfm

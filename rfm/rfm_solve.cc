@@ -743,6 +743,64 @@ namespace
                "|Phi_L - Phi_C| / |Phi_R| with it {:.3g}\n", ritz, phi.lagrange, indicator);
   }
 
+  /// Where the indicator's gap lies (OutlineModel::constitutive_error_map): the
+  /// constitutive-relation error E and its map on 8 x 8 cells of the section's box, as
+  /// diagnostics.constitutive_error: total [J/rad], relative (E / |Phi_R|),
+  /// gap_minus_error ((Phi_L - Phi_C - E) / |Phi_R|: zero to rounding unless u_h has a fixed
+  /// part, the model's header), the cells' edges [m], shares and sum [J/rad], and the three
+  /// largest cells, which stderr names too.
+  void add_constitutive_error(const rfm::OutlineModel &model, const rfm::Functionals &phi, nlohmann::json &result)
+  {
+    constexpr int n_cells = 8;
+    const auto t0 = std::chrono::steady_clock::now();
+    const rfm::OutlineModel::ErrorMap map = model.constitutive_error_map(n_cells, n_cells);
+    const axisym::BoundingBox &b = map.box;
+    const double mapped = map.cells.sum();
+    auto r_at = [&](const int i) { return b.r_min + (b.r_max - b.r_min) * i / n_cells; };
+    auto z_at = [&](const int j) { return b.z_min + (b.z_max - b.z_min) * j / n_cells; };
+    nlohmann::json r_edges = nlohmann::json::array(), z_edges = nlohmann::json::array(),
+                   share = nlohmann::json::array();
+    for (int i = 0; i <= n_cells; ++i)
+      r_edges.push_back(r_at(i)), z_edges.push_back(z_at(i));
+    std::vector<std::array<int, 2>> order;
+    for (int i = 0; i < n_cells; ++i)
+      {
+        nlohmann::json row = nlohmann::json::array();
+        for (int j = 0; j < n_cells; ++j)
+          {
+            row.push_back(mapped > 0.0 ? map.cells(i, j) / mapped : 0.0);
+            order.push_back({i, j});
+          }
+        share.push_back(row);
+      }
+    std::sort(order.begin(), order.end(), [&](const auto &a, const auto &c) {
+      return map.cells(a[0], a[1]) > map.cells(c[0], c[1]);
+    });
+    nlohmann::json largest = nlohmann::json::array();
+    std::string said;
+    for (std::size_t k = 0; k < 3 && mapped > 0.0; ++k)
+      {
+        const auto [i, j] = order[k];
+        const double fraction = map.cells(i, j) / mapped;
+        largest.push_back({{"r", {r_at(i), r_at(i + 1)}}, {"z", {z_at(j), z_at(j + 1)}}, {"share", fraction}});
+        said += fmt::format("{}{:.0f} % in r [{:.4g}, {:.4g}], z [{:.4g}, {:.4g}] m", k > 0 ? "; " : "",
+                            100.0 * fraction, r_at(i), r_at(i + 1), z_at(j), z_at(j + 1));
+      }
+    const double scale = std::abs(phi.reissner);
+    result["diagnostics"]["constitutive_error"] = {
+      {"total", map.total},
+      {"relative", map.total / scale},
+      {"gap_minus_error", (phi.lagrange - phi.castigliano - map.total) / scale},
+      {"units", "total and cells.sum in J per radian, cell edges in m; relative and gap_minus_error "
+                "over |Phi_R|; shares of cells.sum"},
+      {"cells", {{"r", r_edges}, {"z", z_edges}, {"share", share}, {"sum", mapped}}},
+      {"largest", largest}};
+    result["timing"]["constitutive_error_s"] =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    fmt::print(stderr, "rfm_solve: constitutive error E = {:.4e} J/rad ({:.3g} of |Phi_R|; Phi_L - Phi_C = {:.6g} E): {}\n",
+               map.total, map.total / scale, (phi.lagrange - phi.castigliano) / map.total, said);
+  }
+
   // The result after a numerical failure (exit 3): to --output when given, else to stdout as
   // a success's would go (DESIGN.md 7: any partial history is still written).
   void write_failed_result(const std::string &output_path, const nlohmann::json &result)
@@ -1113,6 +1171,7 @@ namespace
                              {"units", "J per radian"}};
     if (zones.empty() && problem.rfm.ritz_bound)
       add_ritz_bound(*model, phi, result);
+    add_constitutive_error(*model, phi, result);
     result["samples"] = fields_to_json(problem, *model);
     check_axis_samples(problem, phi, target_indicator, result);
     check_vertex_samples(problem, result);
@@ -1238,7 +1297,9 @@ namespace
                   [&](const Eigen::Ref<const Eigen::VectorXd> &r,
                       const Eigen::Ref<const Eigen::VectorXd> &z) { return model->evaluate(r, z); },
                   grid,
-                  [&](double r, double z) { return outline.contains({r, z}, 1e-9 * outline.size()); }));
+                  [&](double r, double z) { return outline.contains({r, z}, 1e-9 * outline.size()); },
+                  [&](const Eigen::Ref<const Eigen::VectorXd> &r, const Eigen::Ref<const Eigen::VectorXd> &z,
+                      const rfm::FieldValues &f) { return model->constitutive_error_density(r, z, f); }));
         fmt::print(stderr, "rfm_solve: wrote {}\n", path);
       }
     fmt::print(stderr, "rfm_solve: Phi_L = {:.6e}, Phi_C = {:.6e}, Phi_R = {:.6e} J/rad; "
@@ -1278,7 +1339,8 @@ int main(int argc, char **argv)
                    "mixed one; rfm.ritz_bound): functionals.lagrange_ritz and indicator_ritz");
       app.add_option("--vtu", vtu_directory,
                      "write DIR/rfm_solution.vtu: the fields on a 101 x 201 grid of the section, "
-                     "named as in fem_solve's VTU (DIR is created when missing)");
+                     "named as in fem_solve's VTU, and the constitutive-relation error density "
+                     "constitutive_error [J/m^3] of an outline section (DIR is created when missing)");
       try
         {
           app.parse(argc, argv);

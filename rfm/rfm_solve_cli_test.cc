@@ -274,6 +274,25 @@ namespace
     EXPECT_NEAR(r.at("samples")[0].at("sigma_rr").get<double>(), -1.9577e6, 4e4);
     EXPECT_LT(r.at("functionals").at("indicator").get<double>(), 1e-3);
     EXPECT_TRUE(fs::exists(dir / "vtu" / "rfm_solution.vtu"));
+    // Where the gap lies: with homogeneous prescribed displacements (symmetry, axis) the
+    // constitutive-relation error is Phi_L - Phi_C, so its relative value is the indicator;
+    // 8 x 8 cells with shares adding to 1, and its density in the VTU.
+    const nlohmann::json &e = r.at("diagnostics").at("constitutive_error");
+    const double relative = e.at("relative").get<double>();
+    EXPECT_NEAR(relative / r.at("functionals").at("indicator").get<double>(), 1.0, 1e-3);
+    EXPECT_LT(std::abs(e.at("gap_minus_error").get<double>()), 1e-3 * relative);
+    ASSERT_EQ(e.at("cells").at("share").size(), 8u);
+    ASSERT_EQ(e.at("cells").at("r").size(), 9u);
+    double shares = 0.0;
+    for (const auto &row : e.at("cells").at("share"))
+      for (const auto &x : row)
+        shares += x.get<double>();
+    EXPECT_NEAR(shares, 1.0, 1e-12);
+    ASSERT_EQ(e.at("largest").size(), 3u);
+    EXPECT_GE(e.at("largest")[0].at("share").get<double>(), e.at("largest")[1].at("share").get<double>());
+    std::ifstream v(dir / "vtu" / "rfm_solution.vtu");
+    const std::string text((std::istreambuf_iterator<char>(v)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("Name=\"constitutive_error\""), std::string::npos);
   }
 
   // A numerical failure without --output writes the result, with status "failed", to stdout

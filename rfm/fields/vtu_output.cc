@@ -8,7 +8,8 @@
 namespace rfm
 {
   std::string fields_vtu(const FieldEvaluator &evaluate, const VtuGrid &grid,
-                         const std::function<bool(double, double)> &inside)
+                         const std::function<bool(double, double)> &inside,
+                         const DensityEvaluator &constitutive_error)
   {
     if (grid.n_r < 2 || grid.n_z < 2 || !(grid.r_max > grid.r_min) || !(grid.z_max > grid.z_min))
       throw std::invalid_argument("fields_vtu: need at least 2 x 2 points on a non-empty box");
@@ -39,6 +40,14 @@ namespace rfm
     f.sigma.setZero(n, n_stress_components);
     for (std::size_t k = 0; k < index.size(); ++k)
       f.u.row(index[k]) = fi.u.row(k), f.sigma.row(index[k]) = fi.sigma.row(k);
+    Eigen::VectorXd error;
+    if (constitutive_error)
+      {
+        const Eigen::VectorXd ei = constitutive_error(ri, zi, fi);
+        error.setZero(n);
+        for (std::size_t k = 0; k < index.size(); ++k)
+          error[index[k]] = ei[static_cast<Eigen::Index>(k)];
+      }
     std::vector<long> cells;
     for (int j = 0; j + 1 < grid.n_z; ++j)
       for (int i = 0; i + 1 < grid.n_r; ++i)
@@ -80,6 +89,8 @@ namespace rfm
     scalar("sigma_zz", [&](Eigen::Index k) { return f.sigma(k, zz); });
     scalar("sigma_tt", [&](Eigen::Index k) { return f.sigma(k, tt); });
     scalar("sigma_rz", [&](Eigen::Index k) { return f.sigma(k, rz); });
+    if (constitutive_error)
+      scalar("constitutive_error", [&](Eigen::Index k) { return error[k]; });
     out += "<DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" "
            "format=\"ascii\">\n";
     for (Eigen::Index k = 0; k < n; ++k)
