@@ -1416,6 +1416,49 @@ def corners_section(corners, out_dir):
     md += hub_temperature_rows(corners, out_dir)
     md += resonant_vertex_rows(corners, out_dir)
     md += ritz_bound_rows(corners)
+    md += gap_rows(corners)
+    return md
+
+
+def gap_rows(corners):
+    """Section 9.8: where the indicator's gap lies (OutlineModel::constitutive_error_map) at each
+    corners case's highest degree."""
+    titles = [("stepped_ring", "stepped ring (9.1)"), ("clamped_cylinder", "clamped cylinder (9.2)"),
+              ("stepped_shaft", "stepped shaft (9.3)"), ("pressure_band", "pressure band (9.4)"),
+              ("tapered_hub", "tapered hub, pressure (9.4)"),
+              ("tapered_hub_temperature", "tapered hub, temperature (9.5)"),
+              ("heated_ring_axial_gradient", "heated ring (9.6)")]
+    rows = []
+    for key, label in titles:
+        c = corners.get(key)
+        if not c or "rfm" not in c:
+            continue
+        ps = [pk for pk in numbered(c["rfm"], "p") if "constitutive_error" in c["rfm"][pk]]
+        if not ps:
+            continue
+        pk = ps[-1]
+        e = c["rfm"][pk]["constitutive_error"]
+        cells = "; ".join(f"{100 * x['share']:.0f} % in r [{x['r'][0]:.4g}, {x['r'][1]:.4g}], "
+                          f"z [{x['z'][0]:.4g}, {x['z'][1]:.4g}]" for x in e["largest"])
+        rows.append(f"| {label} | {pk[1:]} | {e['relative']:.1e} | {e['gap_over_error']:.3f} | "
+                    f"{e['cells_sum_over_error']:.3f} | {cells} |")
+    if not rows:
+        return []
+    md = ["### 9.8 Where the indicator's gap lies", "",
+          "The constitutive-relation error E = 1/2 int d . D d r dr dz, d = C sigma_h - (e(u_h) - e_th), of the "
+          "RFM (with its vertex columns) at each case's highest degree, and the three largest of its map's "
+          "8 x 8 cells of the section's box [m] (`OutlineModel::constitutive_error_map`; rfm_solve writes it as "
+          "`diagnostics.constitutive_error`, README 'Where the indicator's gap lies'). Where u_h has no fixed "
+          "part (no traction jump's particular displacement, every prescribed displacement zero) the mixed "
+          "solution makes E = Phi_L - Phi_C ('gap / E' 1), and the map shows where the indicator comes from; "
+          "with a traction jump the difference is the stress's equilibrium defect against its particular "
+          "displacement. 'map / E': the map blends the near rules and the section's, and where it is far from "
+          "1 the near rules do not resolve the density (their sizes are the system's), so read its shares "
+          "as where, not how much.", "",
+          "| case | p | E / abs(Phi_R) | gap / E | map / E | largest cells (share of the map) |",
+          "|---|---|---|---|---|---|"]
+    md += rows
+    md.append("")
     return md
 
 

@@ -33,6 +33,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -61,6 +62,35 @@ namespace
                "{:.2e} from it)\n",
                limit, std::log2(d1 / d2), finest);
     return limit;
+  }
+
+  // Where the indicator's gap lies (OutlineModel::constitutive_error_map, README 'Where the
+  // indicator's gap lies'): E over |Phi_R|, Phi_L - Phi_C over E, the map's sum over E and its
+  // three largest of 8 x 8 cells.
+  nlohmann::json gap_map(const rfm::OutlineModel &m, const rfm::Functionals &f)
+  {
+    constexpr int n = 8;
+    const rfm::OutlineModel::ErrorMap map = m.constitutive_error_map(n, n);
+    const double sum = map.cells.sum();
+    std::vector<std::array<int, 2>> order;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        order.push_back({i, j});
+    std::sort(order.begin(), order.end(),
+              [&](const auto &a, const auto &b) { return map.cells(a[0], a[1]) > map.cells(b[0], b[1]); });
+    const axisym::BoundingBox &b = map.box;
+    nlohmann::json largest = nlohmann::json::array();
+    for (int k = 0; k < 3; ++k)
+      {
+        const auto [i, j] = order[static_cast<std::size_t>(k)];
+        largest.push_back({{"r", {b.r_min + (b.r_max - b.r_min) * i / n, b.r_min + (b.r_max - b.r_min) * (i + 1) / n}},
+                           {"z", {b.z_min + (b.z_max - b.z_min) * j / n, b.z_min + (b.z_max - b.z_min) * (j + 1) / n}},
+                           {"share", map.cells(i, j) / sum}});
+      }
+    return {{"relative", map.total / std::abs(f.reissner)},
+            {"gap_over_error", (f.lagrange - f.castigliano) / map.total},
+            {"cells_sum_over_error", sum / map.total},
+            {"largest", largest}};
   }
 
   // The RFM at degree p (no tolerance), with the vertex modes and traction-jump fields or
@@ -368,7 +398,10 @@ namespace
               }
             // The displacement space's own bound (OutlineModel::ritz_lagrange) beside Phi_L(u_h).
             if (enriched)
-              c[key]["p" + std::to_string(p)]["lagrange_ritz"] = m.ritz_lagrange();
+              {
+                c[key]["p" + std::to_string(p)]["lagrange_ritz"] = m.ritz_lagrange();
+                c[key]["p" + std::to_string(p)]["constitutive_error"] = gap_map(m, f);
+              }
           }
       }
     return c;
@@ -487,7 +520,10 @@ namespace
                                                {"resonant_vertices", m.resonant_vertices().size()},
                                                {"seconds", seconds}};
             if (variant == 0)
-              c[key]["p" + std::to_string(p)]["lagrange_ritz"] = m.ritz_lagrange();
+              {
+                c[key]["p" + std::to_string(p)]["lagrange_ritz"] = m.ritz_lagrange();
+                c[key]["p" + std::to_string(p)]["constitutive_error"] = gap_map(m, f);
+              }
             if (variant == 0 && !sites.empty())
               {
                 const std::vector<std::vector<rfm::VertexIntensity>> k = sites.of(m);
