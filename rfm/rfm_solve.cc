@@ -54,12 +54,12 @@ namespace
   }
   /// Above this indicator a solve at a fixed degree warns (status "warning", exit 0).
   constexpr double fixed_degree_indicator_limit = 1e-5;
-  /// Marks the result as in doubt with `why` (after any warning already there) and says so;
-  /// diagnostics.warnings lists each with the `check` that raised it (a short key, for
-  /// drivers and reports; README, 'Running one solver on one problem file', lists them).
   /// Phi_C above Phi_L by more than this (relative to |Phi_R|) is not rounding.
   constexpr double indicator_rounding = 1e-12;
 
+  /// Marks the result as in doubt with `why` (after any warning already there) and says so;
+  /// diagnostics.warnings lists each with the `check` that raised it (a short key, for
+  /// drivers and reports; README, 'Running one solver on one problem file', lists them).
   void add_warning(nlohmann::json &result, const std::string &check, const std::string &why)
   {
     nlohmann::json &d = result["diagnostics"];
@@ -800,8 +800,12 @@ namespace
       {"largest", largest}};
     result["timing"]["constitutive_error_s"] =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    fmt::print(stderr, "rfm_solve: constitutive error E = {:.4e} J/rad ({:.3g} of |Phi_R|; Phi_L - Phi_C = {:.6g} E): {}\n",
-               map.total, map.total / scale, (phi.lagrange - phi.castigliano) / map.total, said);
+    if (map.total > indicator_rounding * scale)
+      fmt::print(stderr, "rfm_solve: constitutive error E = {:.4e} J/rad ({:.3g} of |Phi_R|; Phi_L - Phi_C = {:.6g} E): {}\n",
+                 map.total, map.total / scale, (phi.lagrange - phi.castigliano) / map.total, said);
+    else
+      fmt::print(stderr, "rfm_solve: constitutive error E = {:.4e} J/rad, at rounding ({:.3g} of |Phi_R|)\n",
+                 map.total, map.total / scale);
   }
 
   // The result after a numerical failure (exit 3): to --output when given, else to stdout as
