@@ -2303,6 +2303,19 @@ namespace rfm
     return density;
   }
 
+  std::vector<std::array<Eigen::Index, 2>> OutlineModel::ErrorMap::largest(const std::size_t k) const
+  {
+    std::vector<std::array<Eigen::Index, 2>> order;
+    for (Eigen::Index i = 0; i < cells.rows(); ++i)
+      for (Eigen::Index j = 0; j < cells.cols(); ++j)
+        order.push_back({i, j});
+    const std::size_t n = std::min(k, order.size());
+    std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(n), order.end(),
+                      [&](const auto &a, const auto &b) { return cells(a[0], a[1]) > cells(b[0], b[1]); });
+    order.resize(n);
+    return order;
+  }
+
   OutlineModel::ErrorMap OutlineModel::constitutive_error_map(const int n_r, const int n_z) const
   {
     if (n_r < 1 || n_z < 1)

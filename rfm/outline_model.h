@@ -226,6 +226,11 @@ namespace rfm
       double total = 0.0;      ///< E [J/rad]
       axisym::BoundingBox box; ///< the section's box, split into the cells
       Eigen::MatrixXd cells;   ///< n_r x n_z [J/rad]
+      /// The edges of the cells: r of the i-th (i = 0..n_r), z of the j-th (j = 0..n_z) [m].
+      double r_edge(const Eigen::Index i) const { return box.r_min + (box.r_max - box.r_min) * i / cells.rows(); }
+      double z_edge(const Eigen::Index j) const { return box.z_min + (box.z_max - box.z_min) * j / cells.cols(); }
+      /// The k cells with the largest values, largest first: their (i, j).
+      std::vector<std::array<Eigen::Index, 2>> largest(std::size_t k) const;
     };
     ErrorMap constitutive_error_map(int n_r, int n_z) const;
     /// The density 1/2 d . D d at points (r, z) of the section [J/m^3], of the fields f there

@@ -757,38 +757,30 @@ namespace
     constexpr int n_cells = 8;
     const auto t0 = std::chrono::steady_clock::now();
     const rfm::OutlineModel::ErrorMap map = model.constitutive_error_map(n_cells, n_cells);
-    const axisym::BoundingBox &b = map.box;
     const double mapped = map.cells.sum();
-    auto r_at = [&](const int i) { return b.r_min + (b.r_max - b.r_min) * i / n_cells; };
-    auto z_at = [&](const int j) { return b.z_min + (b.z_max - b.z_min) * j / n_cells; };
     nlohmann::json r_edges = nlohmann::json::array(), z_edges = nlohmann::json::array(),
                    share = nlohmann::json::array();
     for (int i = 0; i <= n_cells; ++i)
-      r_edges.push_back(r_at(i)), z_edges.push_back(z_at(i));
-    std::vector<std::array<int, 2>> order;
+      r_edges.push_back(map.r_edge(i)), z_edges.push_back(map.z_edge(i));
     for (int i = 0; i < n_cells; ++i)
       {
         nlohmann::json row = nlohmann::json::array();
         for (int j = 0; j < n_cells; ++j)
-          {
-            row.push_back(mapped > 0.0 ? map.cells(i, j) / mapped : 0.0);
-            order.push_back({i, j});
-          }
+          row.push_back(mapped > 0.0 ? map.cells(i, j) / mapped : 0.0);
         share.push_back(row);
       }
-    std::sort(order.begin(), order.end(), [&](const auto &a, const auto &c) {
-      return map.cells(a[0], a[1]) > map.cells(c[0], c[1]);
-    });
     nlohmann::json largest = nlohmann::json::array();
     std::string said;
-    for (std::size_t k = 0; k < 3 && mapped > 0.0; ++k)
-      {
-        const auto [i, j] = order[k];
-        const double fraction = map.cells(i, j) / mapped;
-        largest.push_back({{"r", {r_at(i), r_at(i + 1)}}, {"z", {z_at(j), z_at(j + 1)}}, {"share", fraction}});
-        said += fmt::format("{}{:.0f} % in r [{:.4g}, {:.4g}], z [{:.4g}, {:.4g}] m", k > 0 ? "; " : "",
-                            100.0 * fraction, r_at(i), r_at(i + 1), z_at(j), z_at(j + 1));
-      }
+    if (mapped > 0.0)
+      for (const auto &[i, j] : map.largest(3))
+        {
+          const double fraction = map.cells(i, j) / mapped;
+          largest.push_back({{"r", {map.r_edge(i), map.r_edge(i + 1)}},
+                             {"z", {map.z_edge(j), map.z_edge(j + 1)}},
+                             {"share", fraction}});
+          said += fmt::format("{}{:.0f} % in r [{:.4g}, {:.4g}], z [{:.4g}, {:.4g}] m", said.empty() ? "" : "; ",
+                              100.0 * fraction, map.r_edge(i), map.r_edge(i + 1), map.z_edge(j), map.z_edge(j + 1));
+        }
     const double scale = std::abs(phi.reissner);
     result["diagnostics"]["constitutive_error"] = {
       {"total", map.total},

@@ -33,7 +33,6 @@
 #include <fmt/core.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -72,21 +71,11 @@ namespace
     constexpr int n = 8;
     const rfm::OutlineModel::ErrorMap map = m.constitutive_error_map(n, n);
     const double sum = map.cells.sum();
-    std::vector<std::array<int, 2>> order;
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j)
-        order.push_back({i, j});
-    std::sort(order.begin(), order.end(),
-              [&](const auto &a, const auto &b) { return map.cells(a[0], a[1]) > map.cells(b[0], b[1]); });
-    const axisym::BoundingBox &b = map.box;
     nlohmann::json largest = nlohmann::json::array();
-    for (int k = 0; k < 3; ++k)
-      {
-        const auto [i, j] = order[static_cast<std::size_t>(k)];
-        largest.push_back({{"r", {b.r_min + (b.r_max - b.r_min) * i / n, b.r_min + (b.r_max - b.r_min) * (i + 1) / n}},
-                           {"z", {b.z_min + (b.z_max - b.z_min) * j / n, b.z_min + (b.z_max - b.z_min) * (j + 1) / n}},
-                           {"share", map.cells(i, j) / sum}});
-      }
+    for (const auto &[i, j] : map.largest(3))
+      largest.push_back({{"r", {map.r_edge(i), map.r_edge(i + 1)}},
+                         {"z", {map.z_edge(j), map.z_edge(j + 1)}},
+                         {"share", map.cells(i, j) / sum}});
     return {{"relative", map.total / std::abs(f.reissner)},
             {"gap_over_error", (f.lagrange - f.castigliano) / map.total},
             {"cells_sum_over_error", sum / map.total},
