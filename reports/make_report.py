@@ -1094,6 +1094,21 @@ def body_loads_section(bl, out_dir, sphere=None):
                f"axis, {f['change_last_off_axis_relative']:.1e} off it (Q2 stresses converge like h^2, so its error "
                "at the finest level is about a third of that): the RFM's smallest differences are the FEM's error.",
                ""]
+        # The rate in p of a section whose free corners the load excites but whose field is
+        # smooth: the contrast to the corners of section 9 (issue 24 item 8).
+        ps = [k for k in numbered(ax_case.get("rfm", {}), "p") if ax_case["rfm"][k]["indicator"] > 0]
+        if len(ps) > 2:
+            steps = list(zip(ps[:-1], ps[1:]))
+            ind = lambda k: ax_case["rfm"][k]["indicator"]
+            decades = ", ".join(f"{math.log10(ind(a) / ind(b)) / (int(b[1:]) - int(a[1:])):.2f}" for a, b in steps)
+            orders = ", ".join(f"{math.log(ind(a) / ind(b)) / math.log(int(b[1:]) / int(a[1:])):.1f}"
+                               for a, b in steps)
+            md += [f"The indicator with the axis parity falls by {decades} decades per degree from p = "
+                   + ", ".join(f"{a[1:]} to {b[1:]}" for a, b in steps) + f", its order in p (k in indicator ~ "
+                   f"p^-k) over the same steps {orders}: a steady rate per degree and a growing order, "
+                   "exponential convergence, although the end load excites the two free 90-degree corners "
+                   "(their wedge's leading exponent is 2.74 + 1.12 i, `problem/wedge_modes.h`); compare the "
+                   "orders of section 9's cases.", ""]
     return md
 
 
@@ -1697,12 +1712,18 @@ def corner_case_rows(md, ax, key, title, c):
         def rate(key, a, b):
             x, y = c["rfm"][a][key], c["rfm"][b][key]
             return f"{math.log10(x / y) / (int(b[1:]) - int(a[1:])):.2f}" if x > 0 and y > 0 else "-"
+        def order(key, a, b):
+            x, y = c["rfm"][a][key], c["rfm"][b][key]
+            pa, pb = int(a[1:]), int(b[1:])
+            return f"{math.log(x / y) / math.log(pb / pa):.1f}" if x > 0 and y > 0 else "-"
         steps = list(zip(ps[:-1], ps[1:]))
         md.append("Decades per degree of the RFM (with its vertex columns) from p = "
                   + ", ".join(f"{a[1:]} to {b[1:]}" for a, b in steps) + ": the indicator "
                   + ", ".join(rate("indicator", a, b) for a, b in steps) + "; Phi_R's distance from the FEM's "
                   "limit " + ", ".join(rate("energy_error_relative", a, b) for a, b in steps)
-                  + " (not a bound: it may cross the limit).")
+                  + " (not a bound: it may cross the limit). The indicator's order in p over the same steps, k "
+                  "in indicator ~ p^-k (the slope in log-log; steady under algebraic convergence, growing "
+                  "with p under exponential): " + ", ".join(order("indicator", a, b) for a, b in steps) + ".")
         md.append("")
     # Vertices with an arc face (their intensities on the body's sector, with the duals'
     # traction on the arc: rfm/fields/vertex_intensity.h).
