@@ -23,12 +23,29 @@ namespace rfm
     return buffer;
   }
 
+  /// What the search reads of a model: its indicator and the measure it compares with the
+  /// tolerance (the outline model: Functionals::error_measure, the indicator or E / |Phi_R|
+  /// where that is larger); a plain number is both.
+  struct DegreeMeasure
+  {
+    double indicator = 0.0, measure = 0.0;
+    DegreeMeasure(const double indicator_and_measure)
+      : indicator(indicator_and_measure), measure(indicator_and_measure) {}
+    DegreeMeasure(const double indicator_, const double measure_) : indicator(indicator_), measure(measure_) {}
+    /// How the messages name the measure.
+    std::string name() const
+    {
+      return measure > indicator ? "the constitutive-relation error E / |Phi_R|" : "the indicator";
+    }
+  };
+
   /// One degree of a tolerance-driven solve.
   struct DegreeStep
   {
     int degree = 0;
     double indicator = 0.0; ///< |Phi_L - Phi_C| / |Phi_R|
     double seconds = 0.0;   ///< assembly + solve
+    double measure = 0.0;   ///< what was compared with the tolerance (DegreeMeasure)
   };
 
   template <typename Model>
@@ -44,7 +61,8 @@ namespace rfm
   };
 
   /// `make(options)` builds and solves a model at options.degree; `indicator(model)` reads
-  /// its indicator. Not reached (reached = false, with the reason) when options.max_degree
+  /// its indicator and measure (DegreeMeasure; the rules below, which say "indicator", read
+  /// the measure). Not reached (reached = false, with the reason) when options.max_degree
   /// is passed, when the indicator has not fallen by a quarter over two steps (its rounding
   /// floor), or when at the last step's rate it would pass rfm.max_degree before the
   /// tolerance, either of these once the indicator has fallen to a tenth of its value at
@@ -73,22 +91,23 @@ namespace rfm
             out.message = "p = " + std::to_string(p) + ": " + out.model->summary().message;
             return out;
           }
-        const double value = indicator(*out.model);
-        out.steps.push_back({p, value, out.model->assembly_seconds() + out.model->solve_seconds()});
+        const DegreeMeasure read = indicator(*out.model);
+        const double value = read.measure;
+        out.steps.push_back({p, read.indicator, out.model->assembly_seconds() + out.model->solve_seconds(), value});
         if (value < tolerance)
           {
             out.reached = true;
-            out.message = "indicator " + scientific(value) + " < tolerance at p = " +
-                          std::to_string(p);
+            out.message = (value > read.indicator ? read.name() + " " : "indicator ") + scientific(value) +
+                          " < tolerance at p = " + std::to_string(p);
             return out;
           }
         // A rounding floor: no decrease by a quarter over two steps, once converging.
         steps_without_progress = value < 0.75 * best ? 0 : steps_without_progress + 1;
         best = std::min(best, value);
-        const bool converging = best <= 0.1 * out.steps.front().indicator;
+        const bool converging = best <= 0.1 * out.steps.front().measure;
         if (converging && steps_without_progress >= 2)
           {
-            out.message = "the indicator stopped decreasing at " + scientific(best) +
+            out.message = read.name() + " stopped decreasing at " + scientific(best) +
                           " (p = " + std::to_string(p) + "), above the tolerance " +
                           scientific(tolerance);
             return out;
@@ -99,14 +118,14 @@ namespace rfm
         // need p = 32.)
         if (converging && out.steps.size() >= 2)
           {
-            const double rate = value / out.steps[out.steps.size() - 2].indicator;
+            const double rate = value / out.steps[out.steps.size() - 2].measure;
             if (rate < 1.0)
               {
                 const double steps_needed = std::ceil(std::log(tolerance / value) / std::log(rate));
                 const double p_needed = p + 2.0 * steps_needed;
                 if (p_needed > options.max_degree)
                   {
-                    out.message = "the indicator " + scientific(value) + " (p = " +
+                    out.message = read.name() + " " + scientific(value) + " (p = " +
                                   std::to_string(p) + ") falls by " + scientific(rate) +
                                   " per step: the tolerance " + scientific(tolerance) +
                                   " would need p = " + std::to_string(static_cast<int>(p_needed)) +
@@ -117,8 +136,11 @@ namespace rfm
           }
       }
     out.message = "tolerance " + scientific(tolerance) + " not reached by rfm.max_degree = " +
-                  std::to_string(options.max_degree) + " (indicator " +
-                  scientific(out.steps.empty() ? best : out.steps.back().indicator) + ")";
+                  std::to_string(options.max_degree) + " (" +
+                  (out.steps.empty() || out.steps.back().measure == out.steps.back().indicator
+                     ? std::string("indicator ")
+                     : std::string("E / |Phi_R| ")) +
+                  scientific(out.steps.empty() ? best : out.steps.back().measure) + ")";
     return out;
   }
 } // namespace rfm

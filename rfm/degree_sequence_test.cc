@@ -1,10 +1,15 @@
-// The tolerance search of rfm_solve (degree_sequence.h) on scripted indicator sequences.
+// The tolerance search of rfm_solve (degree_sequence.h) on scripted indicator sequences, and
+// the measure it compares (Functionals::error_measure).
 #include "rfm/degree_sequence.h"
+#include "rfm/fields/solution.h"
 #include "rfm/solve/saddle_point_solver.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <limits>
 #include <map>
+#include <utility>
 
 namespace
 {
@@ -77,4 +82,57 @@ TEST(DegreeSequence, ARiseBeforeConvergenceIsNoFloor)
   const auto loose = run(shaft, 1e-3);
   EXPECT_TRUE(loose.reached) << loose.message;
   EXPECT_EQ(loose.steps.back().degree, 18);
+}
+
+TEST(DegreeSequence, ComparesTheMeasureNotTheIndicator)
+{
+  // Where u_h has a fixed part the indicator can pass through zero (Phi_L - Phi_C = E + an
+  // equilibrium defect) while the constitutive-relation error E does not: the search reads
+  // the measure (Functionals::error_measure), so a crossing below the tolerance is no
+  // convergence. Per degree: (indicator, E / |Phi_R|).
+  const std::map<int, std::pair<double, double>> script{
+    {2, {1e-2, 1e-2}}, {4, {1e-4, 1e-4}}, {6, {3e-9, 2e-7}}, {8, {5e-9, 5e-9}}};
+  struct Crossing
+  {
+    std::pair<double, double> values;
+    rfm::SolveSummary summary_{true, "", 1, 1, 1, 1, 1};
+    bool ok() const { return true; }
+    const rfm::SolveSummary &summary() const { return summary_; }
+    double assembly_seconds() const { return 0.0; }
+    double solve_seconds() const { return 0.0; }
+  };
+  rfm::DiscretizationOptions o;
+  o.max_degree = 24;
+  auto make = [&](const rfm::DiscretizationOptions &d) {
+    auto m = std::make_unique<Crossing>();
+    m->values = script.at(d.degree);
+    return m;
+  };
+  const auto s = rfm::solve_degree_sequence<Crossing>(o, 1e-8, make, [](const Crossing &m) {
+    return rfm::DegreeMeasure{m.values.first, std::max(m.values.first, m.values.second)};
+  });
+  EXPECT_TRUE(s.reached) << s.message;
+  EXPECT_EQ(s.steps.back().degree, 8);
+  ASSERT_EQ(s.steps.size(), 4u);
+  EXPECT_EQ(s.steps[2].indicator, 3e-9);
+  EXPECT_EQ(s.steps[2].measure, 2e-7);
+  // Reading the indicator alone, the search would have stopped at the crossing.
+  const auto plain = rfm::solve_degree_sequence<Crossing>(o, 1e-8, make,
+                                                          [](const Crossing &m) { return m.values.first; });
+  EXPECT_EQ(plain.steps.back().degree, 6);
+}
+
+TEST(Functionals, ErrorMeasureReadsEWhereTheIndicatorCrosses)
+{
+  rfm::Functionals f;
+  f.lagrange = -1.0 - 1e-9, f.castigliano = -1.0 + 1e-9, f.reissner = -1.0; // crossed: 2e-9
+  f.constitutive_error = 5e-8;
+  EXPECT_NEAR(f.indicator(), 2e-9, 1e-15);
+  EXPECT_EQ(f.error_measure(), 5e-8);
+  // Without a fixed part E = Phi_L - Phi_C to rounding: the indicator stays the number read.
+  f.lagrange = -1.0 + 1e-8, f.castigliano = -1.0 - 1e-8, f.constitutive_error = 2e-8 * (1 + 1e-6);
+  EXPECT_EQ(f.error_measure(), f.indicator());
+  // A model that does not compute E (NaN) reads the indicator.
+  f.constitutive_error = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(f.error_measure(), f.indicator());
 }

@@ -652,6 +652,8 @@ namespace rfm
             n_kept_ = {sys.r11.rows(), sys.r12.cols()};
             q_s_ = std::move(sol.q_s);
             q_u_ = std::move(sol.q_u);
+            if (options.ritz_bound && zones_.empty())
+              project_ritz_stress(sys, nullptr);
             return;
           }
       }
@@ -822,7 +824,37 @@ namespace rfm
       {
         q_s_ = s_map * sol.q_s;
         q_u_ = u_map * sol.q_u;
+        if (options.ritz_bound && zones_.empty())
+          project_ritz_stress(sys, &s_map);
       }
+  }
+
+  void OutlineModel::project_ritz_stress(const ReissnerSystem &sys, const Eigen::MatrixXd *s_map)
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    ritz_q_ = ritz_coefficients();
+    // The stress equation of the mixed solution with u_R: M q_s = R12 q_u + p_s, M = -R11
+    // (saddle_point_solver.h); in the transformed basis M is I.
+    const Eigen::VectorXd b = sys.r12 * ritz_q_ + sys.p_s;
+    if (s_map)
+      projected_q_s_ = *s_map * (s_map->transpose() * b);
+    else
+      {
+        // As assembled (R11's lower triangle), Jacobi-scaled as the solver does.
+        const Eigen::MatrixXd m = -sys.r11.selfadjointView<Eigen::Lower>().toDenseMatrix();
+        const Eigen::VectorXd d = m.diagonal().cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
+        const Eigen::LLT<Eigen::MatrixXd> llt(d.asDiagonal() * m * d.asDiagonal());
+        projected_q_s_ = d.cwiseProduct(llt.solve(d.cwiseProduct(b)));
+      }
+    ritz_s_ = seconds_since(t0);
+  }
+
+  OutlineModel::StressSpaceGap OutlineModel::stress_space_gap() const
+  {
+    if (projected_q_s_.size() == 0)
+      throw std::logic_error("OutlineModel::stress_space_gap: the model was built without rfm.ritz_bound");
+    return {functionals_at(&ritz_q_).constitutive_error,
+            functionals_at(&ritz_q_, &projected_q_s_).constitutive_error};
   }
 
   void OutlineModel::combine_indentations(const std::vector<const OutlineModel *> &others,
@@ -1208,14 +1240,15 @@ namespace rfm
                                            const Eigen::Ref<const Eigen::VectorXd> &z,
                                            const bool with_enrichment,
                                            const Eigen::VectorXd *q_u,
-                                           FieldValues *polynomial) const
+                                           FieldValues *polynomial,
+                                           const Eigen::VectorXd *q_s) const
   {
     // In blocks of points: the basis values of the whole section's rule (48 000 points times
     // 3 (p + 1)^2 columns per component at p = 20) would take gigabytes, and their page faults
     // and zeroing took longer than the products.
     const Eigen::Index n_points = r.size();
     if (n_points <= evaluation_block)
-      return evaluate_block(r, z, with_enrichment, q_u, polynomial);
+      return evaluate_block(r, z, with_enrichment, q_u, polynomial, q_s);
     auto sized = [n_points]() {
       FieldValues f;
       f.u.resize(n_points, 2);
@@ -1236,7 +1269,7 @@ namespace rfm
       {
         const Eigen::Index m = std::min(evaluation_block, n_points - k0);
         place(f, k0, evaluate_block(r.segment(k0, m), z.segment(k0, m), with_enrichment, q_u,
-                                    polynomial ? &p : nullptr));
+                                    polynomial ? &p : nullptr, q_s));
         if (polynomial)
           place(*polynomial, k0, p);
       }
@@ -1247,9 +1280,11 @@ namespace rfm
                                            const Eigen::Ref<const Eigen::VectorXd> &z,
                                            const bool with_enrichment,
                                            const Eigen::VectorXd *q_u,
-                                           FieldValues *polynomial) const
+                                           FieldValues *polynomial,
+                                           const Eigen::VectorXd *q_s) const
   {
     const Eigen::VectorXd &coef_u = q_u ? *q_u : q_u_;
+    const Eigen::VectorXd &coef_s = q_s ? *q_s : q_s_;
     const Eigen::Index n = n_basis_functions(), n_b = n_stress_border();
     const BasisValues b = basis_values(r, z);
     const OutlineStressValues s = stress_values(r, z);
@@ -1259,11 +1294,11 @@ namespace rfm
     f.sigma = s.s0;
     for (int k = 0; k < n_stress_components; ++k)
       {
-        f.sigma.col(k) += s.omega.col(k).cwiseProduct(b.value * q_s_.segment(k * n, n));
+        f.sigma.col(k) += s.omega.col(k).cwiseProduct(b.value * coef_s.segment(k * n, n));
         if (hoop_coupled_ && k == rr)
-          f.sigma.col(tt) += s.omega.col(rr).cwiseProduct(b.value * q_s_.segment(rr * n, n));
+          f.sigma.col(tt) += s.omega.col(rr).cwiseProduct(b.value * coef_s.segment(rr * n, n));
         if (n_b > 0)
-          f.sigma.col(k) += s.boundary[k] * q_s_.segment(4 * n, n_b);
+          f.sigma.col(k) += s.boundary[k] * coef_s.segment(4 * n, n_b);
       }
     f.u = d.u0;
     Eigen::MatrixXd du_dr = d.u0_r, du_dz = d.u0_z;
@@ -1287,7 +1322,7 @@ namespace rfm
         // One enrichment at a time, not enrichment_columns (one matrix of all columns, filled
         // by copies): a third of the memory written (issue 24's hub at p = 12, 534 columns on
         // blocks of 2048 points: 87 MB per block in each of the three passes).
-        const auto q_s = q_s_.tail(n_e), q_u = coef_u.tail(n_e);
+        const auto q_s = coef_s.tail(n_e), q_u = coef_u.tail(n_e);
         Eigen::Index at = 0;
         auto add = [&](const auto &en) {
           const Eigen::Index w = en.n_columns();
@@ -2220,15 +2255,17 @@ namespace rfm
 
   Functionals OutlineModel::functionals() const { return functionals_at(nullptr); }
 
-  Functionals OutlineModel::functionals_at(const Eigen::VectorXd *q_u) const
+  Functionals OutlineModel::functionals_at(const Eigen::VectorXd *q_u, const Eigen::VectorXd *q_s) const
   {
     const Eigen::Matrix4d c = material_.compliance(), dmat = material_.stiffness();
     // With the thermal strain e_th (elastic strain e - e_th) and the body force f in W. The
     // polynomial part on the section's rule; what the enrichment adds (supported in the
     // near-edge half discs) on the near-edge rules: full field minus polynomial part there.
+    // (And the constitutive-relation error E from the same values: constitutive_error_map's
+    // total at no cost of its own, for rfm.tolerance's Functionals::error_measure.)
     auto sums = [&](const Quadrature2D &q, const FieldValues &f) {
       const Eigen::VectorXd mu = q.weights.cwiseProduct(q.r);
-      std::array<double, 5> out{0, 0, 0, 0, 0};
+      std::array<double, 6> out{0, 0, 0, 0, 0, 0};
       for (Eigen::Index k = 0; k < q.n_points(); ++k)
         {
           const double th = axisym::thermal_strain(loads_, material_, q.r[k], q.z[k]);
@@ -2239,25 +2276,27 @@ namespace rfm
           out[1] += 0.5 * mu[k] * s.dot(c * s);
           out[2] += mu[k] * s.dot(e);
           out[3] += mu[k] * s.dot(e_th);
+          const Eigen::Vector4d d = c * s - e;
+          out[5] += 0.5 * mu[k] * d.dot(dmat * d);
           const auto fk = axisym::body_force(loads_, material_, q.r[k], q.z[k]);
           out[4] += mu[k] * (fk[0] * f.u(k, 0) + fk[1] * f.u(k, 1));
         }
       return out;
     };
-    std::array<double, 5> total = sums(quadrature_, evaluate_parts(quadrature_.r, quadrature_.z, false, q_u));
+    std::array<double, 6> total = sums(quadrature_, evaluate_parts(quadrature_.r, quadrature_.z, false, q_u, nullptr, q_s));
     if (has_near_fields())
       {
         FieldValues polynomial;
-        const auto full = sums(near_, evaluate_parts(near_.r, near_.z, true, q_u, &polynomial));
+        const auto full = sums(near_, evaluate_parts(near_.r, near_.z, true, q_u, &polynomial, q_s));
         const auto poly = sums(near_, polynomial);
-        for (int i = 0; i < 5; ++i)
+        for (int i = 0; i < 6; ++i)
           total[i] += full[i] - poly[i];
       }
     double strain_energy = total[0], complementary = total[1], mixed = total[2],
            thermal = total[3], work = total[4];
     // Boundary terms: W(u) on the traction edges; (s n) . u_bar on the displacement edges.
     const EdgeQuadrature &eq = edge_quadrature_;
-    const FieldValues fb = q_u ? evaluate_parts(eq.r, eq.z, true, q_u) : evaluate(eq.r, eq.z);
+    const FieldValues fb = q_u || q_s ? evaluate_parts(eq.r, eq.z, true, q_u, nullptr, q_s) : evaluate(eq.r, eq.z);
     double kinematic = 0;
     for (Eigen::Index k = 0; k < eq.r.size(); ++k)
       {
@@ -2284,6 +2323,7 @@ namespace rfm
     out.lagrange = strain_energy - work;
     out.castigliano = -complementary - thermal + kinematic;
     out.reissner = mixed - complementary - work;
+    out.constitutive_error = total[5];
     return out;
   }
 
@@ -2401,6 +2441,16 @@ namespace rfm
   {
     if (!zones_.empty())
       throw std::logic_error("OutlineModel::ritz_lagrange: not with a die zone");
+    if (ritz_q_.size() > 0)
+      return functionals_at(&ritz_q_).lagrange;
+    const Eigen::VectorXd q = ritz_coefficients();
+    return functionals_at(&q).lagrange;
+  }
+
+  Eigen::VectorXd OutlineModel::ritz_coefficients() const
+  {
+    if (!zones_.empty())
+      throw std::logic_error("OutlineModel::ritz_coefficients: not with a die zone");
     const Eigen::Index n = n_basis_functions(), n_e = n_enrichment_columns(), n_u = 2 * n + n_e;
     // D = U^T U: with y = U e per point, e . D e = |y|^2, and the stiffness is a sum of
     // rank updates of the square-root-weighted y's of the columns.
@@ -2527,8 +2577,7 @@ namespace rfm
     const Eigen::LLT<Eigen::MatrixXd> llt(a);
     if (llt.info() != Eigen::Success)
       throw std::runtime_error("OutlineModel::ritz_lagrange: the shifted stiffness is not positive definite");
-    const Eigen::VectorXd q = scale.cwiseProduct(llt.solve(scale.cwiseProduct(g)));
-    return functionals_at(&q).lagrange;
+    return scale.cwiseProduct(llt.solve(scale.cwiseProduct(g)));
   }
 
   OutlineModel::DieForce OutlineModel::die_force(const std::string &part) const
@@ -2778,6 +2827,9 @@ namespace rfm
     return solve_degree_sequence<OutlineModel>(
       options, tolerance,
       [&](const DiscretizationOptions &o) { return std::make_unique<OutlineModel>(problem, o); },
-      [](const OutlineModel &m) { return m.functionals().indicator(); });
+      [](const OutlineModel &m) {
+        const Functionals f = m.functionals();
+        return DegreeMeasure{f.indicator(), f.error_measure()};
+      });
   }
 } // namespace rfm
