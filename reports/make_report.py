@@ -2011,7 +2011,9 @@ def defaults_section(d):
             return f"stopped after {r['wall_s']:.0f} s (the report's limit)"
         if r.get("exit") == 3:
             message = r.get("message", "")
-            return f"failed: {message[:160]}{'...' if len(message) > 160 else ''}"
+            # A '|' in a message (|Phi_R|) would end the table's cell.
+            cut = (message[:160] + ('...' if len(message) > 160 else '')).replace("|", "\\|")
+            return f"failed: {cut}"
         status = r.get("status") or "-"
         return f"{status} ({', '.join(r['checks'])})" if r.get("checks") else status
 
