@@ -853,8 +853,9 @@ namespace rfm
   {
     if (projected_q_s_.size() == 0)
       throw std::logic_error("OutlineModel::stress_space_gap: the model was built without rfm.ritz_bound");
-    return {functionals_at(&ritz_q_).constitutive_error,
-            functionals_at(&ritz_q_, &projected_q_s_).constitutive_error};
+    const Functionals at_ritz = functionals_at(&ritz_q_);
+    return {at_ritz.constitutive_error, functionals_at(&ritz_q_, &projected_q_s_).constitutive_error,
+            at_ritz.lagrange};
   }
 
   void OutlineModel::combine_indentations(const std::vector<const OutlineModel *> &others,

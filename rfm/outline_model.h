@@ -267,9 +267,10 @@ namespace rfm
     /// and 2.8e-9 J/rad at p = 16 and 20, projected 4.9e-9 and 2.4e-9, with the Ritz
     /// solution within 3e-10 of the FEM's limit there. Precondition: ok(), built with
     /// rfm.ritz_bound (the projection needs the assembled system; without it: logic_error).
+    /// `lagrange`: Phi_L at u_R, ritz_lagrange() from the same pass as `ritz`.
     struct StressSpaceGap
     {
-      double ritz = 0.0, projected = 0.0;
+      double ritz = 0.0, projected = 0.0, lagrange = 0.0;
     };
     StressSpaceGap stress_space_gap() const;
 

@@ -1592,6 +1592,7 @@ namespace rfm
         // A real gap on both (neither stress space holds these fields exactly at p = 8).
         EXPECT_GT(gap.projected, 1e-9 * scale);
         EXPECT_NEAR(m.ritz_lagrange() / plain.ritz_lagrange(), 1.0, 1e-12);
+        EXPECT_EQ(gap.lagrange, m.ritz_lagrange());
       }
   }
 } // namespace rfm
