@@ -672,7 +672,7 @@ namespace axisym
                               "edge_extra_points", "edge_mode_degree", "local_levels",
                               "local_degree", "local_stress_degree", "local_first_box",
                               "local_max_box", "vertex_max_exponent", "vertex_mode_degree",
-                              "vertex_cutoff", "vertex_local_degree",
+                              "vertex_cutoff", "vertex_local_degree", "vertex_local_degree_ratio",
                               "vertex_local_displacement_degree", "vertex_support",
                               "resonant_displacement_degree", "axis_parity", "axis_coupling", "notch_roots",
                               "rough_vertices", "ritz_bound", "vertex_shadow", "vertex_inner_disc",
@@ -727,6 +727,13 @@ namespace axisym
           p.rfm.vertex_mode_degree = r.integer("vertex_mode_degree", ranges::rfm_vertex_mode_degree);
         if (r.has("vertex_local_degree"))
           p.rfm.vertex_local_degree = r.integer("vertex_local_degree", ranges::rfm_vertex_local_degree);
+        if (r.has("vertex_local_degree_ratio"))
+          p.rfm.vertex_local_degree_ratio = r.number(
+            "vertex_local_degree_ratio", "must be in [0.25, 1.5]: the vertex's local stress degree over p",
+            [](double x) {
+              return x >= RfmSettings::min_vertex_local_degree_ratio &&
+                     x <= RfmSettings::max_vertex_local_degree_ratio;
+            });
         if (r.has("vertex_local_displacement_degree"))
           p.rfm.vertex_local_displacement_degree =
             r.integer("vertex_local_displacement_degree", ranges::rfm_vertex_local_displacement_degree);

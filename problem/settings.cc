@@ -34,6 +34,10 @@ namespace axisym
     ranges::rfm_vertex_mode_degree.check(vertex_mode_degree);
     ranges::rfm_vertex_local_degree.check(vertex_local_degree);
     ranges::rfm_vertex_local_displacement_degree.check(vertex_local_displacement_degree);
+    if (!(vertex_local_degree_ratio >= min_vertex_local_degree_ratio &&
+          vertex_local_degree_ratio <= max_vertex_local_degree_ratio))
+      throw InputError("rfm.vertex_local_degree_ratio = " + std::to_string(vertex_local_degree_ratio) +
+                       ": must be in [0.25, 1.5] (the vertex's local stress degree over p)");
     ranges::rfm_resonant_displacement_degree.check(resonant_displacement_degree);
     if (!(vertex_max_exponent >= 0.0 && vertex_max_exponent <= 6.0))
       throw InputError("rfm.vertex_max_exponent = " + std::to_string(vertex_max_exponent) +

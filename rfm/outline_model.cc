@@ -1687,16 +1687,14 @@ namespace rfm
       return arc && free_arcs;
     };
     // The smooth local columns' degrees: displacements at rfm.vertex_local_displacement_degree
-    // (at most rfm.vertex_local_degree), stresses at p / 2 between that and
-    // rfm.vertex_local_degree. Grown with p: at the defaults the clamped cylinder's indicator
+    // (at most rfm.vertex_local_degree), stresses at floor(rfm.vertex_local_degree_ratio p)
+    // between that and rfm.vertex_local_degree (RfmSettings::vertex_local_stress_degree).
+    // Grown with p: at the defaults the clamped cylinder's indicator
     // fell 2.2e-7, 6.0e-8, 1.5e-8, 5.3e-9 at p = 8 to 14 so; with degree 8 throughout it
     // stalled at 2.4e-8, 2.3e-8 at p = 8, 10, and rfm_solve gave up there (exit 3).
     const int local_displacement_degree =
       std::min(options.vertex_local_displacement_degree, options.vertex_local_degree);
-    const int local_stress_degree =
-      options.vertex_local_degree < 0
-        ? -1
-        : std::min(options.vertex_local_degree, std::max(local_displacement_degree, options.degree / 2));
+    const int local_stress_degree = options.vertex_local_stress_degree();
     for (std::size_t i = 0; i < vertices.size(); ++i)
       {
         const SingularVertex &v = vertices[i];
@@ -2791,10 +2789,7 @@ namespace rfm
     // a tangent dyad per free face, a normal dyad per symmetry face, the hoop stress; the
     // displacement families are fewer), and the modes' multipliers of degree 4 at least (the
     // section support) with the hoop shadow.
-    const int d_u = std::min(options.vertex_local_displacement_degree, options.vertex_local_degree);
-    const double d = options.vertex_local_degree < 0
-                       ? -1.0
-                       : std::min(options.vertex_local_degree, std::max(d_u, options.degree / 2));
+    const double d = options.vertex_local_stress_degree();
     const double local = d < 0.0 ? 0.0 : 8.0 * (d + 1.0) * (d + 2.0) / 2.0;
     const double m = std::max(options.vertex_mode_degree, 4);
     const double per_field = (m + 1.0) * (m + 2.0) / 2.0 + 1.0;

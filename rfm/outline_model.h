@@ -322,13 +322,13 @@ namespace rfm
     /// traction (VertexEnrichment::set_curved_faces), without a die where the field is
     /// singular (singular_vertices: Re lambda < 1), the wedge's modes with Re lambda <
     /// rfm.vertex_max_exponent times the monomials up to rfm.vertex_mode_degree, and the
-    /// smooth local columns of degree p / 2 within [rfm.vertex_local_displacement_degree,
-    /// rfm.vertex_local_degree] (stresses) and rfm.vertex_local_displacement_degree
-    /// (displacements, at most rfm.vertex_local_degree), cut off at rfm.vertex_cutoff
-    /// times the room (each face, half of it where its other end is singular too; the
-    /// distance to every other edge; clear of the contact edges' supports), as extra columns
-    /// of both spaces after the edge modes; their products are integrated on the near-vertex
-    /// rules (VertexEnrichment::near_rule). With rfm.notch_roots, every notch root
+    /// smooth local columns of degree floor(rfm.vertex_local_degree_ratio p) within
+    /// [rfm.vertex_local_displacement_degree, rfm.vertex_local_degree] (stresses) and
+    /// rfm.vertex_local_displacement_degree (displacements, at most rfm.vertex_local_degree), cut
+    /// off at rfm.vertex_cutoff times the room (each face, half of it where its other end is
+    /// singular too; the distance to every other edge; clear of the contact edges' supports), as
+    /// extra columns of both spaces after the edge modes; their products are integrated on the
+    /// near-vertex rules (VertexEnrichment::near_rule). With rfm.notch_roots, every notch root
     /// (axisym::notch_roots) gets the smooth local columns alone, in the same form (no modes).
     /// With rfm.rough_vertices, every rough vertex (axisym::rough_vertices) where a traction
     /// jumps gets the modes and local columns as a singular vertex, its disc also clear of

@@ -1030,6 +1030,8 @@ namespace
       {"degree_policy", target_indicator ? "tolerance" : "fixed"}};
     if (!model->axis_parity())
       result["discretization"]["axis_parity_obstacle"] = model->axis_parity_obstacle();
+    if (model->n_vertex_columns() > 0) // the vertices' smooth local stress columns' degree at p
+      result["discretization"]["vertex_local_degree"] = problem.rfm.vertex_local_stress_degree();
     if (sequence)
       record_sequence(result["discretization"], *target_indicator, sequence->steps);
     result["timing"] = {{"assembly_s", model->assembly_seconds()},

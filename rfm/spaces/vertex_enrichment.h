@@ -53,11 +53,11 @@
 // With both, Phi_L is 2.3e-5 off at p = 12 and the far samples 0.6 % at p = 8 (4.4 % without).
 // But the displacement columns must stay of lower degree than the stress columns
 // (local_displacement_degree; OutlineModel takes rfm.vertex_local_displacement_degree for
-// them and p / 2 up to rfm.vertex_local_degree for the stresses): in the
-// mixed principle the displacement is the multiplier of equilibrium, and where the stress
-// space cannot see a displacement column's strains the mixed solution's displacement falls
-// behind what its own space holds. Measured at p = 16 against the FEM's limit, with a
-// displacement-only Ritz solve on the same displacement space beside it (an experiment, not in
+// them and floor(rfm.vertex_local_degree_ratio p), p / 2 by default, up to rfm.vertex_local_degree
+// for the stresses): in the mixed principle the displacement is the multiplier of equilibrium, and
+// where the stress space cannot see a displacement column's strains the mixed solution's
+// displacement falls behind what its own space holds. Measured at p = 16 against the FEM's limit,
+// with a displacement-only Ritz solve on the same displacement space beside it (an experiment, not in
 // the code): on the stepped ring with both degrees 4, Phi_L of the mixed solution 7.7e-6 off,
 // of the Ritz solution 6.4e-7; with stresses of degree 8 or 12 over displacements of degree 4,
 // the mixed Phi_L 1.5e-6 and 1.2e-6. The same ring moved to r = 10 m (plane strain, no hoop
