@@ -395,7 +395,7 @@ namespace rfm
   // (RfmSettings::vertex_local_stress_degree): floor(ratio p), at least the displacement
   // columns' degree and at most rfm.vertex_local_degree. In the stepped ring's disc (the
   // polynomials times the omegas cannot carry the smooth field there) the columns of the
-  // polynomials' degree take the indicator at p = 8 from 1.06e-6 to 6.9e-7 (measured; at
+  // polynomials' degree take the indicator at p = 8 from 1.06e-6 to 6.7e-7 (measured; at
   // p = 16 1.5e-8 -> 3.5e-9, README 'The vertex's local degree').
   TEST(OutlineModel, VertexLocalDegreeRatioRaisesTheLocalStressColumns)
   {
