@@ -438,8 +438,11 @@ namespace rfm
           // rough vertex's test asks 1e-6; 24: within it). 1.13e-6 with the discs apart.
           const std::vector<VertexEnrichment::Circle> rims =
             v.curved() ? overlapping(v.vertex(), v.cutoff_radius()) : std::vector<VertexEnrichment::Circle>{};
-          Quadrature2D q = v.section_support() ? v.section_rule(n_vertex, n_vertex, crossed)
-                                               : v.near_rule(n_vertex, n_vertex, 8, rims, n_rims);
+          // The outermost layer (a fifth of the radius to the rim) with the section's count
+          // (VertexEnrichment::near_rule): at p = 16 the hubs' Phi_R moved 5.7e-8 and 8.6e-8
+          // of it against n_vertex points there.
+          Quadrature2D q = v.section_support() ? v.section_rule(n_vertex, n_vertex, crossed, 8, n_near)
+                                               : v.near_rule(n_vertex, n_vertex, 8, rims, n_rims, n_near);
           if (rough_[static_cast<std::size_t>(&v - vertices_.data())])
             rough_discs.push_back({q, v.vertex().r, v.vertex().z, v.cutoff_radius()});
           any_section |= v.section_support();
@@ -2785,12 +2788,32 @@ namespace rfm
       return 0.0;
     const axisym::Body &body = *problem.body;
     const double nu = problem.material.poisson_ratio;
-    // As make_vertices: the local columns' degree, at most 8 stress families (3 unit tensors,
-    // a tangent dyad per free face, a normal dyad per symmetry face, the hoop stress; the
-    // displacement families are fewer), and the modes' multipliers of degree 4 at least (the
-    // section support) with the hoop shadow.
+    // As make_vertices: the local columns' degree, the stress families (3 unit tensors and
+    // the hoop stress for every polynomial of the disc, a tangent dyad per free face and a
+    // tangent and a normal dyad per symmetry face, with the polynomials along the face alone
+    // where the face is a line: VertexEnrichment::n_local_columns; the displacement families
+    // are at most 4), and the modes' multipliers of degree 4 at least (the section support)
+    // with the hoop shadow. Without the vertex's faces (a notch root) 8 full families.
     const double d = options.vertex_local_stress_degree();
-    const double local = d < 0.0 ? 0.0 : 8.0 * (d + 1.0) * (d + 2.0) / 2.0;
+    const double per_disc = (d + 1.0) * (d + 2.0) / 2.0, per_face = d + 1.0;
+    auto local_columns = [&](const SingularVertex *v) {
+      if (d < 0.0)
+        return 0.0;
+      if (!v)
+        return 8.0 * per_disc;
+      double n = 4.0 * per_disc;
+      for (const axisym::OutlineEdge &e : body.outline.edges())
+        {
+          const bool before = std::hypot(e.end.r - v->at.r, e.end.z - v->at.z) < 1e-12 && e.part == v->part_before;
+          const bool after = std::hypot(e.start.r - v->at.r, e.start.z - v->at.z) < 1e-12 && e.part == v->part_after;
+          if (!before && !after)
+            continue;
+          const WedgeFace face = wedge_face(body.conditions.at(e.part));
+          const double families = face == WedgeFace::clamped ? 0.0 : face == WedgeFace::symmetry ? 2.0 : 1.0;
+          n += families * (e.kind == axisym::OutlineEdge::Kind::arc ? per_disc : per_face);
+        }
+      return n;
+    };
     const double m = std::max(options.vertex_mode_degree, 4);
     const double per_field = (m + 1.0) * (m + 2.0) / 2.0 + 1.0;
     auto mode_columns = [&](const SingularVertex &v) {
@@ -2806,13 +2829,13 @@ namespace rfm
       {
         const bool inner = options.vertex_inner_disc && !v.modes.empty() &&
                            v.modes.front().lambda.real() < OutlineModel::inner_disc_max_exponent;
-        n += mode_columns(v) + (inner ? 2.0 : 1.0) * local;
+        n += mode_columns(v) + (inner ? 2.0 : 1.0) * local_columns(&v);
       }
     if (options.rough_vertices)
       for (const SingularVertex &v : rough_vertices(body, nu))
-        n += mode_columns(v) + local;
+        n += mode_columns(v) + local_columns(&v);
     if (options.notch_roots)
-      n += static_cast<double>(axisym::notch_roots(body).size()) * local;
+      n += static_cast<double>(axisym::notch_roots(body).size()) * local_columns(nullptr);
     return n;
   }
 

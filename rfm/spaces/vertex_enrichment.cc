@@ -1,5 +1,7 @@
 #include "rfm/spaces/vertex_enrichment.h"
 
+#include "rfm/spaces/basis.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -12,6 +14,38 @@ namespace rfm
   namespace
   {
     constexpr double pi = 3.14159265358979323846;
+
+    /// The local stress columns' polynomials of total degree <= d (OutlineModel: up to 24) at
+    /// a point: L_a(u') L_b(w'), Legendre polynomials in the offsets along and across the
+    /// bisector over rho_0, u = rho cos theta and w = rho sin theta, mapped so that the body's
+    /// part of the disc, rho <= rho_0 and |theta| <= alpha, spans [-1, 1] in both:
+    /// u in [min(cos alpha, 0), 1], |w| <= 1 (sin alpha for alpha < pi / 2). The span is that of
+    /// the monomials xi^a eta^b of the offsets, but the monomials lose their independence with
+    /// the degree, most on a disc the body fills only half of (a 186-degree vertex): on issue
+    /// 24's heated hub at p = 16 with rfm.vertex_local_degree_ratio 1 (degree 16) the
+    /// orthonormalization dropped 777 directions with the monomials, 565 with these, and the
+    /// indicator was 3.1e-7 against 1.0e-7.
+    class WedgeLegendre
+    {
+    public:
+      WedgeLegendre(const int degree, const double beta, const double alpha)
+        : pu_(degree + 1), pw_(degree + 1), dp_(degree + 1), c_(std::cos(beta)), s_(std::sin(beta)),
+          u_min_(alpha > 0.5 * pi ? std::cos(alpha) : 0.0), w_max_(alpha >= 0.5 * pi ? 1.0 : std::sin(alpha))
+      {}
+      /// At the offsets (dr, dz) from the vertex, over the disc's radius rho_0.
+      void at(const double dr, const double dz, const double rho_0)
+      {
+        const double u = (dr * c_ + dz * s_) / rho_0, w = (dz * c_ - dr * s_) / rho_0;
+        const int d = static_cast<int>(pu_.size()) - 1;
+        legendre_values(d, 2.0 * (u - u_min_) / (1.0 - u_min_) - 1.0, pu_, dp_);
+        legendre_values(d, w / w_max_, pw_, dp_);
+      }
+      double operator()(const int a, const int b) const { return pu_[a] * pw_[b]; }
+
+    private:
+      Eigen::VectorXd pu_, pw_, dp_;
+      double c_, s_, u_min_, w_max_;
+    };
     /// The angle from the bisector (direction beta) of the direction phi, in [-pi, pi].
     double from_bisector(const double phi, const double beta)
     {
@@ -87,9 +121,9 @@ namespace rfm
       {
         if (face[f] == WedgeFace::clamped)
           continue;
-        families_.push_back({dyad(t[f]), factor(1 - f), false, f});
+        families_.push_back({dyad(t[f]), factor(1 - f), false, f, f});
         if (face[f] == WedgeFace::symmetry)
-          families_.push_back({dyad(normal_[f]), factor(1 - f), false, -1});
+          families_.push_back({dyad(normal_[f]), factor(1 - f), false, -1, f});
       }
     families_.push_back({{0, 0, 0}, 0, true});
     // Displacements: e_r and e_z times l_f of each face where u is constrained (clamped or
@@ -123,19 +157,32 @@ namespace rfm
       shadows_.clear();
   }
 
+  Eigen::Index VertexEnrichment::n_full_families() const
+  {
+    return static_cast<Eigen::Index>(
+      std::count_if(families_.begin(), families_.end(), [this](const Family &f) { return !reduced(f); }));
+  }
+
+  Eigen::Index VertexEnrichment::n_reduced_families() const
+  {
+    return static_cast<Eigen::Index>(families_.size()) - n_full_families();
+  }
+
   Eigen::Index VertexEnrichment::n_local_columns() const
   {
     if (local_degree_ < 0)
       return 0;
-    return static_cast<Eigen::Index>(std::max(families_.size(), vector_families_.size())) *
-           (local_degree_ + 1) * (local_degree_ + 2) / 2;
+    // Per polynomial of the disc a block of the full families (or of the displacement ones,
+    // where they are more), then the reduced families' polynomials along their faces.
+    const Eigen::Index block = std::max(n_full_families(), static_cast<Eigen::Index>(vector_families_.size()));
+    return block * (local_degree_ + 1) * (local_degree_ + 2) / 2 + n_reduced_families() * (local_degree_ + 1);
   }
 
   Eigen::Index VertexEnrichment::n_inner_columns() const
   {
     if (inner_degree_ < 0)
       return 0;
-    return static_cast<Eigen::Index>(families_.size()) * (inner_degree_ + 1) * (inner_degree_ + 2) / 2;
+    return n_full_families() * (inner_degree_ + 1) * (inner_degree_ + 2) / 2 + n_reduced_families() * (inner_degree_ + 1);
   }
 
   void VertexEnrichment::set_inner_disc(const int degree)
@@ -164,6 +211,11 @@ namespace rfm
     const int d = multiplier_degree_;
     const double e_over_rv = material_.youngs_modulus / at_.r;
     std::vector<double> xi_pow(d + 1), eta_pow(d + 1);
+    WedgeLegendre legendre(std::max(local_degree_, 0), beta_, wedge_.half_angle()),
+      inner_legendre(std::max(inner_degree_, 0), beta_, wedge_.half_angle());
+    Eigen::VectorXd along(std::max({local_degree_, inner_degree_, 0}) + 1), along_d(along.size());
+    // The local columns per polynomial of the disc (n_local_columns).
+    const Eigen::Index block = std::max(n_full_families(), static_cast<Eigen::Index>(vector_families_.size()));
     // One real field at a point: (sigma_rr, sigma_zz, sigma_tt, sigma_rz), the plane strains
     // (e_rr, e_zz, gamma_rz) and (u_r, u_z), all per unit amplitude, u already over mu.
     struct Field
@@ -313,7 +365,8 @@ namespace rfm
           }
         if (!in_disc || modes_only)
           continue;
-        // The local stress columns: chi q (l_0 / rho_0)^a (l_1 / rho_0)^b T.
+        // The local stress columns: chi q (l_0 / rho_0)^a (l_1 / rho_0)^b T, q of WedgeLegendre;
+        // the displacement columns chi m (l_0 / rho_0)^a (l_1 / rho_0)^b V, m a monomial.
         const double xi = dr / cutoff_radius_, eta = dz / cutoff_radius_;
         Eigen::Index col = n_mode_columns();
         // The faces' functions over rho_0 with their gradients: the line's, or on an arc the
@@ -337,29 +390,49 @@ namespace rfm
               l_r[face] = normal_[face][0] / cutoff_radius_;
               l_z[face] = normal_[face][1] / cutoff_radius_;
             }
-        // The stress families at this point times q (the face functions over rho_0 times
-        // `scale`), from column `at` on; returns the column after them.
+        // A stress family at this point times q (the face functions over rho_0 times `scale`),
+        // in column `at`.
+        auto add_family = [&](const Family &fam, const double q, const double scale, const Eigen::Index at) {
+          double w = q;
+          if (fam.factors & 1)
+            w *= scale * l[0];
+          if (fam.factors & 2)
+            w *= scale * l[1];
+          if (fam.hoop)
+            out.stress[tt](k, at) = w;
+          else
+            {
+              const std::array<double, 3> &T =
+                fam.tangent_of >= 0 && frame_ && frame_->face_is_arc(fam.tangent_of) ? arc_dyad[fam.tangent_of]
+                                                                                   : fam.tensor;
+              out.stress[rr](k, at) = w * T[0];
+              out.stress[zz](k, at) = w * T[1];
+              out.stress[rz](k, at) = w * T[2];
+            }
+        };
+        // The full families times q from column `at` on; returns the column after them.
         auto add_families = [&](const double q, const double scale, Eigen::Index at) {
           for (const Family &fam : families_)
-            {
-              double w = q;
-              if (fam.factors & 1)
-                w *= scale * l[0];
-              if (fam.factors & 2)
-                w *= scale * l[1];
-              if (fam.hoop)
-                out.stress[tt](k, at) = w;
-              else
-                {
-                  const std::array<double, 3> &T =
-                    fam.tangent_of >= 0 && frame_ && frame_->face_is_arc(fam.tangent_of) ? arc_dyad[fam.tangent_of]
-                                                                                       : fam.tensor;
-                  out.stress[rr](k, at) = w * T[0];
-                  out.stress[zz](k, at) = w * T[1];
-                  out.stress[rz](k, at) = w * T[2];
-                }
-              ++at;
-            }
+            if (!reduced(fam))
+              add_family(fam, q, scale, at++);
+          return at;
+        };
+        // The reduced families times chi L_j(s_f) (j <= degree), s_f the offset along the
+        // family's face over the radius; from column `at` on, returns the column after them.
+        auto add_reduced = [&](const double chi_value, const double radius, const int degree, const double scale,
+                               Eigen::Index at) {
+          if (degree < 0)
+            return at;
+          for (const Family &fam : families_)
+            if (reduced(fam))
+              {
+                const int f = fam.own_face;
+                // The face's direction: the normal turned back.
+                const double s_f = (dr * normal_[f][1] - dz * normal_[f][0]) / radius;
+                legendre_values(degree, s_f, along.head(degree + 1), along_d.head(degree + 1));
+                for (int j = 0; j <= degree; ++j)
+                  add_family(fam, chi_value * along[j], scale, at++);
+              }
           return at;
         };
         // c x^a y^b, multiplied out in that order.
@@ -370,11 +443,13 @@ namespace rfm
             c *= y;
           return c;
         };
+        legendre.at(dr, dz, cutoff_radius_);
         for (int deg = 0; deg <= local_degree_; ++deg)
           for (int b = 0; b <= deg; ++b)
             {
-              const double q = times_monomial(chi.value, xi, eta, deg - b, b);
-              // q's gradient (chi and the monomial).
+              // The stresses' polynomial (WedgeLegendre); the displacements' monomial and its
+              // gradient.
+              const double q = chi.value * legendre(deg - b, b);
               const int a_pow = deg - b;
               const double mono = times_monomial(1.0, xi, eta, a_pow, b);
               double mono_r = 0.0, mono_z = 0.0;
@@ -407,18 +482,21 @@ namespace rfm
                   out.strain[rz](k, c) = g_z * fam.vector[0] + g_r * fam.vector[1];
                 }
               add_families(q, 1.0, first);
-              col = first + static_cast<Eigen::Index>(std::max(families_.size(), vector_families_.size()));
+              col = first + block;
             }
-        // The inner disc's stress columns: chi_in q (l_0 / rho_in)^a (l_1 / rho_in)^b T.
+        col = add_reduced(chi.value, cutoff_radius_, local_degree_, 1.0, col);
+        // The inner disc's stress columns: chi_in q (l_0 / rho_in)^a (l_1 / rho_in)^b T, q of
+        // WedgeLegendre over rho_in.
         const double rho_in = inner_disc_ratio * cutoff_radius_;
         const Cutoff chi_in = edge_cutoff(rho, rho_in);
         if (inner_degree_ < 0 || chi_in.value == 0.0)
           continue;
-        const double xi_in = dr / rho_in, eta_in = dz / rho_in;
+        inner_legendre.at(dr, dz, rho_in);
         col = n_mode_columns() + n_local_columns();
         for (int deg = 0; deg <= inner_degree_; ++deg)
           for (int b = 0; b <= deg; ++b)
-            col = add_families(times_monomial(chi_in.value, xi_in, eta_in, deg - b, b), 1.0 / inner_disc_ratio, col);
+            col = add_families(chi_in.value * inner_legendre(deg - b, b), 1.0 / inner_disc_ratio, col);
+        add_reduced(chi_in.value, rho_in, inner_degree_, 1.0 / inner_disc_ratio, col);
       }
     return out;
   }
@@ -470,34 +548,45 @@ namespace rfm
   }
 
   Quadrature2D VertexEnrichment::near_rule(const int n_radial, const int n_angular, const int n_layers,
-                                           const std::vector<Circle> &rims, const int n_beyond_rims) const
+                                           const std::vector<Circle> &rims, const int n_beyond_rims,
+                                           const int n_outer) const
   {
     if (n_radial < 1 || n_angular < 1 || n_layers < 0)
       throw std::invalid_argument("VertexEnrichment::near_rule: point counts must be positive");
     if (frame_)
-      return frame_->near_rule(cutoff_radius_, n_radial, n_angular, n_layers, rims, n_beyond_rims);
+      return frame_->near_rule(cutoff_radius_, n_radial, n_angular, n_layers, rims, n_beyond_rims, n_outer);
     if (!rims.empty())
       throw std::invalid_argument("VertexEnrichment::near_rule: rims only on curved faces");
     const std::vector<double> panels = angular_panels({}, 0.5 * pi, 1e-12);
-    // Radial layers [0.2^(i+1), 0.2^i] rho_0, the innermost [0, 0.2^L rho_0] with rho = rho_in s^2.
-    const GaussRule1D ga = gauss_legendre(n_angular);
-    const GaussRule1D radial = polar_radial_rule(cutoff_radius_, n_radial, n_layers);
-    const std::vector<double> rho_nodes(radial.nodes.data(), radial.nodes.data() + radial.nodes.size());
-    const std::vector<double> rho_weights(radial.weights.data(), radial.weights.data() + radial.weights.size());
+    // Radial layers [0.2^(i+1), 0.2^i] rho_0, the innermost [0, 0.2^L rho_0] with rho = rho_in s^2;
+    // the outermost with n_outer points a direction where that is more.
+    const bool outer = n_layers > 0 && n_outer > std::min(n_radial, n_angular);
+    const double outer_from = 0.2 * cutoff_radius_;
+    const GaussRule1D radial = outer ? polar_radial_rule(cutoff_radius_, n_radial, n_layers, {outer_from},
+                                                         std::max(n_radial, n_outer))
+                                     : polar_radial_rule(cutoff_radius_, n_radial, n_layers);
+    const GaussRule1D ga = gauss_legendre(n_angular), ga_outer = gauss_legendre(std::max(n_angular, n_outer));
+    std::vector<double> rs, zs, ws;
+    for (const bool in_outer : {false, true})
+      {
+        if (in_outer && !outer)
+          break;
+        for_each_direction(panels, in_outer ? ga_outer : ga, beta_, [&](const double phi, const double w_theta) {
+          const double c = std::cos(phi), s = std::sin(phi);
+          for (Eigen::Index i = 0; i < radial.nodes.size(); ++i)
+            if ((outer && radial.nodes[i] > outer_from) == in_outer)
+              {
+                rs.push_back(at_.r + radial.nodes[i] * c);
+                zs.push_back(at_.z + radial.nodes[i] * s);
+                ws.push_back(w_theta * radial.weights[i]);
+              }
+        });
+      }
     Quadrature2D q;
-    const Eigen::Index n_points =
-      static_cast<Eigen::Index>(rho_nodes.size()) * (static_cast<Eigen::Index>(panels.size()) - 1) * n_angular;
-    q.r.resize(n_points), q.z.resize(n_points), q.weights.resize(n_points);
-    Eigen::Index at = 0;
-    for_each_direction(panels, ga, beta_, [&](const double phi, const double w_theta) {
-      const double c = std::cos(phi), s = std::sin(phi);
-      for (std::size_t i = 0; i < rho_nodes.size(); ++i, ++at)
-        {
-          q.r[at] = at_.r + rho_nodes[i] * c;
-          q.z[at] = at_.z + rho_nodes[i] * s;
-          q.weights[at] = w_theta * rho_weights[i];
-        }
-    });
+    const auto n_points = static_cast<Eigen::Index>(rs.size());
+    q.r = Eigen::Map<const Eigen::VectorXd>(rs.data(), n_points);
+    q.z = Eigen::Map<const Eigen::VectorXd>(zs.data(), n_points);
+    q.weights = Eigen::Map<const Eigen::VectorXd>(ws.data(), n_points);
     return q;
   }
 
@@ -517,11 +606,12 @@ namespace rfm
   }
 
   Quadrature2D VertexEnrichment::section_rule(const int n_radial, const int n_angular,
-                                              const std::vector<Circle> &circles, const int n_layers) const
+                                              const std::vector<Circle> &circles, const int n_layers,
+                                              const int n_outer) const
   {
     if (!section_support())
       throw std::logic_error("VertexEnrichment::section_rule: no section support");
-    const Quadrature2D disc = near_rule(n_radial, n_angular, n_layers);
+    const Quadrature2D disc = near_rule(n_radial, n_angular, n_layers, {}, 0, n_outer);
     // Also broken at the directions of the outline's vertices, where the reach has a kink.
     std::vector<double> vertex_breaks;
     for (const double phi : ray_breaks_)

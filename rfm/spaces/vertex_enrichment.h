@@ -43,11 +43,13 @@
 // trimmed faces behave like rho, and the polynomial stress columns can neither represent nor
 // see the smooth part of the field there: with the modes alone the stepped ring's Phi_R came
 // within 4e-6 of the FEM's limit at p = 16 but Phi_L stayed 4.8e-4 off. So each vertex also
-// gets chi q T, q a monomial of degree <= local_degree and T one of the smooth tensor families
+// gets chi q T, q a polynomial of degree <= local_degree (products of Legendre polynomials in
+// the offsets along and across the bisector: the .cc's WedgeLegendre) and T one of the smooth tensor families
 // that meet both faces' conditions (l_0 l_1 E, l_1 A_0, l_0 A_1 and the hoop stress, with l_f
 // the face's line function, 1 for a clamped face, and A_f the tensors its condition allows:
 // t t free, t t and n n symmetry, all clamped), and chi q V, V = e_r, e_z times l_f of the
-// faces where u is constrained (and a symmetry face's tangent). Stress columns alone made the
+// faces where u is constrained (and a symmetry face's tangent), q a monomial of the offsets
+// there (the cut of their orthonormalization was set on those). Stress columns alone made the
 // stress worse (Phi_R 4.4e-6 -> 2.9e-5 off at p = 16, far samples 0.9 % -> 3.8 % at p = 12):
 // the displacement columns give them equilibrium.
 // With both, Phi_L is 2.3e-5 off at p = 12 and the far samples 0.6 % at p = 8 (4.4 % without).
@@ -165,13 +167,19 @@ namespace rfm
     /// Columns: for each field (modes in order; real part, then imaginary part) every
     /// monomial, ordered by i + j, then by j, and last its hoop shadow (set_hoop_shadow).
     Eigen::Index n_mode_columns() const { return n_fields() * columns_per_field(); }
-    /// The local stress columns after the modes' (local_degree >= 0): chi q T with q a
-    /// monomial xi^i eta^j (i + j <= local_degree) and T one of the smooth tensor families
-    /// that meet both face conditions; for i + j <= local_displacement_degree the first of
-    /// them pair with the smooth displacement columns chi q V (V a constant vector times the
+    /// The local stress columns after the modes' (local_degree >= 0): chi q T with T one of
+    /// the smooth tensor families that meet both face conditions. For each polynomial q of
+    /// degree i + j <= local_degree (ordered by i + j, then j) a block of the full families;
+    /// for i + j <= local_displacement_degree the first of them pair with the smooth
+    /// displacement columns chi m V (m the monomial xi^i eta^j, V a constant vector times the
     /// line functions of the faces where the displacement is constrained), the others have a
-    /// zero displacement column.
+    /// zero displacement column. After all blocks the reduced families (a face's own tensors
+    /// on a line face, Family::own_face), each with the polynomials along its face up to
+    /// local_degree, stresses alone.
     Eigen::Index n_local_columns() const;
+    /// The stress families with a column per polynomial of the disc, and the reduced ones.
+    Eigen::Index n_full_families() const;
+    Eigen::Index n_reduced_families() const;
     /// The inner disc's stress columns after the local ones (set_inner_disc).
     Eigen::Index n_inner_columns() const;
     Eigen::Index n_columns() const { return n_mode_columns() + n_local_columns() + n_inner_columns(); }
@@ -212,8 +220,15 @@ namespace rfm
     /// integrated to the assembly's accuracy. Plain area weights dr dz.
     /// `rims`: other discs overlapping this one, on curved faces only (the frame's rule,
     /// WedgeFrame::near_rule; a vertex between lines keeps its disc clear of the others).
+    /// `n_outer`: the outermost layer, [0.2 rho_0, rho_0], takes at least that many points a
+    /// direction, radially and in angle. There the columns and the polynomials vary over the
+    /// whole disc, as in a cell of the section's rule, and where the model takes the
+    /// polynomials' products on this rule (a rough vertex's disc) they have their full degree
+    /// 2 p there. OutlineModel passes the section rule's count. Measured at p = 16 with
+    /// n_outer 0 against 8 and 16 more points than n_radial: Phi_R of issue 24's pressed hub
+    /// moved 5.7e-8 of it (the two within 5e-9), of the heated hub 8.6e-8 (within 1e-8).
     Quadrature2D near_rule(int n_radial, int n_angular, int n_layers = 8, const std::vector<Circle> &rims = {},
-                           int n_beyond_rims = 0) const;
+                           int n_beyond_rims = 0, int n_outer = 0) const;
 
     /// Section support of the mode columns (rfm.vertex_support "section"; OutlineModel decides
     /// where: re-entrant vertices about which the section is star-shaped, no die). Each mode
@@ -266,8 +281,9 @@ namespace rfm
     /// is steep, see the .cc), radially in pieces of ratio at most 3, broken where a ray
     /// crosses a circle, with n_radial points each. Plain area weights dr dz.
     /// Precondition: section_support().
+    /// `n_outer`: as near_rule's, for the disc.
     Quadrature2D section_rule(int n_radial, int n_angular, const std::vector<Circle> &circles = {},
-                              int n_layers = 8) const;
+                              int n_layers = 8, int n_outer = 0) const;
 
   private:
     /// The ends of the angular panels in theta, from -alpha to alpha: split at the faces'
@@ -299,8 +315,16 @@ namespace rfm
       int factors = 0;
       bool hoop = false;
       int tangent_of = -1; ///< the face whose tangent dyad this is (per point on an arc)
+      /// l_other A_f: a tensor that meets face f's condition, times the other face's function.
+      /// If face f is a line (reduced()), q l_other A_f with q = l_f q' is q' l_0 l_1 A_f, of the
+      /// first families' span already; so q runs over the polynomials of the coordinate along
+      /// face f alone (degree <= d: d + 1 columns instead of (d + 1)(d + 2) / 2), the same span.
+      int own_face = -1;
     };
     std::vector<Family> families_;
+    /// Whether fam's columns are the reduced ones (Family::own_face): its face is a line.
+    bool reduced(const Family &fam) const { return fam.own_face >= 0 && !(frame_ && frame_->face_is_arc(fam.own_face)); }
+
     /// A smooth displacement family: a constant vector times the line functions of `factors`.
     struct VectorFamily
     {

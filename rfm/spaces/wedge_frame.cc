@@ -62,7 +62,7 @@ namespace rfm
 
   Quadrature2D WedgeFrame::near_rule(const double rho_0, const int n_radial, const int n_angular,
                                      const int n_layers, const std::vector<Circle> &rims,
-                                     const int n_beyond_rims) const
+                                     const int n_beyond_rims, const int n_outer) const
   {
     if (n_radial < 1 || n_angular < 1 || n_layers < 0)
       throw std::invalid_argument("WedgeFrame::near_rule: point counts must be positive");
@@ -77,9 +77,17 @@ namespace rfm
           if (b > 1e-9 * rho_0 && b < (1.0 - 1e-9) * rho_0)
             radial_breaks.push_back(b);
       }
-    const GaussRule1D radial = polar_radial_rule(rho_0, n_radial, n_layers, radial_breaks, n_beyond_rims),
+    // The outermost layer with n_outer points: a break where it starts, from which on the
+    // rule takes the count beyond the breaks.
+    int n_beyond = n_beyond_rims;
+    if (n_layers > 0 && n_outer > std::min(n_radial, n_angular))
+      {
+        radial_breaks.push_back(0.2 * rho_0);
+        n_beyond = std::max(n_beyond, n_outer);
+      }
+    const GaussRule1D radial = polar_radial_rule(rho_0, n_radial, n_layers, radial_breaks, n_beyond),
                       ga_near = gauss_legendre(n_angular),
-                      ga_beyond = gauss_legendre(std::max(n_angular, n_beyond_rims));
+                      ga_beyond = gauss_legendre(std::max(n_angular, n_beyond));
     const double first_crossing =
       radial_breaks.empty() ? rho_0 : *std::min_element(radial_breaks.begin(), radial_breaks.end());
     std::vector<double> rs, zs, ws;

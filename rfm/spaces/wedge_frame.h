@@ -86,8 +86,10 @@ namespace rfm
     /// whose third derivatives jump on its rim, are integrated piecewise smoothly; from the
     /// first ring that crosses a rim outward, n_beyond_rims points a direction where that
     /// is more.
+    /// `n_outer`: the outermost layer, [0.2 rho_0, rho_0], takes at least that many points a
+    /// direction, radially and in angle (VertexEnrichment::near_rule says why).
     Quadrature2D near_rule(double rho_0, int n_radial, int n_angular, int n_layers,
-                           const std::vector<Circle> &rims = {}, int n_beyond_rims = 0) const;
+                           const std::vector<Circle> &rims = {}, int n_beyond_rims = 0, int n_outer = 0) const;
 
   private:
     axisym::Point at_;
