@@ -2802,15 +2802,14 @@ namespace rfm
       if (!v)
         return 8.0 * per_disc;
       double n = 4.0 * per_disc;
-      for (const axisym::OutlineEdge &e : body.outline.edges())
+      const auto [arriving, leaving] = body.outline.edges_at(v->at);
+      for (const axisym::OutlineEdge *e : {arriving, leaving})
         {
-          const bool before = std::hypot(e.end.r - v->at.r, e.end.z - v->at.z) < 1e-12 && e.part == v->part_before;
-          const bool after = std::hypot(e.start.r - v->at.r, e.start.z - v->at.z) < 1e-12 && e.part == v->part_after;
-          if (!before && !after)
+          if (!e)
             continue;
-          const WedgeFace face = wedge_face(body.conditions.at(e.part));
+          const WedgeFace face = wedge_face(body.conditions.at(e->part));
           const double families = face == WedgeFace::clamped ? 0.0 : face == WedgeFace::symmetry ? 2.0 : 1.0;
-          n += families * (e.kind == axisym::OutlineEdge::Kind::arc ? per_disc : per_face);
+          n += families * (e->kind == axisym::OutlineEdge::Kind::arc ? per_disc : per_face);
         }
       return n;
     };
