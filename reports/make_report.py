@@ -1576,6 +1576,35 @@ def resonant_vertex_rows(corners, out_dir):
               "2; sigma_zz at (0.8, 0) -476.54 and -476.75 MPa against the FEM's -472.64; before the arc's modes "
               "of 9.5 they raised the indicator from 1.06e-4 to 1.61e-4).")
     md.append("")
+    md += resonant_amplitude_rows(c)
+    return md
+
+
+def resonant_amplitude_rows(c):
+    """The rho ln rho term's amplitude at each resonant vertex: the local problem's, the one
+    fitted to each FEM level's stress along the symmetry line, and the RFM's log column's."""
+    a = c.get("resonant_amplitudes")
+    if not a:
+        return []
+    levels = numbered(a[0]["fem"], "L")
+    degrees = numbered(a[0].get("rfm", {}), "p")
+    md = ["The amplitude a of the stress's rho ln rho term (along the symmetry line from the vertex the stress "
+          "along the traction face has the term -2 a x ln x) is fixed by the temperature gradient g across the "
+          "line: a = 2 E alpha g / (pi (1 - nu)) from the local problem (`ResonantVertex::theory_amplitude`; "
+          "`rfm_solve` warns, `resonant_log_amplitude`, where its own amplitude is off it by more than half). "
+          "An independent check: the FEM's stress at 30 points along the line, x geometric from a two-hundredth "
+          "of a tenth of the line's length to that tenth, fitted by least squares with 1, x, x ln x, x^2, "
+          "x^2 ln x (`verification/corners.cc`, ResonantProfiles; the fit's basis alone moves the result by up "
+          "to 0.7 % at L = 5, measured apart). 'RFM' is the coefficient of the log column at p (the solve's "
+          "amplitude, not the local problem's). All in Pa/m.", "",
+          "| vertex | local problem | " + " | ".join(f"FEM {l}" for l in levels) + " | "
+          + " | ".join(f"RFM p = {d[1:]}" for d in degrees) + " | FEM finest vs local problem |",
+          "|---|---|" + "---|" * (len(levels) + len(degrees)) + "---|"]
+    for v in a:
+        md.append(f"| ({v['r']:g}, {v['z']:g}) | {v['theory']:.4e} | "
+                  + " | ".join(f"{v['fem'][l]:.4e}" for l in levels) + " | "
+                  + " | ".join(f"{v['rfm'][d]:.4e}" for d in degrees) + f" | {v['fem_vs_theory']:.1e} |")
+    md.append("")
     return md
 
 
