@@ -177,6 +177,8 @@ namespace axisym
     /// at p = 16, disc -> section: the stepped shaft's Phi_R 2.6e-5 -> 3.3e-6 and its
     /// indicator 2.5e-4 -> 1.3e-5; the stepped ring's indicator 1.6e-6 -> 3.5e-7. There the
     /// modes' multipliers take at least degree 4 (vertex_mode_degree is raised to it).
+    /// `section` also puts a traction jump's field between two lines on the whole section
+    /// (OutlineModel::traction_jumps): the pressure band's indicator at p = 16 1.94e-5 -> 2.5e-7.
     enum class VertexSupport
     {
       local,

@@ -451,7 +451,17 @@ namespace rfm
           rules.push_back(std::move(q));
         }
       for (std::size_t i = 0; i < jumps_.size(); ++i)
-        if (jump_rules_[i])
+        if (jump_rules_[i] && jump_sections_[i])
+          {
+            // A jump on the section: the vertices' section rule about it (every volume
+            // integral on it, as with a vertex's section support).
+            Quadrature2D q = jump_sections_[i]->section_rule(n_vertex, n_vertex, circles, 8, n_near);
+            pulls.push_back({jumps_[i].vertex(), jumps_[i].cutoff_radius(), true});
+            any_section = true;
+            total += q.weights.size();
+            rules.push_back(std::move(q));
+          }
+        else if (jump_rules_[i])
           {
             // Three radial layers: the jump's products are bounded (degree 0 times
             // polynomials, rho log rho in the hoop strain); on the hub of issue 24 at p = 16
@@ -1995,6 +2005,9 @@ namespace rfm
     const axisym::Body &body = *problem.body;
     const std::vector<axisym::OutlineEdge> &edges = body.outline.edges();
     const double tol = 1e-9 * body.outline.size();
+    const bool has_die = !zones_.empty() || std::any_of(body.conditions.begin(), body.conditions.end(), [](const auto &pc) {
+                           return pc.second.kind == axisym::PartCondition::Kind::die;
+                         });
     // The vertices with a jump (v between edges i and i + 1), found with a provisional radius.
     const std::size_t n_edges = edges.size();
     std::vector<bool> jump_at(n_edges, false);
@@ -2040,6 +2053,22 @@ namespace rfm
                              rho_0, material_.poisson_ratio);
         jumps_.push_back(std::move(*jump));
         jump_rules_.push_back(shared == nullptr);
+        // The whole section instead of the disc (traction_jump.h: the cutoff's steep flank
+        // left the polynomials an algebraic remainder): a vertex without modes or local
+        // columns gives the factors and the section rule. Between lines only (an arc's mapped
+        // angle is made for the disc), where the jump has its own rule, without a die.
+        jump_sections_.emplace_back();
+        if (options.vertex_support == DiscretizationOptions::VertexSupport::section && shared == nullptr &&
+            !has_die && arriving.kind == axisym::OutlineEdge::Kind::line &&
+            leaving.kind == axisym::OutlineEdge::Kind::line)
+          {
+            const Wedge wedge(jumps_.back().angle(), wedge_face(body.conditions.at(leaving.part)),
+                              wedge_face(body.conditions.at(arriving.part)), material_.poisson_ratio);
+            const axisym::Point t = leaving.tangent_at(0.0);
+            VertexEnrichment support(v, std::array<double, 2>{t.r, t.z}, wedge, {}, rho_0, material_);
+            if (set_section_support(support, body, static_cast<int>(i), static_cast<int>((i + 1) % n_edges)))
+              jump_sections_.back() = std::move(support);
+          }
       }
   }
 
@@ -2109,9 +2138,17 @@ namespace rfm
     const double mu = material_.youngs_modulus / (2.0 * (1.0 + material_.poisson_ratio));
     for (const TractionJump &j : jumps_)
       {
+        // On the section (traction_jumps()): F = 1 - (1 - G)^4 instead of the cutoff, G the
+        // section factor (1 at the vertex, 0 on the other edges where the component enters
+        // their condition), so that F - 1 = O(rho^4) at the vertex.
+        const std::optional<VertexEnrichment> &support = jump_sections_[static_cast<std::size_t>(&j - jumps_.data())];
+        auto flat = [](const double g) {
+          const double h = 1.0 - g, h2 = h * h;
+          return 1.0 - h2 * h2;
+        };
         std::vector<Eigen::Index> in;
         for (Eigen::Index k = 0; k < r.size(); ++k)
-          if (std::hypot(r[k] - j.vertex().r, z[k] - j.vertex().z) < j.cutoff_radius())
+          if (support || std::hypot(r[k] - j.vertex().r, z[k] - j.vertex().z) < j.cutoff_radius())
             in.push_back(k);
         if (in.empty())
           continue;
@@ -2123,9 +2160,26 @@ namespace rfm
             h[k] = 1e-3 * std::hypot(rin[k] - j.vertex().r, zin[k] - j.vertex().z);
           }
         const Eigen::MatrixXd s = j.stress(rin, zin), s0 = structure_stress(rin, zin).s0;
-        const Eigen::VectorXd chi = j.cutoff(rin, zin);
+        Eigen::MatrixXd chi_s(m, n_stress_components);
+        Eigen::VectorXd chi;
+        auto cut_of_u = [&](const Eigen::VectorXd &x, const Eigen::VectorXd &y) -> Eigen::VectorXd {
+          if (!support)
+            return j.cutoff(x, y);
+          return support->section_factors()(x, y).u.unaryExpr(flat);
+        };
+        if (support)
+          {
+            const VertexFactors f = support->section_factors()(rin, zin);
+            chi_s = f.stress.unaryExpr(flat);
+            chi = f.u.unaryExpr(flat);
+          }
+        else
+          {
+            chi = j.cutoff(rin, zin);
+            chi_s = chi.replicate(1, n_stress_components);
+          }
         auto cut_u = [&](const Eigen::VectorXd &x, const Eigen::VectorXd &y) {
-          return Eigen::MatrixXd(j.cutoff(x, y).asDiagonal() * j.displacement(x, y, mu));
+          return Eigen::MatrixXd(cut_of_u(x, y).asDiagonal() * j.displacement(x, y, mu));
         };
         const Eigen::MatrixXd u = chi.asDiagonal() * j.displacement(rin, zin, mu);
         // d/dr and d/dz of chi u: (f(-2h) - 8 f(-h) + 8 f(h) - f(2h)) / (12 h).
@@ -2146,7 +2200,7 @@ namespace rfm
             const Eigen::Index i = in[k];
             if (!(h[k] > 0.0))
               continue; // the vertex itself: no direction
-            out.sigma.row(i) += chi[k] * (s.row(k) - s0.row(k));
+            out.sigma.row(i) += chi_s.row(k).cwiseProduct(s.row(k) - s0.row(k));
             // The wedge field's hoop stress with its own displacement is Hooke's (as the modes'
             // is): with nu (S_rr + S_zz) alone the hoop strain u_r / r of its rho ln rho term
             // was left to the polynomial P_tt.

@@ -352,7 +352,16 @@ namespace rfm
     /// of the other enrichments' supports; a singular vertex's own cutoff when the vertex has
     /// modes too). Their products are integrated on the jump's polar rule (the vertex's when
     /// it has modes), like the enrichment columns'.
+    /// With rfm.vertex_support `section` (the default), a jump between two lines with its own
+    /// rule, about which the section is star-shaped, in a problem without a die, takes the
+    /// whole section instead of the disc: the field is F_c (S - s0) per stress component c and
+    /// F u_D, F = 1 - (1 - G)^4 with G the product of the other edges' omegas where the
+    /// component enters their condition, 1 at the vertex (vertex_enrichment.h's section
+    /// factors; traction_jump.h says why), on a polar rule about the vertex over the section,
+    /// which then takes every volume integral.
     const std::vector<TractionJump> &traction_jumps() const { return jumps_; }
+    /// Whether jump i's field covers the section (above).
+    bool traction_jump_on_section(std::size_t i) const { return jump_sections_.at(i).has_value(); }
     /// Resonant vertices (resonant_vertex.h): at every vertex of axisym::resonant_vertices (a
     /// symmetry line meets a traction part at a right angle and the loads are not symmetric
     /// about the line; no die), the log field's stress and displacement columns times the
@@ -551,6 +560,9 @@ namespace rfm
     std::vector<bool> rough_; ///< per vertices_: a rough vertex (make_vertex_enrichments)
     std::vector<TractionJump> jumps_;
     std::vector<ResonantVertex> resonances_;
+    /// For each jump: its section support (make_traction_jumps), a vertex without modes or
+    /// local columns whose factors and section rule the jump's field takes; none: the disc.
+    std::vector<std::optional<VertexEnrichment>> jump_sections_;
     std::vector<bool> jump_rules_;
     Quadrature2D near_;      ///< the near-edge and near-vertex rules of all enrichments
     /// The first n_near_in_discs_ points of near_ lie in some rule's disc (all of them
@@ -567,6 +579,9 @@ namespace rfm
     {
       for (const VertexEnrichment &v : vertices_)
         if (v.section_support())
+          return true;
+      for (const std::optional<VertexEnrichment> &j : jump_sections_)
+        if (j)
           return true;
       return false;
     }

@@ -1012,6 +1012,49 @@ namespace rfm
     EXPECT_GT(std::abs(without.functionals().reissner / fem_energy - 1.0), 3e-4);
   }
 
+  // A traction jump between two lines on a section star-shaped about it takes the whole
+  // section (OutlineModel::traction_jumps, session 79): F = 1 - (1 - G)^4 instead of the
+  // cutoff, with G the other edges' omegas. On the pressure band at p = 12 the indicator
+  // was 1.06e-4 with the disc and 2.16e-6 so, Phi_R 1.1e-5 and 1.6e-7 from the FEM's limit
+  // (-18.665844). Every edge's condition still holds exactly: the free top and outer
+  // surface, the symmetry plane (no shear, u_z = 0) and the bore on both sides of the jump.
+  TEST(OutlineModel, TractionJumpTakesTheWholeSection)
+  {
+    const axisym::Problem problem = axisym::parse_problem(axisym::testing::pressure_band());
+    const double fem_energy = -18.665844;
+    DiscretizationOptions o = problem.rfm;
+    o.degree = 12;
+    const OutlineModel section(problem, o);
+    ASSERT_TRUE(section.ok()) << section.summary().message;
+    ASSERT_EQ(section.traction_jumps().size(), 1u);
+    ASSERT_TRUE(section.traction_jump_on_section(0));
+    EXPECT_LT(section.functionals().indicator(), 5e-6);
+    EXPECT_LT(std::abs(section.functionals().reissner / fem_energy - 1.0), 5e-7);
+    // Points on each edge: top (z = 0.5), outer (r = 1), mid plane (z = 0), bore (r = 0.5).
+    Eigen::VectorXd r(12), z(12);
+    r << 0.55, 0.75, 0.95, 1.0, 1.0, 1.0, 0.55, 0.75, 0.95, 0.5, 0.5, 0.5;
+    z << 0.5, 0.5, 0.5, 0.05, 0.25, 0.45, 0.0, 0.0, 0.0, 0.05, 0.26, 0.45;
+    const FieldValues f = section.evaluate(r, z);
+    for (Eigen::Index k = 0; k < 12; ++k)
+      {
+        EXPECT_NEAR(f.sigma(k, rz), 0.0, 1e-6) << "(" << r[k] << ", " << z[k] << ")";
+        if (k < 3)
+          EXPECT_NEAR(f.sigma(k, zz), 0.0, 1e-6) << "top at r = " << r[k];
+        else if (k < 6)
+          EXPECT_NEAR(f.sigma(k, rr), 0.0, 1e-6) << "outer at z = " << z[k];
+        else if (k < 9)
+          EXPECT_NEAR(f.u(k, 1), 0.0, 1e-18) << "mid plane at r = " << r[k];
+        else
+          EXPECT_NEAR(f.sigma(k, rr), k == 9 ? -1e7 : 0.0, 1e-6) << "bore at z = " << z[k];
+      }
+    o.vertex_support = DiscretizationOptions::VertexSupport::local;
+    const OutlineModel disc(problem, o);
+    ASSERT_TRUE(disc.ok()) << disc.summary().message;
+    ASSERT_EQ(disc.traction_jumps().size(), 1u);
+    EXPECT_FALSE(disc.traction_jump_on_section(0));
+    EXPECT_GT(disc.functionals().indicator(), 5e-5);
+  }
+
   // Near a traction jump the hoop stress obeys Hooke's law, sigma_tt = nu (sigma_rr + sigma_zz)
   // + E u_r / r, as the exact field does: the wedge field's hoop component includes that of
   // its own displacement (its rho ln rho term's hoop strain). With nu (S_rr + S_zz) alone the
@@ -1258,15 +1301,19 @@ namespace rfm
   // tensor rule's cells must be graded across the bore as well as along it. With both the
   // energy at p = 8 is within 5.5e-7 of a rule with 16 more points a direction and 3 x 3
   // cells before grading (measured; graded along the bore only it was 4.9e-5 off, and at
-  // p = 16 8.3e-6 from the FEM's limit instead of 1.8e-6).
+  // p = 16 8.3e-6 from the FEM's limit instead of 1.8e-6). The jump's field in its disc
+  // (rfm.vertex_support local): on the section (the default here) every integral is on the
+  // polar rule about the jump instead.
   TEST(OutlineModel, TractionJumpOnARectangleIsIntegratedAcrossTheSide)
   {
     const axisym::Problem problem = axisym::parse_problem(axisym::testing::pressure_band());
     DiscretizationOptions o = problem.rfm;
     o.degree = 8;
+    o.vertex_support = DiscretizationOptions::VertexSupport::local;
     const OutlineModel m(problem, o);
     ASSERT_TRUE(m.ok()) << m.summary().message;
     ASSERT_EQ(m.traction_jumps().size(), 1u);
+    ASSERT_FALSE(m.traction_jump_on_section(0));
     DiscretizationOptions fine = o;
     fine.extra_gauss_points += 16, fine.n_cells_r = 3, fine.n_cells_z = 3;
     const OutlineModel reference(problem, fine);

@@ -1181,13 +1181,16 @@ namespace
     if (model && !model->traction_jumps().empty())
       {
         nlohmann::json list = nlohmann::json::array();
-        for (const rfm::TractionJump &j : model->traction_jumps())
+        for (std::size_t i = 0; i < model->traction_jumps().size(); ++i)
           {
+            const rfm::TractionJump &j = model->traction_jumps()[i];
             const double degrees = j.angle() * 180.0 / 3.14159265358979323846;
+            const bool section = model->traction_jump_on_section(i);
             fmt::print(stderr,
                        "rfm_solve: traction jump at ({:.6g}, {:.6g}) m (interior angle {:.1f} degrees): "
-                       "the loaded wedge's stress added within {:.4g} m{}\n",
-                       j.vertex().r, j.vertex().z, degrees, j.cutoff_radius(),
+                       "the loaded wedge's stress added {}{}\n",
+                       j.vertex().r, j.vertex().z, degrees,
+                       section ? std::string("on the whole section") : fmt::format("within {:.4g} m", j.cutoff_radius()),
                        j.has_hoop_shadow() ? ", with its hoop shadow" : "");
             // The hoop shadow (traction_jump.h): the powers of ln rho it takes and the
             // collocation's self-check; null where there is none (on the axis).
@@ -1198,6 +1201,7 @@ namespace
                             {"z", j.vertex().z},
                             {"angle_degrees", degrees},
                             {"cutoff_radius", j.cutoff_radius()},
+                            {"support", section ? "section" : "local"},
                             {"hoop_shadow", shadow}});
           }
         result["diagnostics"]["traction_jumps"] = list;
