@@ -2005,9 +2005,10 @@ namespace rfm
     const axisym::Body &body = *problem.body;
     const std::vector<axisym::OutlineEdge> &edges = body.outline.edges();
     const double tol = 1e-9 * body.outline.size();
-    const bool has_die = !zones_.empty() || std::any_of(body.conditions.begin(), body.conditions.end(), [](const auto &pc) {
-                           return pc.second.kind == axisym::PartCondition::Kind::die;
-                         });
+    const bool has_die =
+      !zones_.empty() || std::any_of(body.conditions.begin(), body.conditions.end(), [](const auto &pc) {
+        return pc.second.kind == axisym::PartCondition::Kind::die;
+      });
     // The vertices with a jump (v between edges i and i + 1), found with a provisional radius.
     const std::size_t n_edges = edges.size();
     std::vector<bool> jump_at(n_edges, false);

@@ -1186,12 +1186,12 @@ namespace
             const rfm::TractionJump &j = model->traction_jumps()[i];
             const double degrees = j.angle() * 180.0 / 3.14159265358979323846;
             const bool section = model->traction_jump_on_section(i);
+            const std::string where =
+              section ? std::string("on the whole section") : fmt::format("within {:.4g} m", j.cutoff_radius());
             fmt::print(stderr,
                        "rfm_solve: traction jump at ({:.6g}, {:.6g}) m (interior angle {:.1f} degrees): "
                        "the loaded wedge's stress added {}{}\n",
-                       j.vertex().r, j.vertex().z, degrees,
-                       section ? std::string("on the whole section") : fmt::format("within {:.4g} m", j.cutoff_radius()),
-                       j.has_hoop_shadow() ? ", with its hoop shadow" : "");
+                       j.vertex().r, j.vertex().z, degrees, where, j.has_hoop_shadow() ? ", with its hoop shadow" : "");
             // The hoop shadow (traction_jump.h): the powers of ln rho it takes and the
             // collocation's self-check; null where there is none (on the axis).
             nlohmann::json shadow = nullptr;

@@ -247,6 +247,8 @@ namespace rfm
     void set_section_support(VertexFactorFunction factors, std::function<double(double)> reach,
                              std::vector<double> ray_breaks, double length_scale);
     bool section_support() const { return static_cast<bool>(factors_); }
+    /// The factors of set_section_support (empty without it); OutlineModel's traction jumps
+    /// on the section take them too.
     const VertexFactorFunction &section_factors() const { return factors_; }
 
     /// Faces that are arcs (a traction-free, pressure or traction part on either side; not
