@@ -1015,7 +1015,7 @@ namespace rfm
   // A traction jump between two lines on a section star-shaped about it takes the whole
   // section (OutlineModel::traction_jumps, session 79): F = 1 - (1 - G)^4 instead of the
   // cutoff, with G the other edges' omegas. On the pressure band at p = 12 the indicator
-  // was 1.06e-4 with the disc and 2.16e-6 so, Phi_R 1.1e-5 and 1.6e-7 from the FEM's limit
+  // was 1.06e-4 with the disc and 1.98e-6 so, Phi_R 1.1e-5 and 2.1e-8 from the FEM's limit
   // (-18.665844). Every edge's condition still holds exactly: the free top and outer
   // surface, the symmetry plane (no shear, u_z = 0) and the bore on both sides of the jump.
   TEST(OutlineModel, TractionJumpTakesTheWholeSection)
