@@ -741,9 +741,12 @@ namespace axisym
           p.rfm.resonant_displacement_degree =
             r.integer("resonant_displacement_degree", ranges::rfm_resonant_displacement_degree);
         if (r.has("vertex_support"))
-          p.rfm.vertex_support = r.string("vertex_support", {"local", "section"}) == "local"
-                                   ? RfmSettings::VertexSupport::local
-                                   : RfmSettings::VertexSupport::section;
+          {
+            const std::string support = r.string("vertex_support", {"local", "section", "blended"});
+            p.rfm.vertex_support = support == "local"     ? RfmSettings::VertexSupport::local
+                                   : support == "blended" ? RfmSettings::VertexSupport::blended
+                                                          : RfmSettings::VertexSupport::section;
+          }
         // The switches: JSON booleans.
         auto flag = [&](const char *key, bool &to) {
           if (!r.has(key))

@@ -179,10 +179,19 @@ namespace axisym
     /// modes' multipliers take at least degree 4 (vertex_mode_degree is raised to it).
     /// `section` also puts a traction jump's field between two lines on the whole section
     /// (OutlineModel::traction_jumps): the pressure band's indicator at p = 16 1.94e-5 -> 2.5e-7.
+    /// `blended`: as `section`, and also at the re-entrant vertices that keep their disc
+    /// there (the section not star-shaped about the vertex, or an arc face), with the columns
+    /// integrated on the disc's rule blended with a rule over the section
+    /// (rfm/outline_model.cc). Not the default: it costs about four times the time at the
+    /// same p, and the indicator stalls (README). On issue 24's heated hub (both re-entrant
+    /// vertices so), section -> blended at p = 12 / 16 / 20: indicator 9.7e-6 / 8.7e-7 /
+    /// 4.3e-7 -> 5.3e-7 / 2.3e-7 / 1.8e-7, sigma_zz at (0.8, 0) +0.15 / -0.68 / -0.28 % ->
+    /// -0.39 / -0.12 / -0.05 % from the FEM's.
     enum class VertexSupport
     {
       local,
-      section
+      section,
+      blended
     };
     VertexSupport vertex_support = VertexSupport::section;
     /// Axis parity (rfm/outline_model.h, issue 24 item 5): on a rectangular section on the

@@ -403,18 +403,33 @@ namespace rfm
         axisym::Point at;
         double radius;
         bool section;
+        bool global = false; ///< the section's own rule: the share 1 everywhere
       };
       std::vector<Pull> pulls;
       for (const EdgeEnrichment &e : enrichments_)
         pulls.push_back({{e.frame().r, e.frame().z}, e.cutoff_radius(), false});
       bool any_section = false;
+      // A vertex's columns on the whole section without a section rule (rfm.vertex_support
+      // blended: the section not star-shaped about it, or a curved face): its disc's rule and
+      // one over the section that pulls with the share 1 everywhere (as the region's rule of
+      // quadrature.h: blend_disc_rules), so that the discs' rules take what is singular at
+      // their centres and the section's rule the rest. The triangles' rule split once into
+      // four: on issue 24's heated hub at p = 12 Phi_R came out 3.2e-5 from the FEM's limit
+      // on the triangles' own rule (indicator 1.4e-5), 2.1e-7 split once, 5.7e-8 split
+      // twice, -1.2e-8 with 40 more points a direction instead (assembly 5.9, 9.9, 25.4,
+      // 28.6 s; 1.8 s with the vertices' discs). The stepped ring with its vertex so
+      // integrated instead of on its section rule: Phi_R 2.4e-7 from the section rule's,
+      // 1.3e-9 split once, within 1e-11 split twice. A polar rule of rays from an inner point
+      // about which the hub is star-shaped, broken at the discs' rims, did worse (p = 16:
+      // 7.0e-7 against 2.8e-8 split once).
+      bool blended_section = false;
       // The discs that a section rule crosses: the edges', the local vertices' and the
       // traction jumps'.
       std::vector<VertexEnrichment::Circle> circles;
       for (const EdgeEnrichment &e : enrichments_)
         circles.push_back({{e.frame().r, e.frame().z}, e.cutoff_radius()});
       for (const VertexEnrichment &v : vertices_)
-        if (!v.section_support())
+        if (!v.has_section_rule())
           circles.push_back({v.vertex(), v.cutoff_radius()});
       for (std::size_t i = 0; i < jumps_.size(); ++i)
         if (jump_rules_[i])
@@ -436,7 +451,7 @@ namespace rfm
         {
           std::vector<VertexEnrichment::Circle> crossed = circles;
           for (const VertexEnrichment &w : vertices_)
-            if (&w != &v && w.section_support())
+            if (&w != &v && w.has_section_rule())
               crossed.push_back({w.vertex(), w.cutoff_radius()});
           // A curved vertex's rule breaks at the rims of the discs that overlap it
           // (rfm.vertex_disc_overlap; make_vertices), with twice the points a direction from
@@ -451,12 +466,13 @@ namespace rfm
           // The outermost layer (a fifth of the radius to the rim) with the section's count
           // (VertexEnrichment::near_rule): at p = 16 the hubs' Phi_R moved 5.7e-8 and 8.6e-8
           // of it against n_vertex points there.
-          Quadrature2D q = v.section_support() ? v.section_rule(n_vertex, n_vertex, crossed, 8, n_near)
-                                               : v.near_rule(n_vertex, n_vertex, 8, rims, n_rims, n_near);
+          Quadrature2D q = v.has_section_rule() ? v.section_rule(n_vertex, n_vertex, crossed, 8, n_near)
+                                                : v.near_rule(n_vertex, n_vertex, 8, rims, n_rims, n_near);
           if (rough_[static_cast<std::size_t>(&v - vertices_.data())])
             rough_discs.push_back({q, v.vertex().r, v.vertex().z, v.cutoff_radius()});
           any_section |= v.section_support();
-          pulls.push_back({v.vertex(), v.cutoff_radius(), v.section_support()});
+          blended_section |= v.section_support() && !v.has_section_rule();
+          pulls.push_back({v.vertex(), v.cutoff_radius(), v.has_section_rule()});
           total += q.weights.size();
           rules.push_back(std::move(q));
         }
@@ -483,6 +499,15 @@ namespace rfm
             total += q.weights.size();
             rules.push_back(std::move(q));
           }
+      if (blended_section)
+        {
+          SectionQuadratureOptions split_once = qo;
+          split_once.n_refinements = std::max(1, qo.n_refinements);
+          Quadrature2D q = section_gauss(split, split_once);
+          pulls.push_back({{0.0, 0.0}, std::numeric_limits<double>::infinity(), false, true});
+          total += q.weights.size();
+          rules.push_back(std::move(q));
+        }
       for (const ResonantVertex &v : resonances_)
         {
           // One geometric layer (two radial pieces): the log columns' products are bounded
@@ -516,8 +541,9 @@ namespace rfm
       bool overlap = any_section;
       for (std::size_t i = 0; i < pulls.size(); ++i)
         for (std::size_t j = i + 1; j < pulls.size(); ++j)
-          overlap |= std::hypot(pulls[i].at.r - pulls[j].at.r, pulls[i].at.z - pulls[j].at.z) <
-                     pulls[i].radius + pulls[j].radius;
+          overlap |= pulls[i].global || pulls[j].global ||
+                     std::hypot(pulls[i].at.r - pulls[j].at.r, pulls[i].at.z - pulls[j].at.z) <
+                       pulls[i].radius + pulls[j].radius;
       if (overlap)
         for (std::size_t i = 0; i < rules.size(); ++i)
           {
@@ -528,6 +554,12 @@ namespace rfm
                 for (std::size_t j = 0; j < pulls.size(); ++j)
                   {
                     const Pull &p = pulls[j];
+                    if (p.global)
+                      {
+                        sum += 1.0;
+                        own = j == i ? 1.0 : own;
+                        continue;
+                      }
                     const double rho = std::hypot(q.r[k] - p.at.r, q.z[k] - p.at.z) / p.radius;
                     const double S = disc_partition_step(rho * rho);
                     double share;
@@ -543,7 +575,7 @@ namespace rfm
               }
           }
       for (const Pull &p : pulls)
-        if (p.section)
+        if (p.section || p.global)
           near_covers_section_ = true;
         else
           near_discs_.push_back({p.at, p.radius});
@@ -567,7 +599,7 @@ namespace rfm
             order[static_cast<std::size_t>(k)] = k;
           auto in_a_disc = [&](const Eigen::Index k) {
             for (const Pull &p : pulls)
-              if (std::hypot(near_.r[k] - p.at.r, near_.z[k] - p.at.z) < p.radius)
+              if (!p.global && std::hypot(near_.r[k] - p.at.r, near_.z[k] - p.at.z) < p.radius)
                 return true;
             return false;
           };
@@ -1836,17 +1868,20 @@ namespace rfm
         // the stepped shaft 9.8e-5 and 4.5e-5, 3.4e-5 and 1.5e-5, 3.2e-5 and 1.3e-5, 2.0e-5
         // and 1.0e-5; the stepped ring 2.5e-6 and 6.4e-7, 1.3e-6 and 4.1e-7, 1.0e-6 and
         // 3.5e-7, 9.6e-7 and 3.5e-7; assembly at p = 16 2.1, 2.9, 3.0, 3.4 s on the shaft.
-        if (options.vertex_support == DiscretizationOptions::VertexSupport::section && !curved &&
+        const bool blended = options.vertex_support == DiscretizationOptions::VertexSupport::blended;
+        if (options.vertex_support != DiscretizationOptions::VertexSupport::local && (!curved || blended) &&
             !v.modes.empty() && v.angle > 3.14159265358979323846 * (1.0 + 1e-9) && zones_.empty() && !has_die)
           {
             const int a = static_cast<int>(arriving - edges.data()), l = static_cast<int>(leaving - edges.data());
-            if (set_section_support(vertices_.back(), body, a, l) && options.vertex_mode_degree < 4)
+            if (set_section_support(vertices_.back(), body, a, l, blended) && options.vertex_mode_degree < 4)
               {
                 const VertexEnrichment disc = vertices_.back();
                 vertices_.back() = VertexEnrichment(v.at, std::array<double, 2>{t.r, t.z}, wedge, disc.modes(),
                                                     disc.cutoff_radius(), material_, 4, local_stress_degree,
                                                     local_displacement_degree);
-                set_section_support(vertices_.back(), body, a, l);
+                if (curved)
+                  vertices_.back().set_curved_faces(WedgeFrame(*arriving, *leaving));
+                set_section_support(vertices_.back(), body, a, l, blended);
               }
           }
         // The hoop shadow (rfm.vertex_shadow; problem/settings.h) at singular vertices, but
@@ -1875,7 +1910,7 @@ namespace rfm
   }
 
   bool OutlineModel::set_section_support(VertexEnrichment &vertex, const axisym::Body &body,
-                                         const int arriving, const int leaving)
+                                         const int arriving, const int leaving, const bool blended)
   {
     using Kind = axisym::PartCondition::Kind;
     const std::vector<axisym::OutlineEdge> &edges = body.outline.edges();
@@ -1892,10 +1927,13 @@ namespace rfm
         t = std::min(t, ray_distance(e, v, std::cos(phi), std::sin(phi), tol));
       return std::isfinite(t) ? t : 0.0;
     };
-    // Star-shaped about v: every point of the other edges is seen from v (the ray to it
-    // crosses no edge before it).
+    // The rule of rays from v (VertexEnrichment::section_rule) needs straight faces (its disc
+    // follows lines) and the section star-shaped about v: every point of the other edges seen
+    // from v (the ray to it crosses no edge before it). Otherwise only a blended support.
     std::vector<double> breaks;
     double length_scale = 0.0;
+    bool star = edges[arriving].kind == axisym::OutlineEdge::Kind::line &&
+                edges[leaving].kind == axisym::OutlineEdge::Kind::line;
     for (const axisym::OutlineEdge &e : others)
       {
         breaks.push_back(std::atan2(e.start.z - v.z, e.start.r - v.r));
@@ -1904,10 +1942,12 @@ namespace rfm
             const axisym::Point x = e.point_at(k / 32.0);
             const double d = std::hypot(x.r - v.r, x.z - v.z);
             length_scale = std::max(length_scale, d);
-            if (reach(std::atan2(x.z - v.z, x.r - v.r)) < d - 1e-7 * size)
-              return false; // not star-shaped: the disc stays
+            if (star && reach(std::atan2(x.z - v.z, x.r - v.r)) < d - 1e-7 * size)
+              star = false;
           }
       }
+    if (!star && !blended)
+      return false; // the disc stays
     // The factors: the omegas of the other edges where each component enters the condition.
     // Traction edges (free, pressure, traction): sigma_rr and sigma_rz on a line along z,
     // sigma_zz and sigma_rz on a line along r, all three elsewhere; symmetry lines and the
@@ -2003,7 +2043,8 @@ namespace rfm
       out.u /= u_v, out.u_r /= u_v, out.u_z /= u_v;
       return out;
     };
-    vertex.set_section_support(std::move(values), reach, std::move(breaks), length_scale);
+    vertex.set_section_support(std::move(values), star ? std::function<double(double)>(reach) : nullptr,
+                               std::move(breaks), length_scale);
     return true;
   }
 
@@ -2069,7 +2110,7 @@ namespace rfm
         // columns gives the factors and the section rule. Between lines only (an arc's mapped
         // angle is made for the disc), where the jump has its own rule, without a die.
         jump_sections_.emplace_back();
-        if (options.vertex_support == DiscretizationOptions::VertexSupport::section && shared == nullptr &&
+        if (options.vertex_support != DiscretizationOptions::VertexSupport::local && shared == nullptr &&
             !has_die && arriving.kind == axisym::OutlineEdge::Kind::line &&
             leaving.kind == axisym::OutlineEdge::Kind::line)
           {

@@ -496,10 +496,12 @@ namespace rfm
                                  const DiscretizationOptions &options, std::vector<int> &graded);
     /// Gives `vertex` (at the vertex between the edges `arriving` and `leaving` of the body's
     /// outline) the section support of its mode columns (VertexEnrichment::
-    /// set_section_support) when the section is star-shaped about it (true); else leaves the
-    /// disc (false).
+    /// set_section_support) with the reach (VertexEnrichment::has_section_rule) when both
+    /// faces are lines and the section is star-shaped about it, or, with `blended`, also
+    /// otherwise without the reach (the disc's rule blended with one over the section);
+    /// returns whether it did (false: the disc stays).
     bool set_section_support(VertexEnrichment &vertex, const axisym::Body &body, int arriving,
-                             int leaving);
+                             int leaving, bool blended = false);
     /// Builds enrichments_ and edges_; returns, per edge of the split body, which of its ends
     /// (bit 1 start, bit 2 end) is a zone end (the edge rule is graded there).
     std::vector<int> make_enrichments(const axisym::Problem &problem,

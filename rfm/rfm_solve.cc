@@ -1090,7 +1090,7 @@ namespace
                 enrichment = {{"columns", e.n_columns()},
                               {"modes", e.modes().size()},
                               {"cutoff_radius", e.cutoff_radius()},
-                              {"support", e.section_support() ? "section" : "local"},
+                              {"support", e.section_support() ? (e.has_section_rule() ? "section" : "blended") : "local"},
                               {"curved_faces", e.curved()},
                               {"hoop_shadow", e.hoop_shadow()}};
                 enrichment["inner_disc"] =

@@ -218,7 +218,7 @@ namespace
     const double rho_1 = frame.cutoff_radius();
     c["intensity_sector_radius"] = rho_1;
     // Where the vertex's modes live (rfm.vertex_support; vertex_enrichment.h).
-    c["vertex_support"] = frame.section_support() ? "section" : "local";
+    c["vertex_support"] = frame.section_support() ? (frame.has_section_rule() ? "section" : "blended") : "local";
 
     // The FEM: energy against L, Richardson from the last three levels; the intensities from
     // its fields at the sector rule's points (samples after the problem's own).

@@ -594,11 +594,12 @@ namespace rfm
                                              std::function<double(double)> reach,
                                              std::vector<double> ray_breaks, const double length_scale)
   {
-    if (!factors || !reach || !(length_scale > 0.0))
-      throw std::invalid_argument("VertexEnrichment::set_section_support: factors, reach and a "
-                                  "positive length scale are needed");
-    if (frame_)
-      throw std::logic_error("VertexEnrichment::set_section_support: a vertex with a curved face keeps its disc");
+    if (!factors || !(length_scale > 0.0))
+      throw std::invalid_argument("VertexEnrichment::set_section_support: factors and a positive "
+                                  "length scale are needed");
+    if (frame_ && reach)
+      throw std::logic_error("VertexEnrichment::set_section_support: the section rule follows straight "
+                             "faces; a vertex with a curved face takes the support without a reach");
     factors_ = std::move(factors);
     reach_ = std::move(reach);
     ray_breaks_ = std::move(ray_breaks);
@@ -609,8 +610,8 @@ namespace rfm
                                               const std::vector<Circle> &circles, const int n_layers,
                                               const int n_outer) const
   {
-    if (!section_support())
-      throw std::logic_error("VertexEnrichment::section_rule: no section support");
+    if (!has_section_rule())
+      throw std::logic_error("VertexEnrichment::section_rule: no section support with a reach");
     const Quadrature2D disc = near_rule(n_radial, n_angular, n_layers, {}, 0, n_outer);
     // Also broken at the directions of the outline's vertices, where the reach has a kink.
     std::vector<double> vertex_breaks;

@@ -240,28 +240,36 @@ namespace rfm
     /// scales each face's traction components apart); OutlineModel gives one common stress
     /// factor otherwise. The local columns keep the disc. `reach(phi)` is the distance from
     /// the vertex to the outline in the direction phi of the (r, z) plane, and `ray_breaks`
-    /// the directions where it or the integrands have a kink (the outline's vertices).
+    /// the directions where it or the integrands have a kink (the outline's vertices). An
+    /// empty `reach` (the section not star-shaped about the vertex, or a curved face; a
+    /// vertex with curved faces takes no other): no section_rule(), the model integrates
+    /// the columns on near_rule() blended with a rule over the section
+    /// (rfm.vertex_support `blended`).
     /// Why: with the cutoff the polynomials must carry the smooth remainder of the modes,
     /// whose flank is as steep as rho_0 is small (the stepped shaft's indicator at p = 16
     /// was 6.0e-3, 1.1e-3, 2.5e-4 with rho_0 at 0.5, 0.75, 1 of the room).
     void set_section_support(VertexFactorFunction factors, std::function<double(double)> reach,
                              std::vector<double> ray_breaks, double length_scale);
     bool section_support() const { return static_cast<bool>(factors_); }
+    /// Whether section_rule() can be built: section support with a reach (the section
+    /// star-shaped about the vertex). Without it the model integrates the columns on the
+    /// disc's near_rule() blended with the section's own rule.
+    bool has_section_rule() const { return section_support() && static_cast<bool>(reach_); }
     /// The factors of set_section_support (empty without it); OutlineModel's traction jumps
     /// on the section take them too.
     const VertexFactorFunction &section_factors() const { return factors_; }
 
-    /// Faces that are arcs (a traction-free, pressure or traction part on either side; not
-    /// with the section support). The straight wedge's stresses meet an arc's condition only
-    /// at the vertex, so the mode columns' stresses are taken at the mapped angle of
-    /// wedge_frame.h and turned by its rotation a, S(x) = Q(a) S_wedge(rho, theta') Q(a)^T,
-    /// which meets a free arc's condition exactly (S n = Q(a) S_wedge n_f = 0); their
-    /// displacements stay the straight wedge's (a free face constrains none) with the exact
-    /// strains of that displacement. The local stress families take the arc's circle
-    /// function (R^2 - |x - c|^2) / (2 R) in place of the line function and the tangent
-    /// dyad of the circle through x about c in place of t t. near_rule() is then the frame's
-    /// rule, which follows the curved faces. Precondition: `frame` is that of this vertex
-    /// and no curved face is clamped or a symmetry line.
+    /// Faces that are arcs (a traction-free, pressure or traction part on either side; before
+    /// set_section_support, and then without a reach). The straight wedge's stresses meet an arc's
+    /// condition only at the vertex, so the mode columns' stresses are taken at the mapped angle of
+    /// wedge_frame.h and turned by its rotation a, S(x) = Q(a) S_wedge(rho, theta') Q(a)^T, which
+    /// meets a free arc's condition exactly (S n = Q(a) S_wedge n_f = 0); their displacements stay
+    /// the straight wedge's (a free face constrains none) with the exact strains of that
+    /// displacement. The local stress families take the arc's circle function (R^2 - |x - c|^2) /
+    /// (2 R) in place of the line function and the tangent dyad of the circle through x about c in
+    /// place of t t. near_rule() is then the frame's rule, which follows the curved faces.
+    /// Precondition: `frame` is that of this vertex and no curved face is clamped or a symmetry
+    /// line.
     void set_curved_faces(const WedgeFrame &frame);
     bool curved() const { return frame_.has_value(); }
 

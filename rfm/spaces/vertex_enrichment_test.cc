@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 namespace rfm
 {
@@ -508,6 +509,27 @@ namespace rfm
       EXPECT_GT(e.stress[rr].col(j).tail(3).cwiseAbs().maxCoeff() + e.u[0].col(j).tail(3).cwiseAbs().maxCoeff(), 0.0);
     for (Eigen::Index j = v.n_mode_columns(); j < v.n_columns(); ++j)
       EXPECT_EQ(e.u[0].col(j).tail(3).cwiseAbs().maxCoeff() + e.stress[rr].col(j).tail(3).cwiseAbs().maxCoeff(), 0.0);
+  }
+
+  // Without a reach (rfm.vertex_support blended, where the section is not star-shaped about
+  // the vertex) the columns are the same, and there is no section rule: the model blends the
+  // disc's rule with the section's own.
+  TEST(VertexEnrichment, SectionSupportWithoutAReachHasNoSectionRule)
+  {
+    const Case c;
+    VertexEnrichment with = make(c, WedgeFace::free, WedgeFace::free, 1), without = with;
+    with.set_section_support(stepped_ring_factors, stepped_ring_reach, {}, 0.15);
+    without.set_section_support(stepped_ring_factors, nullptr, {}, 0.15);
+    EXPECT_TRUE(with.has_section_rule());
+    ASSERT_TRUE(without.section_support());
+    EXPECT_FALSE(without.has_section_rule());
+    EXPECT_THROW(static_cast<void>(without.section_rule(12, 12)), std::logic_error);
+    const Eigen::VectorXd r = (Eigen::VectorXd(3) << 0.16, 0.19, 0.11).finished();
+    const Eigen::VectorXd z = (Eigen::VectorXd(3) << 0.11, 0.18, 0.02).finished();
+    const EdgeColumns a = with.evaluate(r, z), b = without.evaluate(r, z);
+    for (int comp = 0; comp < 4; ++comp)
+      EXPECT_EQ((a.stress[comp] - b.stress[comp]).cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_EQ((a.u[0] - b.u[0]).cwiseAbs().maxCoeff() + (a.u[1] - b.u[1]).cwiseAbs().maxCoeff(), 0.0);
   }
 
   // The section rule: the disc of near_rule and the rays out to the reach, so that it
