@@ -758,7 +758,16 @@ namespace axisym
         flag("axis_parity", p.rfm.axis_parity);
         flag("axis_coupling", p.rfm.axis_coupling);
         flag("notch_roots", p.rfm.notch_roots);
-        flag("rough_vertices", p.rfm.rough_vertices);
+        // rough_vertices: a boolean, or "all" (rough vertices without a jump too).
+        if (r.has("rough_vertices") && r.at("rough_vertices").is_string())
+          {
+            if (r.at("rough_vertices").get<std::string>() != "all")
+              fail("rfm.rough_vertices", r.at("rough_vertices"),
+                   "must be true (where a traction jumps), false or \"all\" (every rough vertex)");
+            p.rfm.rough_vertices = p.rfm.rough_vertices_everywhere = true;
+          }
+        else
+          flag("rough_vertices", p.rfm.rough_vertices);
         flag("vertex_shadow", p.rfm.vertex_shadow);
         flag("vertex_inner_disc", p.rfm.vertex_inner_disc);
         flag("vertex_disc_overlap", p.rfm.vertex_disc_overlap);

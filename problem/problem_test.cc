@@ -100,6 +100,29 @@ namespace axisym
   {
     EXPECT_THROW(read_problem_file("/nonexistent/problem.json"), InputError);
   }
+
+  // rfm.vertex_support takes "blended" beside "local" and "section" (the default), and
+  // rfm.rough_vertices "all" beside true (the default: where a traction jumps) and false.
+  TEST(Problem, VertexSupportAndRoughVerticesSettings)
+  {
+    nlohmann::json j = testing::tapered_hub();
+    const Problem defaults = parse_problem(j);
+    EXPECT_EQ(defaults.rfm.vertex_support, RfmSettings::VertexSupport::section);
+    EXPECT_TRUE(defaults.rfm.rough_vertices);
+    EXPECT_FALSE(defaults.rfm.rough_vertices_everywhere);
+    j["rfm"] = {{"vertex_support", "blended"}, {"rough_vertices", "all"}};
+    const Problem all = parse_problem(j);
+    EXPECT_EQ(all.rfm.vertex_support, RfmSettings::VertexSupport::blended);
+    EXPECT_TRUE(all.rfm.rough_vertices);
+    EXPECT_TRUE(all.rfm.rough_vertices_everywhere);
+    j["rfm"] = {{"vertex_support", "local"}, {"rough_vertices", false}};
+    const Problem none = parse_problem(j);
+    EXPECT_EQ(none.rfm.vertex_support, RfmSettings::VertexSupport::local);
+    EXPECT_FALSE(none.rfm.rough_vertices);
+    EXPECT_FALSE(none.rfm.rough_vertices_everywhere);
+    j["rfm"] = {{"rough_vertices", "some"}};
+    EXPECT_THROW(parse_problem(j), InputError);
+  }
 } // namespace axisym
 
 namespace axisym

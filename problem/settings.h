@@ -230,6 +230,14 @@ namespace axisym
     /// 16 / 20: 2.0e-3 / 2.8e-4 / 4.0e-5 / 1.2e-5 without, 4.9e-5 / 6.4e-6 / 1.1e-6 / 5.3e-7
     /// with them, falling at every even p. false: none (as before).
     bool rough_vertices = true;
+    /// With rough_vertices, at every rough vertex, with or without a jump (JSON
+    /// `"rough_vertices": "all"`). Not the default: on issue 24's heated hub (its 133-degree
+    /// vertex at the bore, free, no jump) they bought little with the vertices' discs (the
+    /// comment in rfm/outline_model.cc: make_vertex_enrichments); with vertex_support
+    /// `blended`, where that vertex then held half of the constitutive-relation error, the
+    /// indicator at p = 12 / 16 / 20 went 5.3e-7 / 2.3e-7 / 1.8e-7 -> 2.7e-7 / 9.0e-8 / 5.8e-8
+    /// (p = 16 in 73 s instead of 45 s).
+    bool rough_vertices_everywhere = false;
     /// The hoop shadow at singular vertices (rfm/spaces/wedge_shadow.h): each vertex mode's
     /// first axisymmetric correction rho^(lambda + 1) V(theta), from the hoop terms of the
     /// equations and the curvature of arc faces, as one more column per mode; its angular

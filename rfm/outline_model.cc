@@ -1732,7 +1732,8 @@ namespace rfm
     const std::size_t n_singular = vertices.size();
     if (options.rough_vertices)
       for (SingularVertex &v : rough_vertices(body, material_.poisson_ratio))
-        if (std::any_of(jump_points.begin(), jump_points.end(), [&](const axisym::Point &x) {
+        if (options.rough_vertices_everywhere ||
+            std::any_of(jump_points.begin(), jump_points.end(), [&](const axisym::Point &x) {
               return std::hypot(x.r - v.at.r, x.z - v.at.z) < tol;
             }))
           vertices.push_back(std::move(v));

@@ -174,6 +174,7 @@ namespace
       Case{"ritz_bound_not_a_bool", with("/rfm/ritz_bound", 1), "rfm.ritz_bound"},
       Case{"notch_roots_not_a_bool", with("/rfm/notch_roots", "yes"), "rfm.notch_roots"},
       Case{"rough_vertices_not_a_bool", with("/rfm/rough_vertices", 1), "rfm.rough_vertices"},
+      Case{"rough_vertices_unknown_word", with("/rfm/rough_vertices", "some"), "rfm.rough_vertices"},
       Case{"vertex_shadow_not_a_bool", with("/rfm/vertex_shadow", "yes"), "rfm.vertex_shadow"},
       Case{"vertex_inner_disc_not_a_bool", with("/rfm/vertex_inner_disc", 0), "rfm.vertex_inner_disc"},
       Case{"axis_coupling_not_a_bool", with("/rfm/axis_coupling", "no"), "rfm.axis_coupling"},
