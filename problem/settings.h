@@ -236,7 +236,7 @@ namespace axisym
     /// comment in rfm/outline_model.cc: make_vertex_enrichments); with vertex_support
     /// `blended`, where that vertex then held half of the constitutive-relation error, the
     /// indicator at p = 12 / 16 / 20 went 5.3e-7 / 2.3e-7 / 1.8e-7 -> 2.7e-7 / 9.0e-8 / 5.8e-8
-    /// (p = 16 in 73 s instead of 45 s).
+    /// (p = 16 in 73 s).
     bool rough_vertices_everywhere = false;
     /// The hoop shadow at singular vertices (rfm/spaces/wedge_shadow.h): each vertex mode's
     /// first axisymmetric correction rho^(lambda + 1) V(theta), from the hoop terms of the
