@@ -183,10 +183,11 @@ namespace axisym
     /// there (the section not star-shaped about the vertex, or an arc face), with the columns
     /// integrated on the disc's rule blended with a rule over the section
     /// (rfm/outline_model.cc). Not the default: it costs about four times the time at the
-    /// same p, and the indicator stalls (README). On issue 24's heated hub (both re-entrant
-    /// vertices so), section -> blended at p = 12 / 16 / 20: indicator 9.7e-6 / 8.7e-7 /
-    /// 4.3e-7 -> 5.3e-7 / 2.3e-7 / 1.8e-7, sigma_zz at (0.8, 0) +0.15 / -0.68 / -0.28 % ->
-    /// -0.39 / -0.12 / -0.05 % from the FEM's.
+    /// same p, and the indicator stalls (README). Every singular vertex with Re lambda < 1
+    /// then takes the inner disc (OutlineModel::inner_disc_max_exponent otherwise). On issue
+    /// 24's heated hub (both re-entrant vertices so), section -> blended at p = 12 / 16 / 20:
+    /// indicator 9.7e-6 / 8.7e-7 / 4.3e-7 -> 2.9e-7 / 1.4e-7 / 1.2e-7, sigma_zz at (0.8, 0)
+    /// +0.15 / -0.68 / -0.28 % -> -0.41 / -0.11 / -0.05 % from the FEM's.
     enum class VertexSupport
     {
       local,
@@ -234,9 +235,9 @@ namespace axisym
     /// `"rough_vertices": "all"`). Not the default: on issue 24's heated hub (its 133-degree
     /// vertex at the bore, free, no jump) they bought little with the vertices' discs (the
     /// comment in rfm/outline_model.cc: make_vertex_enrichments); with vertex_support
-    /// `blended`, where that vertex then held half of the constitutive-relation error, the
-    /// indicator at p = 12 / 16 / 20 went 5.3e-7 / 2.3e-7 / 1.8e-7 -> 2.7e-7 / 9.0e-8 / 5.8e-8
-    /// (p = 16 in 73 s).
+    /// `blended`, where that vertex then held most of the constitutive-relation error, the
+    /// indicator at p = 12 / 16 / 20 went 2.9e-7 / 1.4e-7 / 1.2e-7 -> 9.8e-8 / 1.56e-8 /
+    /// 8.3e-9 (below the default tolerance).
     bool rough_vertices_everywhere = false;
     /// The hoop shadow at singular vertices (rfm/spaces/wedge_shadow.h): each vertex mode's
     /// first axisymmetric correction rho^(lambda + 1) V(theta), from the hoop terms of the

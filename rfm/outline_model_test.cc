@@ -1064,7 +1064,7 @@ namespace rfm
   // columns integrated on their discs' rules blended with the section's own. The field still
   // meets every edge's condition (traction free on the arcs, the taper, the neck and the
   // bore, symmetry on mid and top), and the indicator falls below what `section` reaches
-  // (measured at p = 8: 8.9e-6 with blended, 2.8e-4 with section).
+  // (measured at p = 8: 7.5e-6 with blended, 2.8e-4 with section).
   TEST(OutlineModel, BlendedSupportCoversVerticesWithoutASectionRule)
   {
 #if defined(__SANITIZE_ADDRESS__)
