@@ -47,6 +47,15 @@ namespace rfm
                                     q.z, q.weights.cwiseProduct(q.r), even);
     }
 
+    // The exponent below which a singular vertex takes the inner disc: 1 with
+    // rfm.vertex_support blended (make_vertex_enrichments says why), else the header's.
+    double inner_disc_limit(const DiscretizationOptions &options)
+    {
+      return options.vertex_support == DiscretizationOptions::VertexSupport::blended
+               ? 1.0
+               : OutlineModel::inner_disc_max_exponent;
+    }
+
     // The distance from v along the unit direction d to edge e (the first crossing ahead of v,
     // beyond `skip` [m]), or +infinity.
     double ray_distance(const axisym::OutlineEdge &e, const axisym::Point v, const double d_r,
@@ -1901,10 +1910,7 @@ namespace rfm
         // Heated hub at p = 16 (blended, rfm.rough_vertices all): indicator 9.0e-8 -> 1.56e-8,
         // the 186-degree vertex's cell 69 % -> 33 % of E (with section support 8.7e-7 ->
         // 6.0e-7: the header's "bought less" still holds there).
-        const double inner_max = options.vertex_support == DiscretizationOptions::VertexSupport::blended
-                                   ? 1.0
-                                   : inner_disc_max_exponent;
-        const bool strong = !v.modes.empty() && v.modes.front().lambda.real() < inner_max;
+        const bool strong = !v.modes.empty() && v.modes.front().lambda.real() < inner_disc_limit(options);
         vertices_.back().set_inner_disc(options.vertex_inner_disc && !rough && strong ? local_stress_degree : -1);
         // The traces on the faces integrate graded toward v.
         for (std::size_t e = 0; e < split.edges().size(); ++e)
@@ -2961,10 +2967,7 @@ namespace rfm
     for (const SingularVertex &v : singular_vertices(body, nu))
       {
         const bool inner = options.vertex_inner_disc && !v.modes.empty() &&
-                           v.modes.front().lambda.real() <
-                             (options.vertex_support == DiscretizationOptions::VertexSupport::blended
-                                ? 1.0
-                                : OutlineModel::inner_disc_max_exponent);
+                           v.modes.front().lambda.real() < inner_disc_limit(options);
         n += mode_columns(v) + (inner ? 2.0 : 1.0) * local_columns(&v);
       }
     if (options.rough_vertices)
