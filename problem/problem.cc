@@ -675,7 +675,7 @@ namespace axisym
                               "vertex_cutoff", "vertex_local_degree", "vertex_local_degree_ratio",
                               "vertex_local_displacement_degree", "vertex_support",
                               "resonant_displacement_degree", "axis_parity", "axis_coupling", "notch_roots",
-                              "rough_vertices", "ritz_bound", "vertex_shadow", "vertex_inner_disc",
+                              "rough_vertices", "ritz_bound", "vertex_shadow", "jump_column", "vertex_inner_disc",
                               "vertex_disc_overlap",
                               "z_degree_ratio"});
         if (r.has("degree") && r.has("tolerance"))
@@ -769,6 +769,7 @@ namespace axisym
         else
           flag("rough_vertices", p.rfm.rough_vertices);
         flag("vertex_shadow", p.rfm.vertex_shadow);
+        flag("jump_column", p.rfm.jump_column);
         flag("vertex_inner_disc", p.rfm.vertex_inner_disc);
         flag("vertex_disc_overlap", p.rfm.vertex_disc_overlap);
         flag("ritz_bound", p.rfm.ritz_bound);

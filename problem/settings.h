@@ -248,6 +248,18 @@ namespace axisym
     /// without -> with: the clamped cylinder 3.2e-9 -> 9.6e-10, the stepped ring 6.6e-8 ->
     /// 4.9e-8, the stepped shaft 4.4e-6 -> 3.6e-6.
     bool vertex_shadow = true;
+    /// The traction jumps' fields as columns too (rfm/outline_model.h: n_jump_columns): each
+    /// jump's particular field, fixed in the solution, also as one column with a free
+    /// coefficient, so that the displacement space holds the direction of its displacement
+    /// and the stress is in equilibrium against all of u_h; Phi_L - Phi_C is then the
+    /// constitutive-relation error E (diagnostics.constitutive_error.gap_minus_error zero to
+    /// rounding) and the indicator a measure of the error. Indicator at p = 8 / 12 / 16
+    /// without -> with: the pressure band 3.5e-5 / 2.0e-6 / 1.9e-7 -> 1.5e-6 / 3.8e-8 /
+    /// 3.9e-9 (E 1.6e-6 / 3.9e-8 / 3.9e-9 before: the indicator was the work defect); issue
+    /// 24's pressed hub at p = 12 / 16 1.7e-6 / 8.0e-8 -> 7.3e-7 / 1.1e-7 (E 7.1e-7 / 1.1e-7
+    /// before; at 16 Phi_L had come within 8e-8 of Phi_C by a defect of -3.2e-8). false: the
+    /// fixed field alone (as before).
+    bool jump_column = true;
     /// A second, concentric disc of stress columns at each singular vertex, of a fifth of the
     /// cutoff's radius and the local stress columns' degree (rfm/spaces/vertex_enrichment.h:
     /// set_inner_disc). Not at notch roots nor rough vertices. false: one disc (as before).

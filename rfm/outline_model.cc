@@ -1208,6 +1208,9 @@ namespace rfm
                 mode_columns.push_back(at + j);
               at += v.n_columns();
             }
+          for (std::size_t i = 0; i < jumps_.size() && n_jump_columns() > 0; ++i)
+            if (jump_sections_[i])
+              mode_columns.push_back(at + static_cast<Eigen::Index>(i));
         }
         for (Eigen::Index k0 = 0; k0 < n_near;)
           {
@@ -1419,6 +1422,14 @@ namespace rfm
           add(en);
         for (const VertexEnrichment &en : vertices_)
           add(en);
+        if (n_jump_columns() > 0)
+          {
+            const Eigen::Index w = n_jump_columns();
+            EdgeColumns e = jump_columns(r, z);
+            couple_at_axis(e, r);
+            add_enrichment_fields(e, q_s.segment(at, w), q_u.segment(at, w), f);
+            at += w;
+          }
         for (const ResonantVertex &en : resonances_)
           add(en);
       }
@@ -1439,6 +1450,8 @@ namespace rfm
       all.set_columns(at, en.evaluate(r, z)), at += en.n_columns();
     for (const VertexEnrichment &en : vertices_)
       all.set_columns(at, en.evaluate(r, z)), at += en.n_columns();
+    if (n_jump_columns() > 0)
+      all.set_columns(at, jump_columns(r, z)), at += n_jump_columns();
     for (const ResonantVertex &en : resonances_)
       all.set_columns(at, en.evaluate(r, z)), at += en.n_columns();
     couple_at_axis(all, r);
@@ -1469,11 +1482,13 @@ namespace rfm
     for (const VertexEnrichment &en : vertices_)
       if (en.section_support())
         n += en.n_mode_columns();
-    EdgeColumns all = EdgeColumns::zero(r.size(), n);
+    const EdgeColumns jumps = jump_columns(r, z, true);
+    EdgeColumns all = EdgeColumns::zero(r.size(), n + jumps.u[0].cols());
     Eigen::Index at = 0;
     for (const VertexEnrichment &en : vertices_)
       if (en.section_support())
         all.set_columns(at, en.evaluate(r, z, true)), at += en.n_mode_columns();
+    all.set_columns(at, jumps);
     couple_at_axis(all, r);
     return all;
   }
@@ -1616,7 +1631,7 @@ namespace rfm
       n += e.n_columns();
     for (const ResonantVertex &e : resonances_)
       n += e.n_columns();
-    return n;
+    return n + n_jump_columns();
   }
 
 
@@ -2066,6 +2081,7 @@ namespace rfm
   void OutlineModel::make_traction_jumps(const axisym::Problem &problem,
                                          const DiscretizationOptions &options)
   {
+    jump_columns_ = options.jump_column;
     if (!(options.vertex_max_exponent > 0.0))
       return;
     const axisym::Body &body = *problem.body;
@@ -2195,8 +2211,37 @@ namespace rfm
       }
   }
 
+  Eigen::Index OutlineModel::n_jump_columns() const
+  {
+    return jump_columns_ ? static_cast<Eigen::Index>(jumps_.size()) : 0;
+  }
+
+  EdgeColumns OutlineModel::jump_columns(const Eigen::Ref<const Eigen::VectorXd> &r,
+                                         const Eigen::Ref<const Eigen::VectorXd> &z,
+                                         const bool on_section_only) const
+  {
+    Eigen::Index n = 0;
+    for (std::size_t i = 0; i < jumps_.size() && n_jump_columns() > 0; ++i)
+      n += !on_section_only || jump_sections_[i] ? 1 : 0;
+    EdgeColumns c = EdgeColumns::zero(r.size(), n);
+    if (n == 0)
+      return c;
+    Eigen::Index at = 0;
+    for (std::size_t i = 0; i < jumps_.size(); ++i)
+      if (!on_section_only || jump_sections_[i])
+        {
+          const FieldValues f = jump_fields(r, z, static_cast<int>(i));
+          for (int k = 0; k < n_stress_components; ++k)
+            c.stress[k].col(at) = f.sigma.col(k), c.strain[k].col(at) = f.strain.col(k);
+          for (int m = 0; m < 2; ++m)
+            c.u[m].col(at) = f.u.col(m);
+          ++at;
+        }
+    return c;
+  }
+
   FieldValues OutlineModel::jump_fields(const Eigen::Ref<const Eigen::VectorXd> &r,
-                                        const Eigen::Ref<const Eigen::VectorXd> &z) const
+                                        const Eigen::Ref<const Eigen::VectorXd> &z, const int only) const
   {
     FieldValues out;
     out.sigma = Eigen::MatrixXd::Zero(r.size(), n_stress_components);
@@ -2205,6 +2250,8 @@ namespace rfm
     const double mu = material_.youngs_modulus / (2.0 * (1.0 + material_.poisson_ratio));
     for (const TractionJump &j : jumps_)
       {
+        if (only >= 0 && &j - jumps_.data() != only)
+          continue;
         // On the section (traction_jumps()): F = 1 - (1 - G)^4 instead of the cutoff, G the
         // section factor (1 at the vertex, 0 on the other edges where the component enters
         // their condition), so that F - 1 = O(rho^4) at the vertex.

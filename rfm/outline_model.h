@@ -380,7 +380,15 @@ namespace rfm
       double solution, theory;
     };
     std::vector<LogAmplitude> resonant_log_amplitudes() const;
-    /// The vertex enrichments' and the resonant vertices' columns.
+    /// One column per jump with rfm.jump_column (none without): the jump's field (the
+    /// stress, displacement and strain of jump_fields for that jump alone) with a free
+    /// coefficient, beside its fixed copy. The displacement space then holds the direction of
+    /// the fixed displacement u_j, so that the stress is in equilibrium against all of u_h in
+    /// the weak sense and Phi_L - Phi_C is the constitutive-relation error E (without it,
+    /// E plus the stress's work defect against u_j, of either sign). They come after the
+    /// vertices' columns and before the resonant vertices'.
+    Eigen::Index n_jump_columns() const;
+    /// The vertex enrichments', the jumps' (n_jump_columns) and the resonant vertices' columns.
     Eigen::Index n_vertex_columns() const;
     /// The edge intensity K = sqrt(2 pi) a_1 [Pa m^1/2] at zone end i by the interaction
     /// integral (contact.h) on the half disc of radius 0.9 times the end's room. K < 0: the
@@ -479,13 +487,18 @@ namespace rfm
     void make_traction_jumps(const axisym::Problem &problem, const DiscretizationOptions &options);
     /// Builds resonances_ (after jumps_).
     void make_resonant_vertices(const axisym::Problem &problem, const DiscretizationOptions &options);
-    /// Sums over the jumps at points (zero beyond their supports): sigma = chi (S - s0) (the
+    /// Sums over the jumps (only >= 0: jump `only` alone) at points (zero beyond their
+    /// supports): sigma = chi (S - s0) (the
     /// particular stress's change), u = chi u_D (the particular displacement's: no condition
     /// on u holds within the support) and its strain (fourth-order central differences with
     /// steps of 1e-3 times the distance to the vertex: truncation about 1e-12 and rounding
     /// about 1e-13 of the strain).
     FieldValues jump_fields(const Eigen::Ref<const Eigen::VectorXd> &r,
-                            const Eigen::Ref<const Eigen::VectorXd> &z) const;
+                            const Eigen::Ref<const Eigen::VectorXd> &z, int only = -1) const;
+    /// Those columns at points; `on_section_only`: only the jumps with section support (the
+    /// columns that live beyond every disc, after the modes in section_mode_columns).
+    EdgeColumns jump_columns(const Eigen::Ref<const Eigen::VectorXd> &r,
+                             const Eigen::Ref<const Eigen::VectorXd> &z, bool on_section_only = false) const;
     /// The jumps' terms of p_s and p_u: - int X . (C sigma_j - e(u_j)) and + int sigma_j . e(Phi)
     /// on the near rules.
     void add_jump_terms(ReissnerSystem &sys) const;
@@ -566,6 +579,7 @@ namespace rfm
     /// local columns whose factors and section rule the jump's field takes; none: the disc.
     std::vector<std::optional<VertexEnrichment>> jump_sections_;
     std::vector<bool> jump_rules_;
+    bool jump_columns_ = true; ///< rfm.jump_column (n_jump_columns)
     Quadrature2D near_;      ///< the near-edge and near-vertex rules of all enrichments
     /// The first n_near_in_discs_ points of near_ lie in some rule's disc (all of them
     /// without a section rule); beyond them only section_mode_columns are nonzero.

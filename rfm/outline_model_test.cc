@@ -1298,8 +1298,9 @@ namespace rfm
   // 32: 2.4e-7 with the polynomials on the section's rule alone, 1.8e-7 without the vertex;
   // at p = 16 the other way round, 1.8e-8 against 5.8e-7), by 1.1e-5 before the edge rule
   // broke at the disc's rim on the pressed arc, and with the disc reaching into the taper's
-  // the vertex's rule alone moved it by 3e-4 at p = 12. Indicator at p = 8: 2.0e-3 without,
-  // 4.9e-5 with (measured).
+  // the vertex's rule alone moved it by 3e-4 at p = 12. Indicator at p = 8: 1.9e-4 without,
+  // 1.04e-5 with (measured with the jump's column, rfm.jump_column, when the indicator is
+  // the constitutive-relation error; 2.0e-3 and 2.3e-5 before it, E plus the work defect).
   TEST(OutlineModel, RoughVertexAtATractionJumpKeepsTheFacesFreeAndConverges)
   {
     const axisym::Problem problem = axisym::parse_problem(axisym::testing::tapered_hub());
@@ -1388,8 +1389,8 @@ namespace rfm
     o.rough_vertices = false;
     const OutlineModel without(problem, o);
     ASSERT_TRUE(without.ok()) << without.summary().message;
-    EXPECT_GT(without.functionals().indicator(), 1e-3);
-    EXPECT_LT(with.functionals().indicator(), 1.5e-4);
+    EXPECT_GT(without.functionals().indicator(), 1e-4);
+    EXPECT_LT(with.functionals().indicator(), 3e-5);
   }
 
   // A traction jump on a rectangle's side (the pressure band: 10 MPa on the lower half of the
@@ -1666,6 +1667,39 @@ namespace rfm
 
 namespace rfm
 {
+  // A traction jump's field is a fixed part of u_h (its displacement u_j), and the mixed
+  // solution's stress is in equilibrium only against the displacement columns: Phi_L - Phi_C
+  // was E plus the stress's work defect against u_j, of either sign, so the indicator measured
+  // no error (the pressure band at p = 8: 3.5e-5 against E = 1.6e-6; issue 24's hub crossed,
+  // Phi_L below Phi_C, from p = 18 on). With the jump's field also as a column with a free
+  // coefficient (rfm.jump_column) the displacement space holds u_j's direction and the gap is
+  // E to rounding (measured 8e-15 of |Phi_R|); the indicator 1.5e-6.
+  TEST(OutlineModel, JumpColumnMakesTheGapTheConstitutiveError)
+  {
+    const axisym::Problem problem = axisym::parse_problem(axisym::testing::pressure_band());
+    DiscretizationOptions o = problem.rfm;
+    o.degree = 8;
+    ASSERT_TRUE(o.jump_column);
+    auto gap_and_error = [&](const DiscretizationOptions &options, const Eigen::Index n_jump_columns) {
+      const OutlineModel m(problem, options);
+      EXPECT_TRUE(m.ok()) << m.summary().message;
+      EXPECT_EQ(m.traction_jumps().size(), 1u);
+      EXPECT_EQ(m.n_jump_columns(), n_jump_columns);
+      const Functionals f = m.functionals();
+      const double e = m.constitutive_error_map(8, 8).total;
+      EXPECT_GT(e, 0.0);
+      return std::array<double, 3>{(f.lagrange - f.castigliano) / std::abs(f.reissner), e / std::abs(f.reissner),
+                                   f.indicator()};
+    };
+    const auto [gap, e, indicator] = gap_and_error(o, 1);
+    EXPECT_NEAR(gap, e, 1e-10);
+    EXPECT_LT(indicator, 3e-6);
+    o.jump_column = false;
+    const auto [gap_without, e_without, indicator_without] = gap_and_error(o, 0);
+    EXPECT_GT(std::abs(gap_without - e_without), 10.0 * e_without);
+    EXPECT_GT(indicator_without, 10.0 * indicator);
+  }
+
   // The constitutive-relation error E = 1/2 int d . D d r dr dz, d = C s_h - (e(u_h) - e_th)
   // (OutlineModel::constitutive_error_map), is Phi_L - Phi_C where u_h has no fixed part:
   // an identity of the mixed solution, computed apart from the functionals (one density at

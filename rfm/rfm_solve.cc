@@ -1039,6 +1039,7 @@ namespace
       {"local_stress_functions", model->n_local_stress_columns()},
       {"edge_columns", static_cast<long>(model->n_edge_columns())},
       {"vertex_columns", static_cast<long>(model->n_vertex_columns())},
+      {"jump_columns", static_cast<long>(model->n_jump_columns())},
       {"unknowns", 6 * n_basis + model->n_boundary_columns() + model->n_local_stress_columns() +
                      2 * n_edge},
       {"stress_unknowns",
