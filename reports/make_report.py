@@ -1468,10 +1468,10 @@ def gap_rows(corners):
           "RFM (with its vertex columns) at each case's highest degree, and the three largest of its map's "
           "8 x 8 cells of the section's box [m] (`OutlineModel::constitutive_error_map`; rfm_solve writes it as "
           "`diagnostics.constitutive_error`, README 'Where the indicator's gap lies'). Where u_h has no fixed "
-          "part (no traction jump's particular displacement, every prescribed displacement zero) the mixed "
-          "solution makes E = Phi_L - Phi_C ('gap / E' 1), and the map shows where the indicator comes from; "
-          "with a traction jump the difference is the stress's equilibrium defect against its particular "
-          "displacement. 'map / E': the map blends the near rules and the section's, and where it is far from "
+          "part (every prescribed displacement zero; a traction jump's particular displacement is also a "
+          "column of the space, `rfm.jump_column`) the mixed solution makes E = Phi_L - Phi_C ('gap / E' 1), "
+          "and the map shows where the indicator comes from; otherwise the difference is the stress's "
+          "equilibrium defect against the fixed part. 'map / E': the map blends the near rules and the section's, and where it is far from "
           "1 the near rules do not resolve the density (their sizes are the system's), so read its shares "
           "as where, not how much.", "",
           "| case | p | E / abs(Phi_R) | gap / E | map / E | largest cells (share of the map) |",
