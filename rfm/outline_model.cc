@@ -1198,7 +1198,8 @@ namespace rfm
             gram_pe_.setZero(2 * n, n_e);
             gram_pp_.setZero(2 * n, 2 * n);
           }
-        // Beyond every disc only the section-supported modes' columns are nonzero.
+        // Beyond every disc only the section-supported modes' columns are nonzero, and the
+        // columns of the jumps on the section (section_mode_columns' order).
         std::vector<Eigen::Index> mode_columns;
         {
           Eigen::Index at = n_edge_columns();

@@ -478,8 +478,9 @@ namespace rfm
     Eigen::Index n_enrichment_columns() const { return n_edge_columns() + n_vertex_columns(); }
     EdgeColumns enrichment_columns(const Eigen::Ref<const Eigen::VectorXd> &r,
                                    const Eigen::Ref<const Eigen::VectorXd> &z) const;
-    /// The mode columns of the vertices with the section support, in the enrichment's order:
-    /// the only enrichment columns that are nonzero beyond every disc.
+    /// The mode columns of the vertices with the section support, in the enrichment's order,
+    /// then the columns of the jumps with it (jump_columns): the only enrichment columns that
+    /// are nonzero beyond every disc.
     EdgeColumns section_mode_columns(const Eigen::Ref<const Eigen::VectorXd> &r,
                                      const Eigen::Ref<const Eigen::VectorXd> &z) const;
     /// Builds jumps_ (after vertices_); jump_rules_[i]: jump i has a near rule of its own
