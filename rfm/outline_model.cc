@@ -1425,8 +1425,14 @@ namespace rfm
           add(en);
         if (n_jump_columns() > 0)
           {
+            // The columns are the jumps' fields one by one: their sums are the fixed part,
+            // taken here instead of a second pass of jump_fields.
             const Eigen::Index w = n_jump_columns();
             EdgeColumns e = jump_columns(r, z);
+            for (int k = 0; k < n_stress_components; ++k)
+              f.sigma.col(k) += e.stress[k].rowwise().sum(), f.strain.col(k) += e.strain[k].rowwise().sum();
+            for (int m = 0; m < 2; ++m)
+              f.u.col(m) += e.u[m].rowwise().sum();
             couple_at_axis(e, r);
             add_enrichment_fields(e, q_s.segment(at, w), q_u.segment(at, w), f);
             at += w;
@@ -1434,7 +1440,7 @@ namespace rfm
         for (const ResonantVertex &en : resonances_)
           add(en);
       }
-    if (with_enrichment && !jumps_.empty())
+    if (with_enrichment && !jumps_.empty() && n_jump_columns() == 0)
       {
         const FieldValues j = jump_fields(r, z);
         f.sigma += j.sigma, f.u += j.u, f.strain += j.strain;
