@@ -758,7 +758,8 @@ namespace axisym
         flag("axis_parity", p.rfm.axis_parity);
         flag("axis_coupling", p.rfm.axis_coupling);
         flag("notch_roots", p.rfm.notch_roots);
-        // rough_vertices: a boolean, or "all" (rough vertices without a jump too).
+        // rough_vertices: "all" (the default: rough vertices without a jump too), or a
+        // boolean (true: where a traction jumps only).
         if (r.has("rough_vertices") && r.at("rough_vertices").is_string())
           {
             if (r.at("rough_vertices").get<std::string>() != "all")
@@ -766,8 +767,11 @@ namespace axisym
                    "must be true (where a traction jumps), false or \"all\" (every rough vertex)");
             p.rfm.rough_vertices = p.rfm.rough_vertices_everywhere = true;
           }
-        else
-          flag("rough_vertices", p.rfm.rough_vertices);
+        else if (r.has("rough_vertices"))
+          {
+            flag("rough_vertices", p.rfm.rough_vertices);
+            p.rfm.rough_vertices_everywhere = false;
+          }
         flag("vertex_shadow", p.rfm.vertex_shadow);
         flag("jump_column", p.rfm.jump_column);
         flag("vertex_inner_disc", p.rfm.vertex_inner_disc);

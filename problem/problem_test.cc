@@ -101,15 +101,20 @@ namespace axisym
     EXPECT_THROW(read_problem_file("/nonexistent/problem.json"), InputError);
   }
 
-  // rfm.vertex_support takes "blended" beside "local" and "section" (the default), and
-  // rfm.rough_vertices "all" beside true (the default: where a traction jumps) and false.
+  // rfm.vertex_support takes "blended" (the default) beside "local" and "section", and
+  // rfm.rough_vertices "all" (the default) beside true (where a traction jumps) and false.
   TEST(Problem, VertexSupportAndRoughVerticesSettings)
   {
     nlohmann::json j = testing::tapered_hub();
     const Problem defaults = parse_problem(j);
-    EXPECT_EQ(defaults.rfm.vertex_support, RfmSettings::VertexSupport::section);
+    EXPECT_EQ(defaults.rfm.vertex_support, RfmSettings::VertexSupport::blended);
     EXPECT_TRUE(defaults.rfm.rough_vertices);
-    EXPECT_FALSE(defaults.rfm.rough_vertices_everywhere);
+    EXPECT_TRUE(defaults.rfm.rough_vertices_everywhere);
+    j["rfm"] = {{"vertex_support", "section"}, {"rough_vertices", true}};
+    const Problem jumps = parse_problem(j);
+    EXPECT_EQ(jumps.rfm.vertex_support, RfmSettings::VertexSupport::section);
+    EXPECT_TRUE(jumps.rfm.rough_vertices);
+    EXPECT_FALSE(jumps.rfm.rough_vertices_everywhere);
     j["rfm"] = {{"vertex_support", "blended"}, {"rough_vertices", "all"}};
     const Problem all = parse_problem(j);
     EXPECT_EQ(all.rfm.vertex_support, RfmSettings::VertexSupport::blended);

@@ -179,22 +179,25 @@ namespace axisym
     /// modes' multipliers take at least degree 4 (vertex_mode_degree is raised to it).
     /// `section` also puts a traction jump's field between two lines on the whole section
     /// (OutlineModel::traction_jumps): the pressure band's indicator at p = 16 1.94e-5 -> 2.5e-7.
-    /// `blended`: as `section`, and also at the re-entrant vertices that keep their disc
-    /// there (the section not star-shaped about the vertex, or an arc face), with the columns
-    /// integrated on the disc's rule blended with a rule over the section
-    /// (rfm/outline_model.cc). Not the default: it costs about four times the time at the
-    /// same p, and the indicator stalls (README). Every singular vertex with Re lambda < 1
-    /// then takes the inner disc (OutlineModel::inner_disc_max_exponent otherwise). On issue
-    /// 24's heated hub (both re-entrant vertices so), section -> blended at p = 12 / 16 / 20:
+    /// `blended` (the default since session 82): as `section`, and also at the re-entrant
+    /// vertices that keep their disc there (the section not star-shaped about the vertex, or
+    /// an arc face), with the columns integrated on the disc's rule blended with a rule over
+    /// the section (rfm/outline_model.cc). Every singular vertex with Re lambda < 1 then takes
+    /// the inner disc (OutlineModel::inner_disc_max_exponent otherwise). Only sections with
+    /// such a vertex differ from `section` (of the verification problems, issue 24's two
+    /// hubs), and there it costs four to seven times the time at the same p. On issue 24's
+    /// heated hub (both re-entrant vertices so), section -> blended at p = 12 / 16 / 20:
     /// indicator 9.7e-6 / 8.7e-7 / 4.3e-7 -> 2.9e-7 / 1.4e-7 / 1.2e-7, sigma_zz at (0.8, 0)
-    /// +0.15 / -0.68 / -0.28 % -> -0.41 / -0.11 / -0.05 % from the FEM's.
+    /// +0.15 / -0.68 / -0.28 % -> -0.41 / -0.11 / -0.05 % from the FEM's; with rough vertices
+    /// everywhere (below, also the default) 9.8e-8 / 1.56e-8 / 8.3e-9, so that without
+    /// --degree it reaches the default tolerance at p = 20 (with `section` it exits 3).
     enum class VertexSupport
     {
       local,
       section,
       blended
     };
-    VertexSupport vertex_support = VertexSupport::section;
+    VertexSupport vertex_support = VertexSupport::blended;
     /// Axis parity (rfm/outline_model.h, issue 24 item 5): on a rectangular section on the
     /// axis, coordinate functions in (r^2, z) and structures even in r, so that values on the
     /// axis converge like the rest. Used where OutlineModel::axis_parity_obstacle finds
@@ -232,13 +235,15 @@ namespace axisym
     /// with them, falling at every even p. false: none (as before).
     bool rough_vertices = true;
     /// With rough_vertices, at every rough vertex, with or without a jump (JSON
-    /// `"rough_vertices": "all"`). Not the default: on issue 24's heated hub (its 133-degree
-    /// vertex at the bore, free, no jump) they bought little with the vertices' discs (the
-    /// comment in rfm/outline_model.cc: make_vertex_enrichments); with vertex_support
-    /// `blended`, where that vertex then held most of the constitutive-relation error, the
-    /// indicator at p = 12 / 16 / 20 went 2.9e-7 / 1.4e-7 / 1.2e-7 -> 9.8e-8 / 1.56e-8 /
-    /// 8.3e-9 (below the default tolerance).
-    bool rough_vertices_everywhere = false;
+    /// `"rough_vertices": "all"`, the default since session 82; `true`: where a traction
+    /// jumps only). On issue 24's heated hub (its 133-degree vertex at the bore, free, no
+    /// jump) they bought little with the vertices' discs (the comment in
+    /// rfm/outline_model.cc: make_vertex_enrichments); with vertex_support `blended`, where
+    /// that vertex then held most of the constitutive-relation error, the indicator at p = 12
+    /// / 16 / 20 went 2.9e-7 / 1.4e-7 / 1.2e-7 -> 9.8e-8 / 1.56e-8 / 8.3e-9 (below the
+    /// default tolerance). Of the verification problems only the two hubs have a rough
+    /// vertex without a jump.
+    bool rough_vertices_everywhere = true;
     /// The hoop shadow at singular vertices (rfm/spaces/wedge_shadow.h): each vertex mode's
     /// first axisymmetric correction rho^(lambda + 1) V(theta), from the hoop terms of the
     /// equations and the curvature of arc faces, as one more column per mode; its angular

@@ -1654,8 +1654,11 @@ def hub_temperature_rows(corners, out_dir):
               "the report's run, for time; 25 s on one thread, 133 s before the basis's double-double) the two samples are -0.47 % and -0.10 % from the FEM's L = 2, "
               "Phi_R 7.5e-9 from the limit and the indicator 5.2e-7 (before: +0.16 % and +0.16 %, 6.4e-5): the "
               "energy converges now, but the sample at the resonant vertex (0.8, 0) does not settle within the "
-              "issue's 0.2 %, and rfm_solve at the defaults stops at p = 8 (exit 3), where the indicator and "
-              "its rate so far predict a degree above rfm.max_degree for the tolerance 1e-8.")
+              "issue's 0.2 % with the vertices' discs. Since session 82 the defaults are rfm.vertex_support "
+              "blended and rfm.rough_vertices all (the rows above): without flags rfm_solve then reaches the "
+              "tolerance 1e-8 at p = 20 (8.25e-9, in 8.5 min; the samples -0.019 % and -0.002 % from the "
+              "FEM's L = 2; README), which section 11's runs, stopped after 120 s, do not show; with "
+              "the vertices' discs (vertex_support section, rough_vertices true) it exits 3 at p = 18.")
     md.append("")
     return md
 

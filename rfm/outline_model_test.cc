@@ -14,6 +14,17 @@ namespace rfm
 {
   namespace
   {
+    // The options before session 82's defaults (rfm.vertex_support section, rfm.rough_vertices
+    // true): the hub's two re-entrant vertices keep their discs and only the rough vertex
+    // where a traction jumps takes columns. The hub's tests below that measure that space
+    // (its discs, its rules, their numbers) pin it; the blended space has its own test.
+    DiscretizationOptions with_vertex_discs(DiscretizationOptions o)
+    {
+      o.vertex_support = DiscretizationOptions::VertexSupport::section;
+      o.rough_vertices_everywhere = false;
+      return o;
+    }
+
     // Thick spherical shell a = 0.1, b = 0.2 under inner pressure p (DESIGN.md 7.1): a quarter
     // annulus with the equator (symmetry) and the axis. Exact (Lame, spherical):
     // sigma_RR = A - B / R^3, sigma_phiphi = A + B / (2 R^3), A = p a^3 / (b^3 - a^3), B = A b^3
@@ -674,7 +685,10 @@ namespace rfm
     const double fem_energy = -22.3421095;
     DiscretizationOptions o = problem.rfm;
     o.degree = 12;
-    ASSERT_EQ(o.vertex_support, DiscretizationOptions::VertexSupport::section);
+    // The default, blended, is `section` wherever the vertex has a section rule (the test
+    // below); `section` named here.
+    ASSERT_EQ(o.vertex_support, DiscretizationOptions::VertexSupport::blended);
+    o.vertex_support = DiscretizationOptions::VertexSupport::section;
     const OutlineModel section(problem, o);
     ASSERT_TRUE(section.ok()) << section.summary().message;
     ASSERT_EQ(section.vertex_enrichments().size(), 1u);
@@ -688,6 +702,32 @@ namespace rfm
     ASSERT_TRUE(disc.ok()) << disc.summary().message;
     EXPECT_FALSE(disc.vertex_enrichments()[0].section_support());
     EXPECT_GT(disc.functionals().indicator(), 1e-5);
+  }
+
+  // rfm.vertex_support blended (the default since session 82) differs from section only at
+  // re-entrant vertices without a section rule (an arc face, or a section not star-shaped
+  // about them), and rfm.rough_vertices "all" from true only at rough vertices without a
+  // traction jump: on the stepped ring (its vertex has a section rule, no rough vertex) the
+  // two defaults give the functionals of the former ones.
+  TEST(OutlineModel, DefaultSupportIsTheSectionsWhereTheVertexHasASectionRule)
+  {
+    const axisym::Problem problem = far_stepped_ring();
+    DiscretizationOptions o = problem.rfm;
+    o.degree = 6;
+    ASSERT_EQ(o.vertex_support, DiscretizationOptions::VertexSupport::blended);
+    ASSERT_TRUE(o.rough_vertices_everywhere);
+    const OutlineModel defaults(problem, o);
+    ASSERT_TRUE(defaults.ok()) << defaults.summary().message;
+    ASSERT_EQ(defaults.vertex_enrichments().size(), 1u);
+    EXPECT_TRUE(defaults.vertex_enrichments()[0].has_section_rule());
+    o.vertex_support = DiscretizationOptions::VertexSupport::section;
+    o.rough_vertices_everywhere = false;
+    const OutlineModel former(problem, o);
+    ASSERT_TRUE(former.ok()) << former.summary().message;
+    EXPECT_NEAR(defaults.functionals().reissner, former.functionals().reissner,
+                1e-13 * std::abs(former.functionals().reissner));
+    EXPECT_NEAR(defaults.functionals().lagrange, former.functionals().lagrange,
+                1e-13 * std::abs(former.functionals().lagrange));
   }
 
   // The section support keeps every boundary condition identically: on the stepped shaft
@@ -966,12 +1006,12 @@ namespace rfm
   }
 
   // Where the section is not star-shaped about a re-entrant vertex (the hub of issue 24: the
-  // outer arc hides behind its 186-degree vertex from the taper-neck vertex) the disc stays,
-  // and the default gives the same columns as "local".
+  // outer arc hides behind its 186-degree vertex from the taper-neck vertex) the disc stays
+  // with `section`, which then gives the same columns as "local".
   TEST(OutlineModel, SectionSupportFallsBackWhereTheVertexDoesNotSeeTheSection)
   {
     const axisym::Problem problem = axisym::parse_problem(axisym::testing::tapered_hub());
-    DiscretizationOptions o = problem.rfm;
+    DiscretizationOptions o = with_vertex_discs(problem.rfm);
     o.degree = 6;
     const OutlineModel section(problem, o);
     ASSERT_TRUE(section.ok()) << section.summary().message;
@@ -1204,7 +1244,7 @@ namespace rfm
     const Eigen::Vector3d r_points(0.8, 1.0, 0.6), z_points(0.02, 0.3, 0.8);
     auto solve = [&](const double s) {
       const axisym::Problem problem = scaled(s);
-      DiscretizationOptions o = problem.rfm;
+      DiscretizationOptions o = with_vertex_discs(problem.rfm);
       o.degree = 8;
       const OutlineModel m(problem, o);
       EXPECT_TRUE(m.ok()) << m.summary().message;
@@ -1304,7 +1344,7 @@ namespace rfm
   TEST(OutlineModel, RoughVertexAtATractionJumpKeepsTheFacesFreeAndConverges)
   {
     const axisym::Problem problem = axisym::parse_problem(axisym::testing::tapered_hub());
-    DiscretizationOptions o = problem.rfm;
+    DiscretizationOptions o = with_vertex_discs(problem.rfm);
     o.degree = 8;
     const OutlineModel with(problem, o);
     ASSERT_TRUE(with.ok()) << with.summary().message;
@@ -1428,7 +1468,7 @@ namespace rfm
     GTEST_SKIP() << "four solves at p = 12-14 on a curved section: the Release run checks it";
 #endif
     const axisym::Problem problem = axisym::parse_problem(axisym::testing::tapered_hub());
-    DiscretizationOptions o = problem.rfm;
+    DiscretizationOptions o = with_vertex_discs(problem.rfm);
     auto indicator = [&](const int p, const double max_exponent) {
       o.degree = p;
       o.vertex_max_exponent = max_exponent;
@@ -1457,7 +1497,7 @@ namespace rfm
     GTEST_SKIP() << "a solve at p = 12 on a curved section: the Release run checks it";
 #endif
     const axisym::Problem problem = heated_hub();
-    DiscretizationOptions o = problem.rfm;
+    DiscretizationOptions o = with_vertex_discs(problem.rfm);
     o.degree = 12;
     const OutlineModel m(problem, o);
     ASSERT_TRUE(m.ok()) << m.summary().message;

@@ -356,6 +356,9 @@ namespace
     const fs::path dir = scratch("rough");
     const fs::path in = dir / "problem.json", out = dir / "result.json";
     nlohmann::json problem = axisym::testing::tapered_hub();
+    // The vertices' discs and rough columns where a traction jumps only (the defaults before
+    // session 82), as measured here; "all" would list the same vertex with the same columns.
+    problem["rfm"] = {{"vertex_support", "section"}, {"rough_vertices", true}};
     std::ofstream(in) << problem;
     const Outcome o = run(in.string() + " --degree 6 --output " + out.string());
     EXPECT_EQ(o.status, 0) << o.err;
@@ -416,6 +419,8 @@ namespace
     problem["boundary"].erase("inner_arc");
     problem["material"]["thermal_expansion"] = 1.2e-5;
     problem["loading"] = {{"temperature", {{"field", {0.0, 100.0, 100.0}}}}};
+    // The vertices' discs (the defaults before session 82), where the ratios were measured.
+    problem["rfm"] = {{"vertex_support", "section"}, {"rough_vertices", true}};
     std::ofstream(in) << problem;
     const Outcome o = run(in.string() + " --degree 8 --output " + out.string());
     EXPECT_EQ(o.status, 0) << o.err;
@@ -841,6 +846,9 @@ namespace
     // JumpColumnMakesTheGapTheConstitutiveError), and a crossing needs another fixed part.
     nlohmann::json hub = axisym::testing::tapered_hub();
     hub["rfm"]["jump_column"] = false;
+    // The vertices' discs (the defaults before session 82), where the crossing was measured.
+    hub["rfm"]["vertex_support"] = "section";
+    hub["rfm"]["rough_vertices"] = true;
     std::ofstream(in) << hub.dump();
     const Outcome o = run(in.string() + " --degree 20 --output " + out.string());
     EXPECT_EQ(o.status, 0) << o.err;
