@@ -1700,8 +1700,11 @@ def corner_case_rows(md, ax, key, title, c):
     support = c.get("vertex_support")
     if support:
         md.append("")
-        md.append("The vertex's modes cover the whole section (`rfm.vertex_support` section)." if support == "section"
-                  else "The vertex's modes live in its disc (convex, or the section is not star-shaped about it).")
+        md.append({"section": "The vertex's modes cover the whole section (`rfm.vertex_support` section).",
+                   "blended": "The vertex's modes cover the whole section, integrated on its disc's rule blended "
+                              "with the section's (`rfm.vertex_support` blended, the default since session 82: "
+                              "the section is not star-shaped about it, or a face is an arc)."}
+                  .get(support, "The vertex's modes live in its disc (convex, or the section is not star-shaped about it)."))
     md.append("")
     def k_1(row):
         k = row.get("intensities")
